@@ -1,0 +1,40 @@
+#pragma once
+// Every numerical constant and default the engine uses lives here, so that a
+// tolerance or a threshold is changed in one place and cited from one place.
+
+#include <numbers>
+
+namespace lc {
+
+inline constexpr double pi = std::numbers::pi;
+inline constexpr double two_pi = 2.0 * std::numbers::pi;
+inline constexpr double degree = std::numbers::pi / 180.0;  // radians per degree
+
+// Null rays are stopped at this Boyer–Lindquist (or Cartesian) radius when
+// moving outwards: beyond the outermost photon orbit no ray turns back, so the
+// remaining bending only changes the escape direction (by about 2M/r).
+inline constexpr double default_escape_radius = 1000.0;
+
+// The extreme Reissner–Nordström holes are coordinate points: a ray is taken
+// as captured once U = 1 + Σ m_i/ρ_i exceeds this bound.  U > 11 forces
+// ρ_i < 0.2 m_i for the dominant hole, well inside its photon sphere (ρ ≈ m),
+// from where no ray comes back out.
+inline constexpr double dihole_capture_potential = 11.0;
+
+// Kerr capture: inside the prograde equatorial photon orbit no ray (and no
+// timelike geodesic) has a radial turning point, so an ingoing one is lost.
+// Rays are stopped this fraction of the way from the prograde photon orbit
+// down to the outer horizon, so they never crawl towards it in ingoing
+// Kerr–Schild time (where t diverges logarithmically).
+inline constexpr double kerr_capture_fraction = 0.5;
+
+// Default step-control tolerance (relative and absolute) of the production
+// Dormand–Prince integrator.  At 1e-10 the constants of motion of Kerr rays
+// that wind round the photon sphere drift by < 3e-9 (1e-9 gave 3e-8); see
+// docs/performance.md for the measured cost and image error.
+inline constexpr double default_ray_tolerance = 1e-10;
+
+// Default safety bound on the number of accepted steps of one ray.
+inline constexpr long default_max_steps = 100000;
+
+}  // namespace lc

@@ -1,0 +1,76 @@
+#pragma once
+// Orthonormal local tetrads e_a^mu (a = 0 time leg, 1..3 spatial legs) in
+// trace coordinates, and the standard observers' frames.  Legs of the polar
+// frames are ordered (e_t, e_r, e_theta, e_phi); a camera "looking at the hole"
+// uses forward = -e_r, up = -e_theta, right = e_phi (DESIGN.md).
+
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "core/tensor.hpp"
+
+namespace lc {
+
+struct Tetrad {
+  std::array<Vec4, 4> e;  // e[a][mu]
+};
+
+class ObserverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Gram–Schmidt in the metric g: the first vector must be timelike, the rest
+// are made orthonormal to it and each other in order.  Throws ObserverError
+// (naming `who`) when the first vector is not timelike or the set degenerates.
+Tetrad orthonormalize(const Mat4& g, const std::array<Vec4, 4>& basis, const std::string& who);
+
+// Frame of an observer with 4-velocity u (normalised, future-directed) made
+// by a pure Lorentz boost of `rest` (whose time leg need not be u): spatial
+// directions are not rotated relative to `rest`.  v are the components of the
+// 3-velocity in units of c along rest's spatial legs.
+Tetrad boost(const Tetrad& rest, const Vec3& v);
+
+// Components of the 3-velocity of u relative to frame f (|v| < 1).
+Vec3 relative_velocity(const Mat4& g, const Tetrad& f, const Vec4& u);
+
+// Static observer at a scene point: time leg along ∂_t; spatial legs from the
+// polar basis {∂_r, ∂_theta, ∂_phi/sin(theta)} (regular on the axis).  Throws
+// inside a horizon or where ∂_t is not timelike (Kerr ergoregion).
+template <class S>
+Tetrad static_polar_tetrad(const S& st, const Vec4& scene_point) {
+  const Vec4 x = st.trace_from_scene(scene_point);
+  if (st.inside_horizon(x)) throw ObserverError("static observer: the position is inside a horizon");
+  const Mat4 g = st.metric(x);
+  if (g[0][0] >= 0.0)
+    throw ObserverError("static observer: no static observer exists here (inside the ergoregion, g_tt >= 0)");
+  return orthonormalize(g, st.polar_basis(scene_point), "static observer");
+}
+
+// Zero-angular-momentum observer: 4-velocity along -grad t (scene time), so it
+// exists everywhere outside the horizon, ergoregion included.
+template <class S>
+Tetrad zamo_polar_tetrad(const S& st, const Vec4& scene_point) {
+  const Vec4 x = st.trace_from_scene(scene_point);
+  if (st.inside_horizon(x)) throw ObserverError("ZAMO: the position is inside a horizon");
+  const Mat4 gi = st.inverse_metric(x);
+  const Vec4 dt = st.scene_time_gradient(x);
+  Vec4 u{};
+  for (int m = 0; m < 4; ++m)
+    for (int n = 0; n < 4; ++n) u[m] -= gi[m][n] * dt[n];
+  auto basis = st.polar_basis(scene_point);
+  basis[0] = u;
+  return orthonormalize(st.metric(x), basis, "ZAMO");
+}
+
+// Static observer of a Cartesian scene with legs (e_t, e_x, e_y, e_z).
+template <class S>
+Tetrad static_cartesian_tetrad(const S& st, const Vec4& x) {
+  if (st.inside_horizon(x)) throw ObserverError("static observer: the position is inside a horizon");
+  return orthonormalize(st.metric(x), {Vec4{1, 0, 0, 0}, Vec4{0, 1, 0, 0}, Vec4{0, 0, 1, 0}, Vec4{0, 0, 0, 1}},
+                        "static observer");
+}
+
+}  // namespace lc

@@ -1,0 +1,61 @@
+#pragma once
+// Extreme Reissner–Nordström dihole (Majumdar–Papapetrou) in Cartesian
+// coordinates: ds^2 = -U^-2 dt^2 + U^2 (dx^2 + dy^2 + dz^2),
+// U = 1 + m1/|x - x1| + m2/|x - x2|, hole 1 at (0, 0, +d), hole 2 at (0, 0, -d).
+// The horizons are the coordinate points x1, x2; rays are stopped where U
+// exceeds dihole_capture_potential instead of being chased towards them.
+// Reference: Wünsch, Müller, Weiskopf, Wunner, Phys. Rev. D 87, 024007 (2013).
+
+#include <cmath>
+
+#include "core/constants.hpp"
+#include "spacetime/cartesian_scene.hpp"
+
+namespace lc {
+
+class Dihole : public CartesianScene {
+ public:
+  // Throws std::invalid_argument for negative or non-finite masses, d <= 0.
+  Dihole(double m1, double m2, double d);
+
+  double mass1() const { return m1_; }
+  double mass2() const { return m2_; }
+  double separation() const { return d_; }
+
+  // U and its gradient at a spatial point.
+  double potential(const Vec4& x, Vec3* grad = nullptr) const {
+    const double X = x[1], Y = x[2];
+    const double z1 = x[3] - d_, z2 = x[3] + d_;
+    const double rho2 = X * X + Y * Y;
+    const double i1 = 1.0 / std::sqrt(rho2 + z1 * z1), i2 = 1.0 / std::sqrt(rho2 + z2 * z2);
+    const double U = 1.0 + m1_ * i1 + m2_ * i2;
+    if (grad) {
+      const double c1 = m1_ * i1 * i1 * i1, c2 = m2_ * i2 * i2 * i2;
+      *grad = {-(c1 + c2) * X, -(c1 + c2) * Y, -(c1 * z1 + c2 * z2)};
+    }
+    return U;
+  }
+
+  // Hamilton's equations for H = 1/2 (-U^2 p_t^2 + U^-2 |p|^2).
+  void hamiltonian_rhs(const Vec4& x, const Vec4& p, Vec4& dx, Vec4& dp) const {
+    Vec3 g;
+    const double U = potential(x, &g);
+    const double iU2 = 1.0 / (U * U);
+    const double p2 = p[1] * p[1] + p[2] * p[2] + p[3] * p[3];
+    dx = {-U * U * p[0], iU2 * p[1], iU2 * p[2], iU2 * p[3]};
+    const double k = U * p[0] * p[0] + iU2 / U * p2;  // -dH/dU
+    dp = {0.0, k * g[0], k * g[1], k * g[2]};
+  }
+
+  bool captured(const Vec4& x) const { return potential(x) > dihole_capture_potential; }
+  bool inside_horizon(const Vec4& x) const { return captured(x); }
+
+  Mat4 metric(const Vec4& x) const;
+  Mat4 inverse_metric(const Vec4& x) const;
+  Mat4Derivs metric_derivatives(const Vec4& x) const;
+
+ private:
+  double m1_, m2_, d_;
+};
+
+}  // namespace lc

@@ -1,0 +1,191 @@
+#include "spacetime/kerr.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+
+namespace lc {
+
+namespace {
+
+// f, l_mu and their spatial gradients at a Kerr–Schild point (off the hot
+// path; hamiltonian_rhs inlines the same algebra).
+struct KerrSchildFields {
+  double f;
+  Vec4 l;                     // l_mu, lower index, l_t = 1
+  std::array<double, 3> df;   // ∂_j f, j = x, y, z
+  std::array<Vec4, 3> dl;     // dl[j][mu] = ∂_j l_mu
+};
+
+// a: the chart's signed spin; lt: l_t (+1 ingoing, -1 outgoing).
+KerrSchildFields fields(double M, double a, double lt, double r, const Vec4& x) {
+  const double X = x[1], Y = x[2], Z = x[3];
+  const double a2 = a * a, r2 = r * r;
+  const double q = 1.0 / (r2 + a2);
+  const double den = 1.0 / (r2 * r2 + a2 * Z * Z);
+  KerrSchildFields F{};
+  F.f = 2.0 * M * r2 * r * den;
+  F.l = {lt, (r * X + a * Y) * q, (r * Y - a * X) * q, Z / r};
+  const std::array<double, 3> dr = {X * r2 * r * den, Y * r2 * r * den, Z * (r2 + a2) * r * den};
+  const double dfdr = 2.0 * M * r2 * (3.0 * a2 * Z * Z - r2 * r2) * den * den;
+  const double dfdz = -4.0 * M * r2 * r * a2 * Z * den * den;
+  for (int j = 0; j < 3; ++j) {
+    const double dX = j == 0, dY = j == 1, dZ = j == 2;
+    F.df[j] = dfdr * dr[j] + (j == 2 ? dfdz : 0.0);
+    F.dl[j][0] = 0.0;
+    F.dl[j][1] = (dr[j] * X + r * dX + a * dY) * q - F.l[1] * 2.0 * r * q * dr[j];
+    F.dl[j][2] = (dr[j] * Y + r * dY - a * dX) * q - F.l[2] * 2.0 * r * q * dr[j];
+    F.dl[j][3] = dZ / r - F.l[3] / r * dr[j];
+  }
+  return F;
+}
+
+const Mat4 minkowski_metric = {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+
+}  // namespace
+
+Kerr::Kerr(double mass, double spin, KerrSchildSense sense)
+    : M_(mass), a_(spin), sense_(sense == KerrSchildSense::ingoing ? 1.0 : -1.0), ak_(sense_ * spin) {
+  if (!std::isfinite(mass) || !std::isfinite(spin))
+    throw std::invalid_argument("kerr: mass and spin must be finite numbers");
+  if (mass < 0.0) throw std::invalid_argument(fmt::format("kerr: mass must be >= 0, got {}", mass));
+  if (std::abs(spin) > mass)
+    throw std::invalid_argument(fmt::format(
+        "kerr: |spin| must not exceed the mass (|a| <= M), got a = {} with M = {}", spin, mass));
+  if (M_ > 0.0) {
+    const double root = std::sqrt(std::max(0.0, M_ * M_ - a_ * a_));
+    r_plus_ = M_ + root;
+    r_minus_ = M_ - root;
+    // Prograde equatorial photon orbit (Bardeen, Press & Teukolsky 1972, eq. 2.18).
+    const double r_photon = 2.0 * M_ * (1.0 + std::cos(2.0 / 3.0 * std::acos(-std::abs(a_) / M_)));
+    r_capture_ = std::max(r_plus_ + kerr_capture_fraction * (r_photon - r_plus_), r_plus_ * (1.0 + 1e-3));
+  }
+}
+
+Mat4 Kerr::metric(const Vec4& x) const {
+  Mat4 g = minkowski_metric;
+  if (M_ == 0.0) return g;
+  const auto F = fields(M_, ak_, sense_, bl_radius(x[1], x[2], x[3]), x);
+  for (int m = 0; m < 4; ++m)
+    for (int n = 0; n < 4; ++n) g[m][n] += F.f * F.l[m] * F.l[n];
+  return g;
+}
+
+Mat4 Kerr::inverse_metric(const Vec4& x) const {
+  Mat4 g = minkowski_metric;
+  if (M_ == 0.0) return g;
+  const auto F = fields(M_, ak_, sense_, bl_radius(x[1], x[2], x[3]), x);
+  const Vec4 lu = {-F.l[0], F.l[1], F.l[2], F.l[3]};  // l^mu = eta^{mu nu} l_nu
+  for (int m = 0; m < 4; ++m)
+    for (int n = 0; n < 4; ++n) g[m][n] -= F.f * lu[m] * lu[n];
+  return g;
+}
+
+Mat4Derivs Kerr::metric_derivatives(const Vec4& x) const {
+  Mat4Derivs d{};
+  if (M_ == 0.0) return d;
+  const auto F = fields(M_, ak_, sense_, bl_radius(x[1], x[2], x[3]), x);
+  for (int j = 0; j < 3; ++j)
+    for (int m = 0; m < 4; ++m)
+      for (int n = 0; n < 4; ++n)
+        d[j + 1][m][n] = F.df[j] * F.l[m] * F.l[n] + F.f * (F.dl[j][m] * F.l[n] + F.l[m] * F.dl[j][n]);
+  return d;
+}
+
+Mat4 Kerr::bl_metric(const Vec4& s) const {
+  const double r = s[1], th = s[2];
+  const double sn = std::sin(th), cs = std::cos(th);
+  const double sigma = r * r + a_ * a_ * cs * cs;
+  const double delta = r * r - 2.0 * M_ * r + a_ * a_;
+  Mat4 g{};
+  g[0][0] = -(1.0 - 2.0 * M_ * r / sigma);
+  g[0][3] = g[3][0] = -2.0 * M_ * a_ * r * sn * sn / sigma;
+  g[1][1] = sigma / delta;
+  g[2][2] = sigma;
+  g[3][3] = (r * r + a_ * a_ + 2.0 * M_ * a_ * a_ * r * sn * sn / sigma) * sn * sn;
+  return g;
+}
+
+// T(r) = ∫ 2 M r / Delta dr and Phi(r) = ∫ a / Delta dr.
+double Kerr::time_shift(double r) const {
+  if (M_ == 0.0) return 0.0;
+  const double split = r_plus_ - r_minus_;
+  if (split < 1e-8 * M_)  // extremal limit of the expression below
+    return sense_ * (2.0 * M_ * std::log(std::abs(r - M_)) - 2.0 * M_ * M_ / (r - M_));
+  return sense_ * 2.0 * M_ / split *
+         (r_plus_ * std::log(std::abs(r - r_plus_)) - r_minus_ * std::log(std::abs(r - r_minus_)));
+}
+
+double Kerr::phi_shift(double r) const {
+  if (M_ == 0.0 || a_ == 0.0) return 0.0;
+  const double split = r_plus_ - r_minus_;
+  if (split < 1e-8 * M_) return -ak_ / (r - M_);
+  return ak_ / split * std::log(std::abs((r - r_plus_) / (r - r_minus_)));
+}
+
+Vec4 Kerr::trace_from_scene(const Vec4& s) const {
+  const double r = s[1], th = s[2];
+  const double phit = s[3] + phi_shift(r);
+  const double sn = std::sin(th);
+  return {s[0] + time_shift(r), sn * (r * std::cos(phit) - ak_ * std::sin(phit)),
+          sn * (r * std::sin(phit) + ak_ * std::cos(phit)), r * std::cos(th)};
+}
+
+Vec4 Kerr::scene_from_trace(const Vec4& x) const {
+  const double r = bl_radius(x[1], x[2], x[3]);
+  const double th = r > 0.0 ? std::acos(std::clamp(x[3] / r, -1.0, 1.0)) : 0.5 * pi;
+  double phi = std::atan2(x[2], x[1]) - std::atan2(ak_, r) - phi_shift(r);
+  phi = std::fmod(phi, two_pi);
+  if (phi < 0.0) phi += two_pi;
+  if (phi >= two_pi) phi = 0.0;  // -tiny + 2 pi rounds to 2 pi
+  return {x[0] - time_shift(r), r, th, phi};
+}
+
+Mat4 Kerr::trace_jacobian(const Vec4& s) const {
+  const double r = s[1], th = s[2];
+  const double delta = r * r - 2.0 * M_ * r + a_ * a_;
+  const double dT = sense_ * 2.0 * M_ * r / delta, dPhi = ak_ / delta;
+  const double phit = s[3] + phi_shift(r);
+  const double sn = std::sin(th), cs = std::cos(th), sp = std::sin(phit), cp = std::cos(phit);
+  const double a = ak_;  // the chart's signed spin
+  const double X = sn * (r * cp - a * sp), Y = sn * (r * sp + a * cp);
+  Mat4 J{};
+  J[0][0] = 1.0;
+  J[0][1] = dT;
+  J[1][1] = sn * cp - Y * dPhi;
+  J[1][2] = cs * (r * cp - a * sp);
+  J[1][3] = -Y;
+  J[2][1] = sn * sp + X * dPhi;
+  J[2][2] = cs * (r * sp + a * cp);
+  J[2][3] = X;
+  J[3][1] = cs;
+  J[3][2] = -r * sn;
+  return J;
+}
+
+Vec4 Kerr::scene_vector(const Vec4& x, const Vec4& v) const {
+  return mat_vec(inverse(trace_jacobian(scene_from_trace(x))), v);
+}
+
+Vec4 Kerr::scene_time_gradient(const Vec4& x) const {
+  const double r = bl_radius(x[1], x[2], x[3]);
+  if (M_ == 0.0) return {1.0, 0.0, 0.0, 0.0};
+  const double a2 = a_ * a_, r2 = r * r, Z = x[3];
+  const double den = 1.0 / (r2 * r2 + a2 * Z * Z);
+  const double dT = sense_ * 2.0 * M_ * r / (r2 - 2.0 * M_ * r + a2);
+  return {1.0, -dT * x[1] * r2 * r * den, -dT * x[2] * r2 * r * den, -dT * Z * (r2 + a2) * r * den};
+}
+
+std::array<Vec4, 4> Kerr::polar_basis(const Vec4& s) const {
+  const Mat4 J = trace_jacobian(s);
+  const double r = s[1];
+  const double phit = s[3] + phi_shift(r);
+  const double sp = std::sin(phit), cp = std::cos(phit);
+  return {Vec4{1.0, 0.0, 0.0, 0.0}, Vec4{J[0][1], J[1][1], J[2][1], J[3][1]},
+          Vec4{J[0][2], J[1][2], J[2][2], J[3][2]}, Vec4{0.0, -(r * sp + ak_ * cp), r * cp - ak_ * sp, 0.0}};
+}
+
+}  // namespace lc

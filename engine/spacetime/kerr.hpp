@@ -1,0 +1,142 @@
+#pragma once
+// Kerr spacetime (mass M >= 0, spin a, |a| <= M) in ingoing Cartesian
+// Kerr–Schild coordinates (t, x, y, z): regular on the spin axis and across the
+// future horizon.  g_{mu nu} = eta_{mu nu} + f l_mu l_nu with
+//   f = 2 M r^3 / (r^4 + a^2 z^2),
+//   l = (1, (r x + a y)/(r^2 + a^2), (r y - a x)/(r^2 + a^2), z / r),
+// and r the Boyer–Lindquist radius, the root of
+//   (x^2 + y^2)/(r^2 + a^2) + z^2/r^2 = 1.
+// Relation to Boyer–Lindquist (t, r, theta, phi), e.g. Visser, "The Kerr
+// spacetime: a brief introduction", arXiv:0706.0622, sec. 3:
+//   x + i y = (r + i a) sin(theta) e^{i phit},  z = r cos(theta),
+//   t_KS = t_BL + T(r),  phit = phi + Phi(r),  T' = 2 M r / Delta,  Phi' = a / Delta.
+// Scene coordinates (what users and data layers see) are Boyer–Lindquist.
+//
+// The outgoing variant is the time reverse: t_KS = t_BL - T(r),
+// phit = phi - Phi(r), x + i y = (r - i a) sin(theta) e^{i phit} and
+// l = (-1, (r x - a y)/(r^2 + a^2), (r y + a x)/(r^2 + a^2), z / r), i.e. the
+// ingoing form with a -> -a and l_t -> -1.  It is regular across the past
+// horizon, where rays traced backwards in time from a camera go: in ingoing
+// coordinates those rays wind round the horizon without reaching it (phit and
+// t diverge logarithmically) and cost many steps.  Future-directed curves use
+// the ingoing form for the same reason.
+
+#include <cmath>
+
+#include "core/tensor.hpp"
+
+namespace lc {
+
+enum class KerrSchildSense { ingoing, outgoing };
+
+class Kerr {
+ public:
+  // Throws std::invalid_argument when M < 0 or |a| > M or either is not finite.
+  Kerr(double mass, double spin, KerrSchildSense sense = KerrSchildSense::outgoing);
+
+  KerrSchildSense sense() const { return sense_ == 1.0 ? KerrSchildSense::ingoing : KerrSchildSense::outgoing; }
+  // The same spacetime in the other Kerr–Schild chart.
+  Kerr with_sense(KerrSchildSense s) const { return Kerr(M_, a_, s); }
+
+  double mass() const { return M_; }
+  double spin() const { return a_; }
+  // Outer horizon r_+ (0 for M = 0).
+  double horizon_radius() const { return r_plus_; }
+  // Boyer–Lindquist radius below which rays are taken as captured.
+  double capture_radius() const { return r_capture_; }
+
+  // Boyer–Lindquist radius of a Kerr–Schild point.
+  double bl_radius(double x, double y, double z) const {
+    const double a2 = a_ * a_;
+    const double w = x * x + y * y + z * z - a2;
+    const double r2 = 0.5 * (w + std::sqrt(w * w + 4.0 * a2 * z * z));
+    return std::sqrt(r2);
+  }
+
+  // Hamilton's equations for H = 1/2 g^{mu nu} p_mu p_nu: outputs
+  // dx^mu/dlambda = g^{mu nu} p_nu and dp_mu/dlambda = -dH/dx^mu.  The hot path
+  // of every Kerr ray; uses g^{mu nu} = eta^{mu nu} - f l^mu l^nu, so H needs
+  // only f, l and their gradients.  Assumes the point is off the ring singularity.
+  void hamiltonian_rhs(const Vec4& x, const Vec4& p, Vec4& dx, Vec4& dp) const {
+    const double X = x[1], Y = x[2], Z = x[3];
+    const double a = ak_, a2 = a_ * a_;
+    const double r = bl_radius(X, Y, Z);
+    const double r2 = r * r;
+    const double inv_r = 1.0 / r;
+    const double q = 1.0 / (r2 + a2);
+    const double den = 1.0 / (r2 * r2 + a2 * Z * Z);
+    const double f = 2.0 * M_ * r2 * r * den;
+    const double lx = (r * X + a * Y) * q, ly = (r * Y - a * X) * q, lz = Z * inv_r;
+    // L = l^mu p_mu with l^mu = (-l_t, lx, ly, lz), l_t = +1 ingoing, -1 outgoing.
+    const double L = -sense_ * p[0] + lx * p[1] + ly * p[2] + lz * p[3];
+    dx[0] = -p[0] + sense_ * f * L;
+    dx[1] = p[1] - f * L * lx;
+    dx[2] = p[2] - f * L * ly;
+    dx[3] = p[3] - f * L * lz;
+    // Gradient of r (implicit differentiation of the defining quartic).
+    const double gr_common = r2 * r * den;
+    const double drx = X * gr_common, dry = Y * gr_common, drz = Z * (r2 + a2) * r * den;
+    // f(r, z): partial derivatives, then chain rule.
+    const double dfdr = 2.0 * M_ * r2 * (3.0 * a2 * Z * Z - r2 * r2) * den * den;
+    const double dfdz = -4.0 * M_ * r2 * r * a2 * Z * den * den;
+    const double dfx = dfdr * drx, dfy = dfdr * dry, dfz = dfdr * drz + dfdz;
+    // dL/dx^j = sum_i (d l_i/dx^j) p_i, l_x = (rX + aY) q, l_y = (rY - aX) q, l_z = Z/r.
+    const double two_r_q = 2.0 * r * q;
+    auto dL = [&](double drj, double dXj, double dYj, double dZj) {
+      const double dlx = (drj * X + r * dXj + a * dYj) * q - lx * two_r_q * drj;
+      const double dly = (drj * Y + r * dYj - a * dXj) * q - ly * two_r_q * drj;
+      const double dlz = dZj * inv_r - lz * inv_r * drj;
+      return dlx * p[1] + dly * p[2] + dlz * p[3];
+    };
+    const double half_L2 = 0.5 * L * L;
+    dp[0] = 0.0;
+    dp[1] = dfx * half_L2 + f * L * dL(drx, 1.0, 0.0, 0.0);
+    dp[2] = dfy * half_L2 + f * L * dL(dry, 0.0, 1.0, 0.0);
+    dp[3] = dfz * half_L2 + f * L * dL(drz, 0.0, 0.0, 1.0);
+  }
+
+  // Captured: inside the capture radius (see constants.hpp).  Kerr–Schild point.
+  bool captured(const Vec4& x) const { return M_ > 0.0 && bl_radius(x[1], x[2], x[3]) < r_capture_; }
+  // Inside (or on) the outer horizon.
+  bool inside_horizon(const Vec4& x) const { return M_ > 0.0 && bl_radius(x[1], x[2], x[3]) <= r_plus_; }
+
+  Mat4 metric(const Vec4& x) const;
+  Mat4 inverse_metric(const Vec4& x) const;
+  // d[alpha][mu][nu] = ∂_alpha g_{mu nu}, analytic.
+  Mat4Derivs metric_derivatives(const Vec4& x) const;
+
+  // Boyer–Lindquist metric at BL coordinates (t, r, theta, phi); for tests and
+  // documentation of conventions (g_{t phi} = -2 M a r sin^2 / Sigma).
+  Mat4 bl_metric(const Vec4& s) const;
+
+  // Coordinate maps between scene (Boyer–Lindquist) and trace (Kerr–Schild)
+  // coordinates; valid outside the horizon (T and Phi diverge on it).
+  Vec4 trace_from_scene(const Vec4& s) const;
+  Vec4 scene_from_trace(const Vec4& x) const;
+  // J[mu][nu] = ∂x_KS^mu / ∂s_BL^nu at the BL point s.
+  Mat4 trace_jacobian(const Vec4& s) const;
+  // Components in BL of a vector given in KS at the KS point x.
+  Vec4 scene_vector(const Vec4& x, const Vec4& v) const;
+  // Gradient (covector, KS components) of BL time t at the KS point x.
+  Vec4 scene_time_gradient(const Vec4& x) const;
+
+  // The BL coordinate basis at a KS point x as KS vectors, with the phi vector
+  // divided by sin(theta): {∂_t, ∂_r, ∂_theta, ∂_phi / sin(theta)}.  Every one is
+  // finite on the spin axis, where the last two are the limit at the given phi
+  // (theta = 0 alone does not fix phi, so it is passed in scene form).
+  std::array<Vec4, 4> polar_basis(const Vec4& scene_point) const;
+
+  // BL -> KS shifts of t and phi in this chart: t_KS = t_BL + time_shift(r),
+  // phit = phi + phi_shift(r) (sense * T(r) and sense * Phi(r); integration
+  // constants documented in docs/physics.md).
+  double time_shift(double r) const;
+  double phi_shift(double r) const;
+
+ private:
+  double M_, a_;
+  double sense_;  // l_t: +1 ingoing, -1 outgoing
+  double ak_;     // spin as it enters the chart's formulas: sense * a
+  double r_plus_ = 0.0, r_minus_ = 0.0, r_capture_ = 0.0;
+};
+
+}  // namespace lc

@@ -1,0 +1,22 @@
+#pragma once
+// Flat spacetime in Cartesian coordinates: straight rays, the control case
+// every curved scene must reduce to.
+
+#include "spacetime/cartesian_scene.hpp"
+
+namespace lc {
+
+class Minkowski : public CartesianScene {
+ public:
+  void hamiltonian_rhs(const Vec4&, const Vec4& p, Vec4& dx, Vec4& dp) const {
+    dx = {-p[0], p[1], p[2], p[3]};
+    dp = {0.0, 0.0, 0.0, 0.0};
+  }
+  bool captured(const Vec4&) const { return false; }
+  bool inside_horizon(const Vec4&) const { return false; }
+  Mat4 metric(const Vec4&) const { return {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
+  Mat4 inverse_metric(const Vec4& x) const { return metric(x); }
+  Mat4Derivs metric_derivatives(const Vec4&) const { return {}; }
+};
+
+}  // namespace lc

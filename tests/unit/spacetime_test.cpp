@@ -1,0 +1,270 @@
+// Every spacetime against itself and against closed forms: metric times its
+// inverse, analytic derivatives against finite differences, Hamilton's
+// equations against finite differences of H, the Kerr–Schild form against the
+// Boyer–Lindquist form through the coordinate map, and the special cases
+// (a = 0 is Schwarzschild, M = 0 is flat).
+
+#include <gtest/gtest.h>
+
+#include "spacetime/spacetime.hpp"
+#include "test_points.hpp"
+
+namespace lc {
+namespace {
+
+// Central differences with step h have truncation error ~h^2 f''' and
+// round-off ~eps f / h; h = 1e-5 balances them near 1e-10 for O(1) metrics,
+// so comparisons below use 1e-7, relative to the derivative where it is
+// larger than one (near a dihole's point horizon derivatives reach ~100).
+constexpr double fd_step = 1e-5;
+constexpr double fd_tol = 1e-7;
+
+template <class S>
+void expect_inverse(const S& st, const std::vector<Vec4>& pts) {
+  for (const auto& x : pts) {
+    const Mat4 I = multiply(st.metric(x), st.inverse_metric(x));
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) EXPECT_NEAR(I[i][j], i == j ? 1.0 : 0.0, 1e-12) << "at x=" << x[1] << "," << x[2] << "," << x[3];
+  }
+}
+
+template <class S>
+void expect_derivatives(const S& st, const std::vector<Vec4>& pts) {
+  for (const auto& x : pts) {
+    const Mat4Derivs d = st.metric_derivatives(x);
+    for (int a = 0; a < 4; ++a) {
+      Vec4 xp = x, xm = x;
+      xp[a] += fd_step;
+      xm[a] -= fd_step;
+      const Mat4 gp = st.metric(xp), gm = st.metric(xm);
+      for (int m = 0; m < 4; ++m)
+        for (int n = 0; n < 4; ++n)
+          EXPECT_NEAR(d[a][m][n], (gp[m][n] - gm[m][n]) / (2 * fd_step), fd_tol * std::max(1.0, std::abs(d[a][m][n])))
+              << "d" << a << " g" << m << n << " at " << x[1] << "," << x[2] << "," << x[3];
+    }
+  }
+}
+
+template <class S>
+double hamiltonian(const S& st, const Vec4& x, const Vec4& p) {
+  return 0.5 * contract(st.inverse_metric(x), p, p);
+}
+
+template <class S>
+void expect_hamilton_equations(const S& st, const std::vector<Vec4>& pts) {
+  const auto ps = test::momenta(static_cast<int>(pts.size()));
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const Vec4& x = pts[k];
+    const Vec4& p = ps[k];
+    Vec4 dx, dp;
+    st.hamiltonian_rhs(x, p, dx, dp);
+    const Vec4 dx_ref = mat_vec(st.inverse_metric(x), p);
+    for (int m = 0; m < 4; ++m) {
+      EXPECT_NEAR(dx[m], dx_ref[m], 1e-12);
+      Vec4 xp = x, xm = x;
+      xp[m] += fd_step;
+      xm[m] -= fd_step;
+      const double dH = (hamiltonian(st, xp, p) - hamiltonian(st, xm, p)) / (2 * fd_step);
+      EXPECT_NEAR(dp[m], -dH, fd_tol * std::max(1.0, std::abs(dp[m]))) << "component " << m;
+    }
+  }
+}
+
+constexpr KerrSchildSense both_senses[] = {KerrSchildSense::ingoing, KerrSchildSense::outgoing};
+
+TEST(Kerr, MetricTimesInverseIsIdentity) {
+  for (auto sense : both_senses)
+    for (double a : {0.0, 0.5, 0.9, 0.999, 1.0})
+      expect_inverse(Kerr(1.0, a, sense), test::cartesian_points(200, 1.5, 60));
+}
+
+TEST(Kerr, DerivativesMatchFiniteDifferences) {
+  for (auto sense : both_senses)
+    for (double a : {0.0, 0.6, -0.9, 1.0})
+      expect_derivatives(Kerr(1.0, a, sense), test::cartesian_points(200, 2.1, 40));
+}
+
+TEST(Kerr, HamiltonEquationsMatchFiniteDifferences) {
+  for (auto sense : both_senses)
+    for (double a : {0.0, 0.6, -0.9, 1.0})
+      expect_hamilton_equations(Kerr(1.0, a, sense), test::cartesian_points(200, 2.1, 40));
+}
+
+TEST(Kerr, ZeroSpinIsSchwarzschildInKerrSchildForm) {
+  // Schwarzschild in ingoing Kerr–Schild: g = eta + (2M/r) l l, l = (1, x/r, y/r, z/r).
+  const double M = 1.3;
+  const Kerr k(M, 0.0, KerrSchildSense::ingoing);
+  for (const auto& x : test::cartesian_points(100, 2.7, 50)) {
+    const double r = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    const Vec4 l = {1.0, x[1] / r, x[2] / r, x[3] / r};
+    const Mat4 g = k.metric(x);
+    for (int m = 0; m < 4; ++m)
+      for (int n = 0; n < 4; ++n)
+        EXPECT_NEAR(g[m][n], (m == n ? (m == 0 ? -1.0 : 1.0) : 0.0) + 2 * M / r * l[m] * l[n], 1e-14);
+  }
+}
+
+TEST(Kerr, ZeroSpinBoyerLindquistIsSchwarzschildClosedForm) {
+  const Kerr k(1.0, 0.0);
+  const double r = 7.0, th = 1.1;
+  const Mat4 g = k.bl_metric({0, r, th, 0.3});
+  EXPECT_DOUBLE_EQ(g[0][0], -(1 - 2 / r));
+  EXPECT_DOUBLE_EQ(g[1][1], 1 / (1 - 2 / r));
+  EXPECT_DOUBLE_EQ(g[2][2], r * r);
+  EXPECT_DOUBLE_EQ(g[3][3], r * r * std::sin(th) * std::sin(th));
+  EXPECT_DOUBLE_EQ(g[0][3], 0.0);
+}
+
+TEST(Kerr, KerrSchildPullsBackToBoyerLindquist) {
+  // J^T g_KS J = g_BL: fixes the signs of the coordinate map (phi shift, the
+  // sense of rotation) against the textbook Boyer–Lindquist metric.
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (auto sense : both_senses)
+  for (double a : {0.0, 0.5, -0.7, 0.99}) {
+    const Kerr k(1.0, a, sense);
+    for (int i = 0; i < 100; ++i) {
+      const Vec4 s = {5 * u(rng), k.horizon_radius() + 0.05 + 40 * u(rng), 0.05 + 3.0 * u(rng), 6.2 * u(rng)};
+      const Mat4 J = k.trace_jacobian(s);
+      const Mat4 gks = k.metric(k.trace_from_scene(s));
+      const Mat4 gbl = k.bl_metric(s);
+      for (int m = 0; m < 4; ++m)
+        for (int n = 0; n < 4; ++n) {
+          double v = 0.0;
+          for (int p = 0; p < 4; ++p)
+            for (int q = 0; q < 4; ++q) v += J[p][m] * gks[p][q] * J[q][n];
+          EXPECT_NEAR(v, gbl[m][n], 1e-9 * std::max(1.0, std::abs(gbl[m][n]))) << m << n << " a=" << a;
+        }
+    }
+  }
+}
+
+TEST(Kerr, JacobianMatchesFiniteDifferencesOfTheMap) {
+  for (auto sense : both_senses) {
+  const Kerr k(1.0, 0.8, sense);
+  const Vec4 s = {1.0, 6.5, 0.9, 2.0};
+  const Mat4 J = k.trace_jacobian(s);
+  for (int n = 0; n < 4; ++n) {
+    Vec4 sp = s, sm = s;
+    sp[n] += fd_step;
+    sm[n] -= fd_step;
+    const Vec4 xp = k.trace_from_scene(sp), xm = k.trace_from_scene(sm);
+    for (int m = 0; m < 4; ++m) EXPECT_NEAR(J[m][n], (xp[m] - xm[m]) / (2 * fd_step), fd_tol);
+  }
+  }
+}
+
+TEST(Kerr, SceneCoordinatesRoundTrip) {
+  for (auto sense : both_senses) {
+  const Kerr k(1.0, 0.9, sense);
+  for (double th : {0.0, 1e-7, 0.4, 1.5707963267948966, 2.9, 3.141592653589793})
+    for (double ph : {0.0, 1.0, 4.0}) {
+      const Vec4 s = {3.0, 7.5, th, ph};
+      const Vec4 back = k.scene_from_trace(k.trace_from_scene(s));
+      EXPECT_NEAR(back[0], s[0], 1e-12);
+      EXPECT_NEAR(back[1], s[1], 1e-12);
+      EXPECT_NEAR(back[2], s[2], 1e-7);
+      if (std::sin(th) > 1e-3) {
+        EXPECT_NEAR(back[3], s[3], 1e-12);
+      }
+    }
+  }
+}
+
+TEST(Kerr, SceneTimeGradientMatchesFiniteDifferences) {
+  for (auto sense : both_senses) {
+  const Kerr k(1.0, 0.7, sense);
+  for (const auto& x : test::cartesian_points(50, 3, 30)) {
+    const Vec4 g = k.scene_time_gradient(x);
+    for (int m = 0; m < 4; ++m) {
+      Vec4 xp = x, xm = x;
+      xp[m] += fd_step;
+      xm[m] -= fd_step;
+      EXPECT_NEAR(g[m], (k.scene_from_trace(xp)[0] - k.scene_from_trace(xm)[0]) / (2 * fd_step), 1e-6);
+    }
+  }
+  }
+}
+
+TEST(Kerr, ZeroMassIsFlat) {
+  const Kerr k(0.0, 0.0);
+  for (const auto& x : test::cartesian_points(20, 0.5, 10)) {
+    const Mat4 g = k.metric(x);
+    for (int m = 0; m < 4; ++m)
+      for (int n = 0; n < 4; ++n) EXPECT_EQ(g[m][n], m == n ? (m == 0 ? -1.0 : 1.0) : 0.0);
+    EXPECT_FALSE(k.captured(x));
+  }
+}
+
+TEST(Kerr, RejectsUnphysicalParameters) {
+  EXPECT_THROW(Kerr(-1.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(Kerr(1.0, 1.01), std::invalid_argument);
+  EXPECT_THROW(Kerr(1.0, -1.01), std::invalid_argument);
+  EXPECT_THROW(Kerr(0.0, 0.1), std::invalid_argument);
+  EXPECT_THROW(Kerr(std::nan(""), 0.0), std::invalid_argument);
+}
+
+TEST(Kerr, ChartsDescribeTheSameSpacetime) {
+  // Both charts pulled back to Boyer–Lindquist give the same metric (checked
+  // above); here: the same scene point maps to different charts but the same
+  // scene point back, and the outgoing chart is the time-reversed ingoing one.
+  const Kerr in(1.0, 0.9, KerrSchildSense::ingoing), out(1.0, 0.9, KerrSchildSense::outgoing);
+  const Vec4 s = {2.0, 5.0, 1.0, 0.5};
+  const Vec4 xi = in.trace_from_scene(s), xo = out.trace_from_scene(s);
+  EXPECT_NEAR(xi[0] - s[0], -(xo[0] - s[0]), 1e-12);
+  const Vec4 bo = out.scene_from_trace(xo);
+  for (int m = 0; m < 4; ++m) EXPECT_NEAR(bo[m], s[m], 1e-12);
+}
+
+TEST(Kerr, HorizonAndCaptureRadii) {
+  const Kerr k(1.0, 0.9);
+  EXPECT_NEAR(k.horizon_radius(), 1.0 + std::sqrt(1 - 0.81), 1e-15);
+  // Prograde photon orbit for a = 0.9 is r = 1.5578 (Bardeen et al. 1972).
+  EXPECT_GT(k.capture_radius(), k.horizon_radius());
+  EXPECT_LT(k.capture_radius(), 1.5578);
+  EXPECT_NEAR(Kerr(1.0, 0.0).capture_radius(), 2.5, 1e-12);
+}
+
+TEST(Dihole, MetricTimesInverseIsIdentity) {
+  expect_inverse(Dihole(0.4, 0.4, 1.0), test::cartesian_points(200, 0.2, 60));
+}
+
+TEST(Dihole, DerivativesMatchFiniteDifferences) {
+  expect_derivatives(Dihole(0.4, 0.7, 1.0), test::cartesian_points(200, 0.3, 30));
+}
+
+TEST(Dihole, HamiltonEquationsMatchFiniteDifferences) {
+  expect_hamilton_equations(Dihole(0.4, 0.25, 1.5), test::cartesian_points(200, 0.3, 30));
+}
+
+TEST(Dihole, ClosedFormAtAPoint) {
+  const Dihole d(0.4, 0.4, 1.0);
+  // At (3, 0, 0): |x - x_i| = sqrt(10), U = 1 + 0.8 / sqrt(10).
+  const double U = 1 + 0.8 / std::sqrt(10.0);
+  const Mat4 g = d.metric({0, 3, 0, 0});
+  EXPECT_NEAR(g[0][0], -1 / (U * U), 1e-15);
+  EXPECT_NEAR(g[1][1], U * U, 1e-15);
+  EXPECT_FALSE(d.captured({0, 3, 0, 0}));
+  EXPECT_TRUE(d.captured({0, 0, 0, 1.0 + 0.01}));
+}
+
+TEST(Dihole, ZeroMassesAreFlat) {
+  const Dihole d(0.0, 0.0, 1.0);
+  const Mat4 g = d.metric({0, 0.1, 0.2, 1.0});
+  EXPECT_EQ(g[0][0], -1.0);
+  EXPECT_EQ(g[3][3], 1.0);
+  EXPECT_FALSE(d.captured({0, 0, 0, 1.0}));
+}
+
+TEST(Dihole, RejectsUnphysicalParameters) {
+  EXPECT_THROW(Dihole(-0.1, 0.4, 1.0), std::invalid_argument);
+  EXPECT_THROW(Dihole(0.1, 0.4, 0.0), std::invalid_argument);
+}
+
+TEST(Minkowski, HamiltonEquations) {
+  expect_inverse(Minkowski{}, test::cartesian_points(10, 1, 10));
+  expect_hamilton_equations(Minkowski{}, test::cartesian_points(10, 1, 10));
+}
+
+}  // namespace
+}  // namespace lc
