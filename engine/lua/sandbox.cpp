@@ -1,0 +1,611 @@
+#include "lua/sandbox.hpp"
+
+#include <luajit.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+namespace lc::lua {
+
+namespace {
+
+// print(...) writing to standard error, tab-separated, via tostring.
+int print_to_stderr(lua_State* L) {
+  const int n = lua_gettop(L);
+  lua_getglobal(L, "tostring");
+  for (int i = 1; i <= n; ++i) {
+    lua_pushvalue(L, -1);
+    lua_pushvalue(L, i);
+    lua_call(L, 1, 1);
+    std::size_t len = 0;
+    const char* text = lua_tolstring(L, -1, &len);
+    if (text == nullptr) return luaL_error(L, "'tostring' must return a string to 'print'");
+    if (i > 1) std::fputc('\t', stderr);
+    std::fwrite(text, 1, len, stderr);
+    lua_pop(L, 1);
+  }
+  std::fputc('\n', stderr);
+  return 0;
+}
+
+using Clock = std::chrono::steady_clock;
+
+// How often (in VM instructions) the deadline is checked. Reading the clock
+// costs ~20 ns, so this keeps the check far below 1 % of interpretation.
+constexpr int kHookInstructions = 1000;
+
+// Returned by Impl::require_module when the Lua value on top of the stack is
+// an error to re-raise as is (it already carries its location).
+constexpr int kRethrow = -1;
+
+// Frames of a traceback kept before and after an elision.
+constexpr std::size_t kFramesHead = 8;
+constexpr std::size_t kFramesTail = 3;
+
+// Reads a whole file. Returns the OS error, if any (ENOENT, EISDIR, ...).
+std::error_code read_whole_file(const std::filesystem::path& path, std::string& out) {
+  out.clear();
+  errno = 0;
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) return {errno != 0 ? errno : EIO, std::generic_category()};
+  std::error_code ec;
+  char buf[1 << 14];
+  for (;;) {
+    const std::size_t n = std::fread(buf, 1, sizeof buf, f);
+    out.append(buf, n);
+    if (n < sizeof buf) {
+      if (std::ferror(f)) ec = {errno != 0 ? errno : EIO, std::generic_category()};
+      break;
+    }
+  }
+  std::fclose(f);
+  return ec;
+}
+
+// LuaJIT bytecode dumps start with ESC; text sources never legitimately do.
+bool looks_like_bytecode(std::string_view source) {
+  return !source.empty() && source.front() == '\033';
+}
+
+// Module names are dot-separated words of [A-Za-z0-9_]: this makes paths,
+// '..' and absolute names unrepresentable rather than filtered.
+bool valid_module_name(std::string_view name) {
+  if (name.empty() || name.front() == '.' || name.back() == '.') return false;
+  char prev = '.';
+  for (const char c : name) {
+    const bool word = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                      (c >= '0' && c <= '9') || c == '_';
+    if (!word && !(c == '.' && prev != '.')) return false;
+    prev = c;
+  }
+  return true;
+}
+
+std::string join(const std::vector<std::string>& parts, std::string_view sep) {
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (i != 0) out += sep;
+    out += parts[i];
+  }
+  return out;
+}
+
+// Keeps the message and a short traceback: elides the middle of deep stacks
+// and drops anonymous C frames ("[C]: at 0x55..."), which LuaJIT prints for C
+// functions it cannot name: the C++ harness, and C functions reached by a
+// tail call (`return kerr{...}`), except `require`, which gets its name back.
+std::string tidy_traceback(std::string_view message, std::uintptr_t require_address) {
+  constexpr std::string_view kMarker = "\nstack traceback:";
+  const std::size_t at = message.find(kMarker);
+  if (at == std::string_view::npos) return std::string(message);
+  std::string out(message.substr(0, at + kMarker.size()));
+  std::vector<std::string> frames;
+  std::size_t pos = at + kMarker.size();
+  while (pos < message.size()) {
+    if (message[pos] == '\n') ++pos;
+    const std::size_t end = std::min(message.find('\n', pos), message.size());
+    const std::string_view line = message.substr(pos, end - pos);
+    pos = end;
+    constexpr std::string_view kAnonymousC = "\t[C]: at 0x";
+    if (line.starts_with(kAnonymousC)) {
+      const std::string hex(line.substr(kAnonymousC.size()));
+      if (std::strtoull(hex.c_str(), nullptr, 16) == require_address) {
+        frames.emplace_back("\t[C]: in function 'require'");
+      }
+      continue;
+    }
+    if (line.empty() || line == "\t[C]: in ?") continue;
+    frames.emplace_back(line);
+  }
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    if (frames.size() > kFramesHead + kFramesTail + 1 && i == kFramesHead) {
+      out += "\n\t...";
+      i = frames.size() - kFramesTail;
+    }
+    out += '\n';
+    out += frames[i];
+  }
+  return out;
+}
+
+std::string format_mib(std::size_t bytes) {
+  return fmt::format("{:g} MiB", static_cast<double>(bytes) / double(1u << 20));
+}
+
+}  // namespace
+
+// Everything one sandboxed state needs. It is the allocator's user data, so
+// the C callbacks (allocator, hook, message handler, require) reach it from
+// any lua_State of the sandbox with lua_getallocf and no global state.
+struct Sandbox::Impl {
+  lua_State* L = nullptr;
+  std::vector<std::filesystem::path> require_dirs;
+  SandboxLimits limits;
+  std::vector<std::filesystem::path> loaded;
+
+  std::size_t heap_bytes = 0;  // live bytes handed out to Lua
+  bool cap_lifted = false;     // while the handler formats a traceback
+  int depth = 0;               // nesting of run_file/call; >0 means evaluating
+  Clock::time_point deadline;
+  bool hook_every_instruction = false;
+  std::vector<std::string> loading;  // the chain of modules being required
+  std::vector<std::string> loading_files;  // their paths, for locating errors
+  std::string main_file;                   // the outermost run_file's script
+
+  int handler_ref = LUA_NOREF;     // the traceback message handler
+  int modules_ref = LUA_NOREF;     // module name -> value of loaded modules
+  int last_trace_ref = LUA_NOREF;  // the last message the handler produced
+  // Its address, as a light userdata, stands for a memory error re-raised by
+  // require (lua_error cannot raise LUA_ERRMEM itself).
+  char memory_sentinel = 0;
+
+  Impl() = default;
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+  ~Impl() {
+    if (L != nullptr) lua_close(L);
+  }
+
+  static Impl& of(lua_State* L) {
+    void* ud = nullptr;
+    lua_getallocf(L, &ud);
+    return *static_cast<Impl*>(ud);
+  }
+
+  // The cap only binds while a script is evaluated, so the engine's own
+  // stack work between evaluations (reading results) cannot fail with an
+  // unprotected memory error, which would abort the process.
+  static void* allocate(void* ud, void* ptr, std::size_t osize, std::size_t nsize) {
+    auto& s = *static_cast<Impl*>(ud);
+    if (ptr == nullptr) osize = 0;
+    if (nsize == 0) {
+      std::free(ptr);
+      s.heap_bytes -= osize;
+      return nullptr;
+    }
+    if (s.depth > 0 && !s.cap_lifted && nsize > osize &&
+        s.heap_bytes - osize + nsize > s.limits.memory_bytes) {
+      return nullptr;  // LuaJIT raises LUA_ERRMEM
+    }
+    void* p = std::realloc(ptr, nsize);
+    if (p != nullptr) s.heap_bytes = s.heap_bytes - osize + nsize;
+    return p;
+  }
+
+  // Count hook: fails the evaluation once its deadline has passed. After the
+  // first failure it fires on every instruction, so a script cannot swallow
+  // the error with pcall and keep looping: the first instruction it runs
+  // outside a pcall fails again.
+  static void time_hook(lua_State* L, lua_Debug*) {
+    Impl& s = of(L);
+    if (s.depth == 0 || Clock::now() < s.deadline) return;
+    if (!s.hook_every_instruction) {
+      s.hook_every_instruction = true;
+      lua_sethook(L, &time_hook, LUA_MASKCOUNT, 1);
+    }
+    {
+      // In a hook, level 0 is the running Lua function.
+      const std::string loc = Sandbox::where(L, 0);
+      const std::string msg =
+          fmt::format("{}{}time limit of {:g} s exceeded (set by {})", loc == "?" ? "" : loc,
+                      loc == "?" ? "" : ": ", s.limits.seconds, s.limits.set_by);
+      lua_pushlstring(L, msg.data(), msg.size());
+    }
+    lua_error(L);
+  }
+
+  // Message handler of every protected call: error value -> string with a
+  // traceback. Passes through the memory sentinel and a message it already
+  // traced (an error re-raised by require carries the module's frames).
+  static int message_handler(lua_State* L) {
+    Impl& s = of(L);
+    if (lua_type(L, 1) == LUA_TLIGHTUSERDATA && lua_touserdata(L, 1) == &s.memory_sentinel) {
+      return 1;
+    }
+    lua_settop(L, 1);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, s.last_trace_ref);
+    if (lua_rawequal(L, 1, 2)) return 1;
+    lua_settop(L, 1);
+    if (lua_type(L, 1) != LUA_TSTRING && lua_type(L, 1) != LUA_TNUMBER) {
+      if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) {
+        lua_replace(L, 1);
+      } else {
+        lua_settop(L, 1);
+        // error() adds no position to non-strings: name the first Lua frame.
+        std::string msg = fmt::format("error object is a {} value", luaL_typename(L, 1));
+        for (int level = 1; level < 100; ++level) {
+          lua_Debug ar;
+          if (lua_getstack(L, level, &ar) == 0) break;
+          const std::string loc = Sandbox::where(L, level);
+          if (loc != "?") {
+            msg = fmt::format("{}: {}", loc, msg);
+            break;
+          }
+        }
+        lua_pushlstring(L, msg.data(), msg.size());
+        lua_replace(L, 1);
+      }
+    }
+    {
+      // A script that fails close to the cap still gets its message: the
+      // few bytes of a traceback may exceed the cap.
+      const CapLift lift(s);
+      luaL_traceback(L, L, lua_tostring(L, 1), 1);
+    }
+    lua_pushvalue(L, -1);
+    lua_rawseti(L, LUA_REGISTRYINDEX, s.last_trace_ref);
+    return 1;
+  }
+
+  // Suspends the memory cap for a bounded allocation by the harness itself.
+  class CapLift {
+   public:
+    explicit CapLift(Impl& s) : s_(s), was_(s.cap_lifted) { s_.cap_lifted = true; }
+    ~CapLift() { s_.cap_lifted = was_; }
+    CapLift(const CapLift&) = delete;
+    CapLift& operator=(const CapLift&) = delete;
+
+   private:
+    Impl& s_;
+    bool was_;
+  };
+
+  void note_loaded(const std::filesystem::path& file) {
+    std::error_code ec;
+    std::filesystem::path canon = std::filesystem::canonical(file, ec);
+    if (ec) canon = std::filesystem::absolute(file, ec);
+    // A hash input, not a log: each file once, in order of first load.
+    if (std::find(loaded.begin(), loaded.end(), canon) == loaded.end()) {
+      loaded.push_back(std::move(canon));
+    }
+  }
+
+  // Our `require`: see sandbox.hpp and the brief in DESIGN.md. Runs inside
+  // protect(), so failures are C++ exceptions located at the calling line.
+  int require_module(lua_State* L) {
+    // Level 1 is unknown when require is called by pcall, or by a tail call
+    // (`return require(...)`: LuaJIT drops the caller's frame). Then name the
+    // module being loaded, else the nearest script line, else the script.
+    std::string loc = Sandbox::where(L, 1);
+    if (loc == "?" && !loading_files.empty()) loc = loading_files.back();
+    for (int level = 2; loc == "?" && level < 64; ++level) {
+      lua_Debug ar;
+      if (lua_getstack(L, level, &ar) == 0) break;
+      loc = Sandbox::where(L, level);
+    }
+    if (loc == "?") loc = main_file;
+    const auto failure = [&loc](const std::string& msg) {
+      return std::runtime_error(loc.empty() ? msg : fmt::format("{}: {}", loc, msg));
+    };
+    if (lua_type(L, 1) != LUA_TSTRING) {
+      throw failure(fmt::format("require expects a module name string, got {}", luaL_typename(L, 1)));
+    }
+    std::size_t len = 0;
+    const char* p = lua_tolstring(L, 1, &len);
+    const std::string name(p, len);
+    if (!valid_module_name(name)) {
+      throw failure(fmt::format(
+          "invalid module name {:?}: use dot-separated names of letters, digits and '_' "
+          "(like 'lib.orbits'), not paths",
+          name));
+    }
+    lua_settop(L, 1);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, modules_ref);
+    lua_pushvalue(L, 1);
+    lua_rawget(L, 2);
+    if (!lua_isnil(L, 3)) return 1;
+    lua_settop(L, 1);
+
+    if (auto it = std::find(loading.begin(), loading.end(), name); it != loading.end()) {
+      std::vector<std::string> chain(it, loading.end());
+      chain.push_back(name);
+      throw failure(fmt::format("require cycle: {}", join(chain, " -> ")));
+    }
+
+    std::string relative = name;
+    std::replace(relative.begin(), relative.end(), '.', '/');
+    relative += ".lua";
+    std::vector<std::string> searched;
+    std::filesystem::path found;
+    std::string source;
+    for (const auto& dir : require_dirs) {
+      std::filesystem::path candidate = dir / relative;
+      const std::error_code ec = read_whole_file(candidate, source);
+      if (!ec) {
+        found = std::move(candidate);
+        break;
+      }
+      if (ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory) {
+        throw failure(
+            fmt::format("cannot read module '{}' from {}: {}", name, candidate.string(), ec.message()));
+      }
+      searched.push_back(candidate.string());
+    }
+    if (found.empty()) {
+      throw failure(fmt::format("module '{}' not found (searched: {})", name,
+                                           searched.empty() ? "no directories" : join(searched, ", ")));
+    }
+    if (looks_like_bytecode(source)) {
+      throw failure(fmt::format(
+          "module '{}' ({}) is precompiled bytecode, which is refused: require Lua source", name,
+          found.string()));
+    }
+    note_loaded(found);
+    const std::string chunkname = "@" + found.string();
+    int status = luaL_loadbufferx(L, source.data(), source.size(), chunkname.c_str(), "t");
+    if (status == 0) {
+      // stack: name, chunk
+      lua_rawgeti(L, LUA_REGISTRYINDEX, handler_ref);
+      lua_insert(L, 2);
+      lua_pushvalue(L, 1);  // like Lua 5.1, the module receives its name
+      loading.push_back(name);
+      loading_files.push_back(found.string());
+      status = lua_pcall(L, 1, 1, 2);
+      loading.pop_back();
+      loading_files.pop_back();
+    }
+    if (status == LUA_ERRMEM) {
+      lua_pushlightuserdata(L, &memory_sentinel);
+      return kRethrow;
+    }
+    if (status != 0) return kRethrow;  // value already carries file:line
+    if (lua_isnil(L, -1)) {
+      lua_pop(L, 1);
+      lua_pushboolean(L, 1);
+    }
+    lua_rawgeti(L, LUA_REGISTRYINDEX, modules_ref);
+    lua_pushvalue(L, 1);
+    lua_pushvalue(L, -3);
+    lua_rawset(L, -3);
+    lua_pop(L, 1);
+    return 1;
+  }
+
+  static int require_entry(lua_State* L) {
+    const int n = protect(L, [](lua_State* L) { return of(L).require_module(L); });
+    if (n == kRethrow) return lua_error(L);
+    return n;
+  }
+
+  // Failure of a load or protected call whose error value is on top; the
+  // stack is reset to `base`. `name` names the script for memory errors.
+  [[noreturn]] void fail(int status, int base, const std::string& name) {
+    std::string msg;
+    if (status == LUA_ERRMEM ||
+        (lua_type(L, -1) == LUA_TLIGHTUSERDATA && lua_touserdata(L, -1) == &memory_sentinel)) {
+      msg = fmt::format("{}: memory limit of {} exceeded (set by {})", name,
+                        format_mib(limits.memory_bytes), limits.set_by);
+    } else if (lua_type(L, -1) == LUA_TSTRING) {
+      std::size_t len = 0;
+      const char* p = lua_tolstring(L, -1, &len);
+      msg = tidy_traceback(std::string_view(p, len),
+                           reinterpret_cast<std::uintptr_t>(&Impl::require_entry));
+    } else {
+      msg = fmt::format("{}: error object is a {} value", name, luaL_typename(L, -1));
+    }
+    lua_settop(L, base);
+    throw ScriptError(msg);
+  }
+
+  // Brackets one evaluation. Only the outermost one (a C function may call
+  // back into Lua) starts the clock, so nesting cannot extend the budget.
+  class Evaluation {
+   public:
+    explicit Evaluation(Impl& s) : s_(s) {
+      if (s_.depth++ != 0) return;
+      const std::chrono::duration<double> budget(s_.limits.seconds);
+      s_.deadline = budget < std::chrono::hours(24 * 365)
+                        ? Clock::now() + std::chrono::duration_cast<Clock::duration>(budget)
+                        : Clock::time_point::max();
+      if (s_.hook_every_instruction) {
+        s_.hook_every_instruction = false;
+        lua_sethook(s_.L, &time_hook, LUA_MASKCOUNT, kHookInstructions);
+      }
+    }
+    ~Evaluation() { --s_.depth; }
+    Evaluation(const Evaluation&) = delete;
+    Evaluation& operator=(const Evaluation&) = delete;
+
+   private:
+    Impl& s_;
+  };
+};
+
+Sandbox::Sandbox(std::vector<std::filesystem::path> require_dirs, SandboxLimits limits)
+    : impl_(std::make_unique<Impl>()) {
+  if (!(limits.seconds > 0) || limits.memory_bytes == 0) {
+    throw std::invalid_argument("SandboxLimits: seconds and memory_bytes must be positive");
+  }
+  Impl& s = *impl_;
+  s.require_dirs = std::move(require_dirs);
+  s.limits = std::move(limits);
+  lua_State* L = lua_newstate(&Impl::allocate, &s);
+  if (L == nullptr) {
+    throw ScriptError("cannot create a Lua state (custom allocators need a GC64 LuaJIT on x64)");
+  }
+  s.L = L;
+  // Count hooks do not fire in compiled traces; the interpreter is also
+  // plenty fast for shot logic.
+  luaJIT_setmode(L, 0, LUAJIT_MODE_ENGINE | LUAJIT_MODE_OFF);
+
+  const struct {
+    lua_CFunction open;
+    const char* name;
+  } libs[] = {{luaopen_base, ""},
+              {luaopen_table, LUA_TABLIBNAME},
+              {luaopen_string, LUA_STRLIBNAME},
+              {luaopen_math, LUA_MATHLIBNAME},
+              {luaopen_bit, LUA_BITLIBNAME}};
+  for (const auto& lib : libs) {
+    lua_pushcfunction(L, lib.open);
+    lua_pushstring(L, lib.name);
+    lua_call(L, 1, 0);
+  }
+  for (const char* name : {"dofile", "loadfile", "load", "loadstring", "require", "module",
+                           "getfenv", "setfenv", "collectgarbage", "newproxy", "gcinfo"}) {
+    lua_pushnil(L);
+    lua_setglobal(L, name);
+  }
+  lua_getglobal(L, LUA_STRLIBNAME);
+  lua_pushnil(L);
+  lua_setfield(L, -2, "dump");
+  lua_pop(L, 1);
+  // Scripts must be deterministic: every thread and MPI rank evaluates the
+  // shot itself, in its own order, and all must agree.  A per-state random
+  // sequence would make frame(i) depend on which frames ran before it.
+  lua_getglobal(L, LUA_MATHLIBNAME);
+  for (const char* name : {"random", "randomseed"}) {
+    lua_pushnil(L);
+    lua_setfield(L, -2, name);
+  }
+  lua_pop(L, 1);
+  // print goes to standard error: standard output may carry data (CSV).
+  lua_pushcfunction(L, &print_to_stderr);
+  lua_setglobal(L, "print");
+
+  lua_pushcfunction(L, &Impl::message_handler);
+  s.handler_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  lua_newtable(L);
+  s.modules_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  lua_pushboolean(L, 0);
+  s.last_trace_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+
+  lua_pushcfunction(L, &Impl::require_entry);
+  lua_setglobal(L, "require");
+  lua_sethook(L, &Impl::time_hook, LUA_MASKCOUNT, kHookInstructions);
+  lua_settop(L, 0);
+}
+
+Sandbox::~Sandbox() = default;
+Sandbox::Sandbox(Sandbox&&) noexcept = default;
+Sandbox& Sandbox::operator=(Sandbox&&) noexcept = default;
+
+void Sandbox::run_file(const std::filesystem::path& file, int nresults) {
+  Impl& s = *impl_;
+  lua_State* L = s.L;
+  std::string source;
+  if (const std::error_code ec = read_whole_file(file, source)) {
+    throw ScriptError(fmt::format("cannot read script {}: {}", file.string(), ec.message()));
+  }
+  if (looks_like_bytecode(source)) {
+    throw ScriptError(fmt::format(
+        "{}: precompiled bytecode is refused; run the Lua source instead", file.string()));
+  }
+  s.note_loaded(file);
+  if (lua_checkstack(L, 2) == 0) throw ScriptError("Lua stack overflow in the engine");
+  const int base = lua_gettop(L);
+  const Impl::Evaluation evaluation(s);
+  if (s.depth == 1) s.main_file = file.string();
+  lua_rawgeti(L, LUA_REGISTRYINDEX, s.handler_ref);
+  const std::string chunkname = "@" + file.string();
+  int status = luaL_loadbufferx(L, source.data(), source.size(), chunkname.c_str(), "t");
+  if (status == 0) status = lua_pcall(L, 0, nresults, base + 1);
+  if (status != 0) s.fail(status, base, file.string());
+  lua_remove(L, base + 1);
+}
+
+void Sandbox::call(int nargs, int nresults) {
+  Impl& s = *impl_;
+  lua_State* L = s.L;
+  const int func = lua_gettop(L) - nargs;
+  if (nargs < 0 || func < 1) throw ScriptError("Sandbox::call: no function below the arguments");
+  if (lua_checkstack(L, 2) == 0) throw ScriptError("Lua stack overflow in the engine");
+  const Impl::Evaluation evaluation(s);
+  // Below the function: a copy of it (to name the script in a memory error,
+  // which skips the handler) and the message handler. Neither allocates.
+  lua_pushvalue(L, func);
+  lua_insert(L, func);
+  lua_rawgeti(L, LUA_REGISTRYINDEX, s.handler_ref);
+  lua_insert(L, func + 1);
+  const int status = lua_pcall(L, nargs, nresults, func + 1);
+  if (status != 0) {
+    std::string name = "script";
+    lua_Debug ar;
+    lua_pushvalue(L, func);
+    if (lua_getinfo(L, ">S", &ar) != 0 && ar.source != nullptr && ar.source[0] == '@') {
+      name = ar.source + 1;
+    } else if (!s.loaded.empty()) {
+      name = s.loaded.front().string();
+    }
+    s.fail(status, func - 1, name);
+  }
+  lua_remove(L, func);
+  lua_remove(L, func);
+}
+
+const std::vector<std::filesystem::path>& Sandbox::loaded_files() const { return impl_->loaded; }
+
+const SandboxLimits& Sandbox::limits() const { return impl_->limits; }
+
+lua_State* Sandbox::state() const { return impl_ ? impl_->L : nullptr; }
+
+std::string Sandbox::where(lua_State* L, int level) {
+  lua_Debug ar;
+  if (lua_getstack(L, level, &ar) == 0 || lua_getinfo(L, "Sl", &ar) == 0 || ar.currentline <= 0) {
+    return "?";
+  }
+  const char* src = ar.source != nullptr && ar.source[0] == '@' ? ar.source + 1 : ar.short_src;
+  return fmt::format("{}:{}", src, ar.currentline);
+}
+
+void raise(lua_State* L, const std::string& msg) {
+  detail::push_located_message(L, msg.c_str());
+  lua_error(L);
+  std::abort();  // lua_error does not return; keeps [[noreturn]] honest
+}
+
+namespace detail {
+
+void push_located_message(lua_State* L, const char* what) {
+  {
+    // Level 1 is no Lua line when the C function was called by pcall or by
+    // a tail call (LuaJIT drops the calling frame): take the nearest one.
+    std::string loc = Sandbox::where(L, 1);
+    for (int level = 2; loc == "?" && level < 64; ++level) {
+      lua_Debug ar;
+      if (lua_getstack(L, level, &ar) == 0) break;
+      loc = Sandbox::where(L, level);
+    }
+    const std::string_view text(what);
+    if (loc != "?" && !(text.starts_with(loc) && text.substr(loc.size()).starts_with(": "))) {
+      const std::string msg = fmt::format("{}: {}", loc, text);
+      lua_pushlstring(L, msg.data(), msg.size());
+      return;
+    }
+  }
+  lua_pushstring(L, what);
+}
+
+}  // namespace detail
+
+}  // namespace lc::lua

@@ -1,0 +1,1 @@
+-- returns nothing: require gives true

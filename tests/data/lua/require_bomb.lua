@@ -1,0 +1,2 @@
+-- A module that exhausts memory.
+return require("bomb")

@@ -1,0 +1,310 @@
+// Tests of lc::lua::TableReader: typed getters, exact error messages, nested
+// contexts, strict finish() with suggestions, and Lua stack hygiene.
+
+#include "lua/sandbox.hpp"
+#include "lua/table_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace {
+
+using lc::lua::FieldError;
+using lc::lua::TableReader;
+
+class LuaTableReader : public ::testing::Test {
+ protected:
+  LuaTableReader() : sandbox_({}), L(sandbox_.state()) {}
+
+  // Pushes the value of a Lua expression (test-only loading of a string).
+  void push(const std::string& expression) {
+    const std::string chunk = "return " + expression;
+    ASSERT_EQ(luaL_loadstring(L, chunk.c_str()), 0) << lua_tostring(L, -1);
+    sandbox_.call(0, 1);
+  }
+
+  // The FieldError message `f` throws; fails the test if none is thrown.
+  template <class F>
+  std::string field_error(F&& f) {
+    try {
+      f();
+    } catch (const FieldError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no FieldError thrown";
+    return {};
+  }
+
+  lc::lua::Sandbox sandbox_;
+  lua_State* L;
+};
+
+TEST_F(LuaTableReader, RejectsNonTables) {
+  push("3");
+  EXPECT_EQ(field_error([&] { TableReader r(L, -1, "spec.lua:4: spacetime"); }),
+            "spec.lua:4: spacetime: expected a table, got number 3");
+  push("'kerr'");
+  EXPECT_EQ(field_error([&] { TableReader r(L, -1, "ctx"); }), "ctx: expected a table, got string \"kerr\"");
+  EXPECT_EQ(lua_gettop(L), 2);
+}
+
+TEST_F(LuaTableReader, TypedGetters) {
+  push("{mass = 1.5, frames = 900, name = 'dihole', preview = true, none = false}");
+  TableReader r(L, -1, "shot");
+  EXPECT_EQ(r.number("mass"), 1.5);
+  EXPECT_EQ(r.integer("frames"), 900);
+  EXPECT_EQ(r.string("name"), "dihole");
+  EXPECT_TRUE(r.boolean("preview"));
+  EXPECT_FALSE(r.boolean("none"));
+  EXPECT_TRUE(r.has("mass"));
+  EXPECT_FALSE(r.has("spin"));
+  EXPECT_EQ(r.optional_number("spin"), std::nullopt);
+  EXPECT_EQ(r.optional_number("mass"), 1.5);
+  EXPECT_EQ(r.number_or("spin", 0.25), 0.25);
+  EXPECT_EQ(r.number_or("mass", 0.25), 1.5);
+  EXPECT_EQ(r.optional_integer("fps"), std::nullopt);
+  EXPECT_EQ(r.integer_or("fps", 25), 25);
+  EXPECT_EQ(r.optional_string("title"), std::nullopt);
+  EXPECT_EQ(r.string_or("title", "untitled"), "untitled");
+  EXPECT_EQ(r.optional_boolean("preview"), true);
+  EXPECT_EQ(r.boolean_or("none", true), false);
+  EXPECT_EQ(r.boolean_or("absent", true), true);
+  EXPECT_EQ(r.context(), "shot");
+  r.finish();
+}
+
+TEST_F(LuaTableReader, WrongTypeAndMissingMessages) {
+  push("{mass = '1', name = 3, flag = 1, sub = 5, f = function() end}");
+  TableReader r(L, -1, "spec.lua:4: spacetime");
+  EXPECT_EQ(field_error([&] { r.number("mass"); }),
+            "spec.lua:4: spacetime: field 'mass' must be a number, got string \"1\"");
+  EXPECT_EQ(field_error([&] { r.optional_number("mass"); }),
+            "spec.lua:4: spacetime: field 'mass' must be a number, got string \"1\"");
+  EXPECT_EQ(field_error([&] { r.number("spin"); }), "spec.lua:4: spacetime: missing field 'spin'");
+  EXPECT_EQ(field_error([&] { r.string("name"); }),
+            "spec.lua:4: spacetime: field 'name' must be a string, got number 3");
+  EXPECT_EQ(field_error([&] { r.boolean("flag"); }),
+            "spec.lua:4: spacetime: field 'flag' must be a boolean, got number 1");
+  EXPECT_EQ(field_error([&] { r.table("sub"); }),
+            "spec.lua:4: spacetime: field 'sub' must be a table, got number 5");
+  EXPECT_EQ(field_error([&] { r.number("f"); }),
+            "spec.lua:4: spacetime: field 'f' must be a number, got function");
+  EXPECT_EQ(field_error([&] { r.string("missing"); }), "spec.lua:4: spacetime: missing field 'missing'");
+  EXPECT_EQ(field_error([&] { r.table("missing"); }), "spec.lua:4: spacetime: missing field 'missing'");
+}
+
+TEST_F(LuaTableReader, NumbersMustBeFinite) {
+  push("{a = 0/0, b = 1/0, c = -1/0, d = -(0/0)}");
+  TableReader r(L, -1, "observer");
+  EXPECT_EQ(field_error([&] { r.number("a"); }),
+            "observer: field 'a' is nan (numbers must be finite)");
+  EXPECT_EQ(field_error([&] { r.number("b"); }),
+            "observer: field 'b' is inf (numbers must be finite)");
+  EXPECT_EQ(field_error([&] { r.number_or("c", 0); }),
+            "observer: field 'c' is -inf (numbers must be finite)");
+  EXPECT_EQ(field_error([&] { r.integer("d"); }),
+            "observer: field 'd' is nan (numbers must be finite)");
+}
+
+TEST_F(LuaTableReader, IntegerChecks) {
+  push("{half = 2.5, big = 2^63, low = -2^63, exact = 2^53, neg = -7, text = '3', huge = 1e300}");
+  TableReader r(L, -1, "shot");
+  EXPECT_EQ(field_error([&] { r.integer("half"); }),
+            "shot: field 'half' must be an integer, got number 2.5");
+  EXPECT_EQ(field_error([&] { r.integer("big"); }),
+            "shot: field 'big' must be an integer in the 64-bit range, got number 9.223372036854776e+18");
+  EXPECT_NE(field_error([&] { r.integer("huge"); }).find("64-bit range"), std::string::npos);
+  EXPECT_EQ(r.integer("low"), std::numeric_limits<std::int64_t>::min());
+  EXPECT_EQ(r.integer("exact"), std::int64_t{1} << 53);
+  EXPECT_EQ(r.integer("neg"), -7);
+  EXPECT_EQ(field_error([&] { r.integer("text"); }),
+            "shot: field 'text' must be an integer, got string \"3\"");
+}
+
+TEST_F(LuaTableReader, NestedContexts) {
+  push("{observer = {position = {r = 'far', theta = 1}}, objects = {{radius = 1}, {radius = 'x'}}}");
+  TableReader shot(L, -1, "shot 'dihole' frame 12");
+  TableReader observer = shot.table("observer");
+  EXPECT_EQ(observer.context(), "shot 'dihole' frame 12.observer");
+  TableReader position = observer.table("position");
+  EXPECT_EQ(field_error([&] { position.number("r"); }),
+            "shot 'dihole' frame 12.observer.position: field 'r' must be a number, got string \"far\"");
+  EXPECT_FALSE(shot.optional_table("camera").has_value());
+  auto objects = shot.optional_table("objects");
+  ASSERT_TRUE(objects.has_value());
+  ASSERT_EQ(objects->length(), 2u);
+  EXPECT_EQ(objects->table_at(1).number("radius"), 1);
+  TableReader second = objects->table_at(2);
+  EXPECT_EQ(second.context(), "shot 'dihole' frame 12.objects[2]");
+  EXPECT_EQ(field_error([&] { second.number("radius"); }),
+            "shot 'dihole' frame 12.objects[2]: field 'radius' must be a number, got string \"x\"");
+}
+
+TEST_F(LuaTableReader, ArrayElements) {
+  push("{1, 2.5, 'x', {a = 1}, 7}");
+  TableReader r(L, -1, "path");
+  EXPECT_EQ(r.length(), 5u);
+  EXPECT_EQ(r.number_at(1), 1);
+  EXPECT_EQ(r.number_at(2), 2.5);
+  EXPECT_EQ(r.integer_at(5), 7);
+  EXPECT_EQ(r.string_at(3), "x");
+  EXPECT_EQ(field_error([&] { r.number_at(3); }), "path: element [3] must be a number, got string \"x\"");
+  EXPECT_EQ(field_error([&] { r.integer_at(2); }), "path: element [2] must be an integer, got number 2.5");
+  EXPECT_EQ(field_error([&] { r.number_at(6); }), "path: missing element [6]");
+  EXPECT_EQ(field_error([&] { r.number_at(0); }),
+            "path: element [0] does not exist (elements count from 1)");
+  EXPECT_EQ(field_error([&] { r.table_at(1); }), "path: element [1] must be a table, got number 1");
+  EXPECT_EQ(field_error([&] { r.table_at(4).number("b"); }), "path[4]: missing field 'b'");
+  r.finish();  // the array part is always accepted
+}
+
+TEST_F(LuaTableReader, FinishSuggestsNearestKnownField) {
+  push("{mass = 1, spinn = 0.9}");
+  TableReader r(L, -1, "spec.lua:4: spacetime");
+  r.number("mass");
+  r.optional_number("spin");
+  EXPECT_EQ(field_error([&] { r.finish(); }),
+            "spec.lua:4: spacetime: unknown field 'spinn' (did you mean 'spin'?)");
+}
+
+TEST_F(LuaTableReader, FinishWithoutCloseMatchAndSorted) {
+  push("{mass = 1, colour = 'red', zzz = 1, mas = 2, ams = 3}");
+  TableReader r(L, -1, "kerr");
+  r.number("mass");
+  EXPECT_EQ(field_error([&] { r.finish(); }),
+            "kerr: unknown field 'ams'; unknown field 'colour'; "
+            "unknown field 'mas' (did you mean 'mass'?); unknown field 'zzz'");
+}
+
+TEST_F(LuaTableReader, FinishAcceptsKnownAndEngineKeys) {
+  push("{mass = 1, __kind = 'kerr', __where = 'a.lua:1', frame = function() end, extra = 2}");
+  TableReader r(L, -1, "shot");
+  r.number("mass");
+  EXPECT_TRUE(r.has("extra"));  // has() counts as reading
+  r.push_field("frame");
+  EXPECT_TRUE(lua_isfunction(L, -1));
+  lua_pop(L, 1);
+  r.finish();
+
+  push("{mass = 1, spin = 2}");
+  TableReader m(L, -1, "kerr");
+  m.mark_known({"mass", "spin"});
+  m.finish();
+}
+
+TEST_F(LuaTableReader, FinishRejectsStrayNonStringKeys) {
+  push("{1, 2, [10] = 3, [true] = 4, [2.5] = 5, [{}] = 6}");
+  TableReader r(L, -1, "list");
+  const std::string msg = field_error([&] { r.finish(); });
+  EXPECT_EQ(msg.rfind("list: unexpected key [10] (only named fields and list elements 1..2 are allowed)", 0), 0u)
+      << msg;
+  EXPECT_NE(msg.find("unexpected key [2.5]"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("unexpected key [true]"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("unexpected key of type table"), std::string::npos) << msg;
+}
+
+TEST_F(LuaTableReader, MetatablesAreIgnored) {
+  push("setmetatable({}, {__index = function() error('must not run') end})");
+  TableReader r(L, -1, "spec");
+  EXPECT_EQ(field_error([&] { r.number("mass"); }), "spec: missing field 'mass'");
+  r.finish();
+}
+
+TEST_F(LuaTableReader, NoStackLeaks) {
+  push("{a = 1, b = 'x', c = {d = {1, 2}, u = 1}, e = 0/0, u = 2}");
+  const int top = lua_gettop(L);
+  {
+    TableReader r(L, -1, "t");
+    r.number("a");
+    r.has("z");
+    r.optional_string("b");
+    TableReader c = r.table("c");
+    TableReader d = c.table("d");
+    d.number_at(2);
+    d.length();
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_THROW(r.number("b"), FieldError);
+      EXPECT_THROW(r.integer("e"), FieldError);
+      EXPECT_THROW(r.table("a"), FieldError);
+      EXPECT_THROW(d.table_at(1), FieldError);
+      EXPECT_THROW(c.finish(), FieldError);
+      EXPECT_THROW(r.finish(), FieldError);
+    }
+    EXPECT_EQ(lua_gettop(L), top);
+  }
+  EXPECT_EQ(lua_gettop(L), top);
+}
+
+// The readers pin their tables with registry references and release them.
+TEST_F(LuaTableReader, ReferencesPinAndRelease) {
+  push("setmetatable({}, {__mode = 'v'})");  // sees whether a table is alive
+  const int weak = lua_gettop(L);
+  const auto alive = [&](int i) {
+    lua_gc(L, LUA_GCCOLLECT, 0);
+    lua_rawgeti(L, weak, i);
+    const bool is_alive = !lua_isnil(L, -1);
+    lua_pop(L, 1);
+    return is_alive;
+  };
+  push("{child = {}}");
+  lua_pushvalue(L, -1);
+  lua_rawseti(L, weak, 1);
+  lua_getfield(L, -1, "child");
+  lua_rawseti(L, weak, 2);
+  {
+    std::optional<TableReader> parent(std::in_place, L, -1, "t");
+    lua_pop(L, 1);  // from here on only the readers hold the tables
+    TableReader child = parent->table("child");
+    EXPECT_TRUE(alive(1));
+    EXPECT_TRUE(alive(2));
+    { TableReader moved = std::move(*parent); }
+    EXPECT_FALSE(alive(1));
+    EXPECT_TRUE(alive(2));
+    parent.reset();  // a moved-from reader releases nothing
+    EXPECT_TRUE(alive(2));
+    EXPECT_EQ(child.length(), 0u);
+  }
+  EXPECT_FALSE(alive(2));
+  EXPECT_EQ(lua_gettop(L), weak);
+}
+
+TEST_F(LuaTableReader, ChildrenOutliveParentsAndMovesWork) {
+  push("{camera = {fov = 60}}");
+  std::optional<TableReader> camera;
+  {
+    TableReader shot(L, -1, "shot");
+    camera = shot.table("camera");
+  }
+  lua_settop(L, 0);                      // the table is only pinned by the reader now
+  lua_gc(L, LUA_GCCOLLECT, 0);
+  EXPECT_EQ(camera->number("fov"), 60);
+  TableReader moved = std::move(*camera);
+  EXPECT_EQ(moved.number("fov"), 60);
+  EXPECT_EQ(moved.context(), "shot.camera");
+  moved.finish();
+  camera.reset();  // destroying the moved-from reader releases nothing twice
+  TableReader assigned = std::move(moved);
+  EXPECT_EQ(assigned.number("fov"), 60);
+}
+
+TEST(LuaNearest, Distances) {
+  const std::vector<std::string> keys = {"mass", "spin", "fov", "inclination", "r_out"};
+  EXPECT_EQ(lc::lua::nearest("spinn", keys), "spin");
+  EXPECT_EQ(lc::lua::nearest("sipn", keys), "spin");        // transposition
+  EXPECT_EQ(lc::lua::nearest("mas", keys), "mass");
+  EXPECT_EQ(lc::lua::nearest("fvo", keys), "fov");
+  EXPECT_EQ(lc::lua::nearest("inclinaton", keys), "inclination");
+  EXPECT_EQ(lc::lua::nearest("incilnatoin", keys), "inclination");  // two swaps
+  EXPECT_EQ(lc::lua::nearest("rout", keys), "r_out");
+  EXPECT_EQ(lc::lua::nearest("colour", keys), "");
+  EXPECT_EQ(lc::lua::nearest("msa", keys), "");  // short words: distance 1 only
+  EXPECT_EQ(lc::lua::nearest("x", {std::vector<std::string>{"y"}}), "");
+  EXPECT_EQ(lc::lua::nearest("mass", keys), "");  // an exact match is no suggestion
+  EXPECT_EQ(lc::lua::nearest("spin", {}), "");
+}
+
+}  // namespace
