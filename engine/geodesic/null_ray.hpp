@@ -28,6 +28,7 @@ struct RayResult {
   RayState y{};       // final state (at the hit for StopReason::hit, set by the visitor)
   double lambda = 0.0;
   long steps = 0;
+  double hamiltonian = 0.0;  // H = 1/2 g(k, k) at the end: 0 for light; its size is the drift
 };
 
 // No-op visitor: trace until capture or escape.
@@ -88,6 +89,8 @@ RayResult trace_null_ray(const S& st, const Vec4& x0, const Vec4& p0, const RayO
   }
   res.y = dp.y();
   res.lambda = dp.t();
+  const auto& d = dp.dydt();
+  res.hamiltonian = 0.5 * (res.y[4] * d[0] + res.y[5] * d[1] + res.y[6] * d[2] + res.y[7] * d[3]);
   return res;
 }
 

@@ -65,6 +65,14 @@ Tetrad zamo_polar_tetrad(const S& st, const Vec4& scene_point) {
   return orthonormalize(st.metric(x), basis, "ZAMO");
 }
 
+// Frame of an observer with the given unit future-directed 4-velocity u (trace
+// coordinates) at a scene point: the static polar frame boosted to u.
+template <class S>
+Tetrad tetrad_from_velocity(const S& st, const Vec4& scene_point, const Vec4& u) {
+  const Tetrad rest = static_polar_tetrad(st, scene_point);
+  return boost(rest, relative_velocity(st.metric(st.trace_from_scene(scene_point)), rest, u));
+}
+
 // Static observer of a Cartesian scene with legs (e_t, e_x, e_y, e_z).
 template <class S>
 Tetrad static_cartesian_tetrad(const S& st, const Vec4& x) {

@@ -167,7 +167,17 @@ Mat4 Kerr::trace_jacobian(const Vec4& s) const {
 }
 
 Vec4 Kerr::scene_vector(const Vec4& x, const Vec4& v) const {
-  return mat_vec(inverse(trace_jacobian(scene_from_trace(x))), v);
+  const Vec4 s = scene_from_trace(x);
+  if (std::sin(s[2]) > 1e-9) return mat_vec(inverse(trace_jacobian(s)), v);
+  // On the axis the BL chart degenerates (phi is undefined): report dt, dr
+  // from their gradients, d(theta) as the rate of leaving the axis (cylindrical
+  // radius ~ sqrt(r^2 + a^2) theta there) and d(phi) = 0.
+  const double r = s[1];
+  const double a2 = a_ * a_, r2 = r * r, Z = x[3];
+  const double den = 1.0 / (r2 * r2 + a2 * Z * Z);
+  const double dr = (x[1] * v[1] + x[2] * v[2]) * r2 * r * den + Z * (r2 + a2) * r * den * v[3];
+  const double dth = std::sqrt(v[1] * v[1] + v[2] * v[2]) / std::sqrt(r2 + a2);
+  return {dot(scene_time_gradient(x), v), dr, dth, 0.0};
 }
 
 Vec4 Kerr::scene_time_gradient(const Vec4& x) const {

@@ -86,6 +86,7 @@ TEST(NullRay, KerrConstantsOfMotionAreConserved) {
       };
       const RayResult r = trace_null_ray(k, x, p, RayOptions{}, check);
       (r.reason == StopReason::horizon ? captured : escaped)++;
+      EXPECT_LT(std::abs(r.hamiltonian), 1e-8 * c0.E * c0.E);  // the null condition holds
       EXPECT_TRUE(r.reason == StopReason::horizon || r.reason == StopReason::escaped);
     }
   EXPECT_GT(captured, 0);
@@ -95,6 +96,17 @@ TEST(NullRay, KerrConstantsOfMotionAreConserved) {
   EXPECT_LT(worst_Q, 1e-8);
   RecordProperty("worst_Lz_drift", std::to_string(worst_L));
   RecordProperty("worst_Q_drift", std::to_string(worst_Q));
+}
+
+TEST(NullRay, MasslessDiholeRaysAreStraight) {
+  const Dihole d(0.0, 0.0, 1.0);
+  const Vec4 x = {0, 0, 50, 0};
+  const Vec4 p = backward_ray_momentum(d.metric(x), static_cartesian_tetrad(d, x), {0.1, -1.0, 0.2});
+  const RayResult r = trace_null_ray(d, x, p, RayOptions{});
+  ASSERT_EQ(r.reason, StopReason::escaped);
+  const double s = (r.y[2] - x[2]) / -1.0;  // distance along -y per unit direction component
+  EXPECT_NEAR(r.y[1], x[1] + 0.1 * s, 1e-9 * s);
+  EXPECT_NEAR(r.y[3], x[3] + 0.2 * s, 1e-9 * s);
 }
 
 TEST(NullRay, FlatSpaceRaysAreStraight) {

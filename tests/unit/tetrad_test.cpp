@@ -79,6 +79,15 @@ TEST(Tetrad, BoostedFrameIsOrthonormalAndMovesWithV) {
   EXPECT_THROW(boost(rest, {0.8, 0.6, 0.0}), ObserverError);
 }
 
+TEST(Tetrad, FromAGivenFourVelocity) {
+  const Kerr k(1.0, 0.7);
+  const Vec4 s = {0, 9, 1.2, 0.4};
+  const Tetrad moving = boost(static_polar_tetrad(k, s), {0.1, 0.2, -0.3});
+  const Tetrad t = tetrad_from_velocity(k, s, moving.e[0]);
+  for (int a = 0; a < 4; ++a)
+    for (int m = 0; m < 4; ++m) EXPECT_NEAR(t.e[a][m], moving.e[a][m], 1e-12);
+}
+
 TEST(Tetrad, RefusesObserversThatCannotExist) {
   const Kerr k(1.0, 0.9);
   EXPECT_THROW(static_polar_tetrad(k, {0, 1.2, 1.0, 0.0}), ObserverError);          // inside horizon

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Sets lightcone up on a Debian 12 machine and runs one job:
+#   ./bootstrap.sh demo   install what is missing, build, run the main job
+#   ./bootstrap.sh test   install what is missing, build, run every test (ctest)
+#   ./bootstrap.sh build  install what is missing and build only
+# Installs Debian packages with apt-get (as root, or through sudo) only when
+# some are missing; builds in ./build (Release).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+job="${1:-demo}"
+case "$job" in demo | test | build) ;; *)
+  echo "usage: $0 [demo|test|build]" >&2
+  exit 2
+  ;;
+esac
+
+packages=(
+  build-essential cmake pkg-config
+  luajit libluajit-5.1-dev libgsl-dev libopenmpi-dev openmpi-bin
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
+  libopenimageio-dev openimageio-tools libcli11-dev libfmt-dev libgtest-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "bootstrap: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "bootstrap: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+  "${sudo[@]}" apt-get update -q
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+jobs=$(nproc)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$jobs"
+
+case "$job" in
+  test)
+    # Open MPI refuses root and needs an rsh agent even on one node; the
+    # tests that launch mpirun set what they need themselves.
+    ctest --test-dir build --output-on-failure -j "$jobs"
+    ;;
+  demo)
+    mkdir -p out/geodesics
+    for spec in shots/geodesics/*.lua; do
+      name=$(basename "$spec" .lua)
+      ./build/pipeline/lightcone geodesic "$spec" -o "out/geodesics/$name.csv"
+    done
+    ./build/pipeline/lightcone bench --size 64 --repeats 1
+    echo "bootstrap: geodesics written to out/geodesics/ (CSV, see docs/geodesic.md)"
+    ;;
+esac

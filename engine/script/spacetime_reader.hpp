@@ -1,0 +1,14 @@
+#pragma once
+// Script value -> Spacetime.  The value must come from one of the
+// constructors of engine_api (a table tagged with __kind).
+
+#include "lua/table_reader.hpp"
+#include "spacetime/spacetime.hpp"
+
+namespace lc {
+
+// Reads a tagged spacetime table; Kerr is built in the given Kerr–Schild
+// chart.  Throws lua::FieldError naming the context and the problem.
+Spacetime read_spacetime(lua::TableReader& t, KerrSchildSense sense);
+
+}  // namespace lc
