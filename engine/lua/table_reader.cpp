@@ -193,7 +193,7 @@ bool TableReader::has(std::string_view key) {
 double TableReader::number(std::string_view key) {
   const StackGuard guard(L_);
   const int type = fetch(key);
-  if (type == LUA_TNIL) fail(fmt::format("missing field '{}'", key));
+  if (type == LUA_TNIL) missing(key);
   return read_number(Slot{key}, type);
 }
 
@@ -211,7 +211,7 @@ double TableReader::number_or(std::string_view key, double fallback) {
 std::int64_t TableReader::integer(std::string_view key) {
   const StackGuard guard(L_);
   const int type = fetch(key);
-  if (type == LUA_TNIL) fail(fmt::format("missing field '{}'", key));
+  if (type == LUA_TNIL) missing(key);
   return read_integer(Slot{key}, type);
 }
 
@@ -229,7 +229,7 @@ std::int64_t TableReader::integer_or(std::string_view key, std::int64_t fallback
 std::string TableReader::string(std::string_view key) {
   const StackGuard guard(L_);
   const int type = fetch(key);
-  if (type == LUA_TNIL) fail(fmt::format("missing field '{}'", key));
+  if (type == LUA_TNIL) missing(key);
   return read_string(Slot{key}, type);
 }
 
@@ -248,7 +248,7 @@ std::string TableReader::string_or(std::string_view key, std::string_view fallba
 bool TableReader::boolean(std::string_view key) {
   const StackGuard guard(L_);
   const int type = fetch(key);
-  if (type == LUA_TNIL) fail(fmt::format("missing field '{}'", key));
+  if (type == LUA_TNIL) missing(key);
   if (type != LUA_TBOOLEAN) wrong_type(Slot{key}, "a boolean");
   return lua_toboolean(L_, -1) != 0;
 }
@@ -268,7 +268,7 @@ bool TableReader::boolean_or(std::string_view key, bool fallback) {
 TableReader TableReader::table(std::string_view key) {
   const StackGuard guard(L_);
   const int type = fetch(key);
-  if (type == LUA_TNIL) fail(fmt::format("missing field '{}'", key));
+  if (type == LUA_TNIL) missing(key);
   return read_table(Slot{key}, type);
 }
 
@@ -321,6 +321,32 @@ void TableReader::mark_known(std::initializer_list<std::string_view> keys) {
   for (const auto key : keys) {
     if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
   }
+}
+
+void TableReader::missing(std::string_view key) const {
+  // A required field is absent: if the table has an unread key that is a
+  // near miss of it, the author most likely misspelt it; say so.
+  std::vector<std::string> candidates;
+  {
+    const StackGuard guard(L_);
+    push();
+    lua_pushnil(L_);
+    while (lua_next(L_, -2) != 0) {
+      if (lua_type(L_, -2) == LUA_TSTRING) {
+        std::size_t n = 0;
+        const char* p = lua_tolstring(L_, -2, &n);
+        const std::string_view k(p, n);
+        if (!k.starts_with("__") && std::find(known_.begin(), known_.end(), k) == known_.end())
+          candidates.emplace_back(k);
+      }
+      lua_pop(L_, 1);
+    }
+  }
+  for (const auto& c : candidates) {
+    const std::string one[] = {std::string(key)};
+    if (!nearest(c, one).empty()) fail(fmt::format("missing field '{}' (there is a field '{}': misspelt?)", key, c));
+  }
+  fail(fmt::format("missing field '{}'", key));
 }
 
 void TableReader::finish() const {

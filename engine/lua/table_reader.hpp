@@ -103,6 +103,7 @@ class TableReader {
   std::string read_string(const Slot& slot, int type);
   TableReader read_table(const Slot& slot, int type);
   [[noreturn]] void fail(const std::string& problem) const;
+  [[noreturn]] void missing(std::string_view key) const;  // "missing field", with a near-miss hint
   [[noreturn]] void wrong_type(const Slot& slot, const char* expected) const;
 
   lua_State* L_ = nullptr;

@@ -97,6 +97,14 @@ TEST_F(LuaTableReader, WrongTypeAndMissingMessages) {
   EXPECT_EQ(field_error([&] { r.table("missing"); }), "spec.lua:4: spacetime: missing field 'missing'");
 }
 
+TEST_F(LuaTableReader, MissingFieldPointsAtANearMiss) {
+  push("{mass = 1, spinn = 0.5, colour = 2}");
+  TableReader r(L, -1, "kerr");
+  r.number("mass");
+  EXPECT_EQ(field_error([&] { r.number("spin"); }), "kerr: missing field 'spin' (there is a field 'spinn': misspelt?)");
+  EXPECT_EQ(field_error([&] { r.number("radius"); }), "kerr: missing field 'radius'");
+}
+
 TEST_F(LuaTableReader, NumbersMustBeFinite) {
   push("{a = 0/0, b = 1/0, c = -1/0, d = -(0/0)}");
   TableReader r(L, -1, "observer");
