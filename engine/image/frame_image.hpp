@@ -1,0 +1,28 @@
+#pragma once
+// One rendered frame as plain data: linear RGB plus named per-pixel float
+// layers.  The renderer fills it, the frame store writes it (image_io.hpp).
+
+#include <string>
+#include <vector>
+
+namespace lc {
+
+// Largest image side the image layer reads, writes or generates.  Anything
+// bigger is taken as a corrupt header or a mistake (a 32768 x 16384 float
+// sky is already 6 GiB in memory), not as a picture worth allocating for.
+inline constexpr int max_image_side = 32768;
+
+// Linear RGB (3 floats per pixel, row-major, row 0 at the top) plus
+// optional named data layers (e.g. "hit.kind", "hit.r"), width * height
+// floats each, same pixel order.
+struct FrameImage {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // 3 * width * height
+  struct Layer {
+    std::string name;
+    std::vector<float> values;  // width * height
+  };
+  std::vector<Layer> layers;
+};
+
+}  // namespace lc

@@ -1,0 +1,312 @@
+// The OpenImageIO side of the image layer: EXR and PNG writers and the
+// readers.  OIIO is included here only (it bundles its own fmt, see
+// STACK.md), so error messages are built with plain std::string.
+#include "image/image_io.hpp"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <set>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+
+#include "image/read_linear.hpp"
+#include "image/srgb.hpp"
+
+namespace lc {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Throws "<what> '<path>': <reason>".
+[[noreturn]] void fail(std::string_view what, const fs::path& path, const std::string& reason) {
+  throw std::runtime_error(std::string(what) + " '" + path.string() + "': " + reason);
+}
+
+// OIIO's error text, trimmed, never empty.
+std::string oiio_reason(std::string msg) {
+  while (!msg.empty() && std::isspace(static_cast<unsigned char>(msg.back()))) msg.pop_back();
+  return msg.empty() ? std::string("unknown OpenImageIO error") : msg;
+}
+
+std::string lowercase(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string size_text(long w, long h) { return std::to_string(w) + " x " + std::to_string(h); }
+
+// Checks width/height are positive and at most max_image_side.
+void check_size(long w, long h, std::string_view what, const fs::path& path) {
+  if (w <= 0 || h <= 0) fail(what, path, "zero-size image (" + size_text(w, h) + ")");
+  if (w > max_image_side || h > max_image_side)
+    fail(what, path,
+         "image too large (" + size_text(w, h) + "; at most " + std::to_string(max_image_side) + " a side)");
+}
+
+// Checks a frame is self-consistent before anything is written: buffer
+// sizes, and (for EXR) layer names that will survive as distinct channels.
+void check_frame(const FrameImage& im, bool with_layers, std::string_view what, const fs::path& path) {
+  check_size(im.width, im.height, what, path);
+  const std::size_t n = static_cast<std::size_t>(im.width) * static_cast<std::size_t>(im.height);
+  if (im.rgb.size() != 3 * n)
+    fail(what, path,
+         "rgb holds " + std::to_string(im.rgb.size()) + " floats, expected 3 * " + size_text(im.width, im.height));
+  if (!with_layers) return;
+  std::set<std::string> names{"R", "G", "B"};
+  for (const FrameImage::Layer& l : im.layers) {
+    if (l.name.empty()) fail(what, path, "a data layer has an empty name");
+    if (!names.insert(l.name).second)
+      fail(what, path, "data layer name '" + l.name + "' is used twice or clashes with R, G, B");
+    if (l.values.size() != n)
+      fail(what, path,
+           "data layer '" + l.name + "' holds " + std::to_string(l.values.size()) + " floats, expected " +
+               size_text(im.width, im.height));
+  }
+}
+
+// Metadata keys must annotate the file, never reconfigure the writer:
+// OIIO reads "format:name" keys as instructions to a writer, and EXR's own
+// header attributes describe the pixel layout.
+void check_metadata(const ImageMetadata& metadata, std::string_view what, const fs::path& path) {
+  static constexpr std::array<std::string_view, 14> reserved = {
+      "channels", "chunkcount",         "compression",        "datawindow", "displaywindow", "lineorder", "name",
+      "tiles",    "pixelaspectratio", "screenwindowcenter", "screenwindowwidth", "type",   "version",   "view"};
+  for (const auto& [key, value] : metadata) {
+    if (key.empty()) fail(what, path, "metadata key is empty");
+    if (key.find(':') != std::string::npos || std::find(reserved.begin(), reserved.end(), lowercase(key)) != reserved.end())
+      fail(what, path, "metadata key '" + key + "' is reserved for the file format");
+  }
+}
+
+// Writes interleaved `pixels` of type `type` laid out as `spec` to `path`
+// with OIIO's writer for `format` (a format name, so the extension of
+// `path` does not matter).  Removes the half-written file if writing or
+// closing fails after it was opened.
+void write_with(const char* format, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* pixels,
+                std::string_view what, const fs::path& path) {
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(format);
+  if (!out) fail(what, path, std::string("no OpenImageIO writer for ") + format + ": " + oiio_reason(OIIO::geterror()));
+  if (!out->open(path.string(), spec)) fail(what, path, oiio_reason(out->geterror()));
+  std::string error;
+  if (!out->write_image(type, pixels)) error = out->geterror();
+  if (!out->close() && error.empty()) error = out->geterror();
+  if (error.empty()) return;
+  out.reset();
+  std::error_code ignored;
+  fs::remove(path, ignored);
+  fail(what, path, oiio_reason(error));
+}
+
+// Fails with a clear reason when `path` is not an existing regular file
+// (OIIO's own message for a missing file is "could not open").
+void check_readable(const fs::path& path, std::string_view what) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) fail(what, path, "no such file");
+  if (fs::is_directory(st)) fail(what, path, "is a directory, not an image");
+}
+
+// Opens `path` with OIIO's OpenEXR reader (by format name: the extension
+// does not matter, a non-EXR file is refused).
+std::unique_ptr<OIIO::ImageInput> open_exr(const fs::path& path, std::string_view what) {
+  check_readable(path, what);
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::create("openexr");
+  if (!in) fail(what, path, "no OpenImageIO reader for OpenEXR: " + oiio_reason(OIIO::geterror()));
+  OIIO::ImageSpec spec;
+  if (!in->open(path.string(), spec)) fail(what, path, "not a readable OpenEXR file: " + oiio_reason(in->geterror()));
+  return in;
+}
+
+// How stored values map to linear light.
+struct Transfer {
+  enum Kind { linear, srgb, gamma } kind = linear;
+  double exponent = 1.0;  // for gamma: linear = stored^exponent
+};
+
+// The file's colour-space tag decides; without a tag this reader knows,
+// integer data is taken as sRGB (what 8/16-bit images on disk almost
+// always are) and floating point as linear.  Primaries are never
+// converted: a linear ACEScg texture is read as if it were linear Rec.709.
+Transfer transfer_of(const OIIO::ImageSpec& spec) {
+  const std::string cs = lowercase(spec.get_string_attribute("oiio:ColorSpace"));
+  if (cs.find("lin") != std::string::npos || cs == "acescg") return {Transfer::linear};
+  if (cs.find("srgb") != std::string::npos) return {Transfer::srgb};
+  if (cs.rfind("gammacorrected", 0) == 0 || cs.rfind("gamma", 0) == 0) {
+    // "GammaCorrected2.2": the exponent follows the name unless oiio:Gamma says it.
+    const std::size_t digits = std::min(cs.find_first_of("0123456789."), cs.size());
+    double g = std::strtod(cs.c_str() + digits, nullptr);
+    g = spec.get_float_attribute("oiio:Gamma", static_cast<float>(g));
+    if (g > 0.1 && g < 10.0) return {Transfer::gamma, g};
+    return {Transfer::srgb};  // unreadable exponent: sRGB is the closest common guess
+  }
+  return spec.format.is_floating_point() ? Transfer{Transfer::linear} : Transfer{Transfer::srgb};
+}
+
+// Stored value (normalised to [0, 1] for integer formats) -> linear.
+double decode(const Transfer& t, double v) {
+  switch (t.kind) {
+    case Transfer::linear: return v;
+    case Transfer::srgb: return srgb_to_linear(v);
+    case Transfer::gamma: return v > 0.0 ? std::pow(v, t.exponent) : 0.0;
+  }
+  return v;
+}
+
+}  // namespace
+
+void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata) {
+  constexpr std::string_view what = "cannot write EXR";
+  check_frame(image, true, what, path);
+  check_metadata(metadata, what, path);
+  const int nch = 3 + static_cast<int>(image.layers.size());
+  OIIO::ImageSpec spec(image.width, image.height, nch, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = {"R", "G", "B"};
+  for (const FrameImage::Layer& l : image.layers) spec.channelnames.push_back(l.name);
+  // The ImageSpec constructor guessed a 4th channel to be alpha; data
+  // layers are plain values, never composited.
+  spec.alpha_channel = -1;
+  spec.z_channel = -1;
+  spec.attribute("compression", "zip");
+  for (const auto& [key, value] : metadata) spec.attribute(key, value);
+
+  // OIIO writes interleaved pixels; layers are planar in FrameImage.
+  const std::size_t n = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+  std::vector<float> pixels(n * static_cast<std::size_t>(nch));
+  for (std::size_t p = 0; p < n; ++p) {
+    float* px = &pixels[p * static_cast<std::size_t>(nch)];
+    px[0] = image.rgb[3 * p];
+    px[1] = image.rgb[3 * p + 1];
+    px[2] = image.rgb[3 * p + 2];
+    for (std::size_t l = 0; l < image.layers.size(); ++l) px[3 + l] = image.layers[l].values[p];
+  }
+  write_with("openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data(), what, path);
+}
+
+void write_png(const std::filesystem::path& path, const FrameImage& image) {
+  constexpr std::string_view what = "cannot write PNG";
+  check_frame(image, false, what, path);
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");  // the writer then stores an sRGB chunk
+  std::vector<std::uint8_t> bytes(image.rgb.size());
+  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), linear_to_srgb8);
+  write_with("png", spec, OIIO::TypeDesc::UINT8, bytes.data(), what, path);
+}
+
+FrameImage read_exr(const std::filesystem::path& path) {
+  constexpr std::string_view what = "cannot read EXR";
+  std::unique_ptr<OIIO::ImageInput> in = open_exr(path, what);
+  const OIIO::ImageSpec spec = in->spec();
+  check_size(spec.width, spec.height, what, path);
+  if (spec.depth != 1) fail(what, path, "a volume image, not a frame");
+  const int nch = spec.nchannels;
+  static constexpr std::array<std::string_view, 3> rgb_names = {"R", "G", "B"};
+  int rgb_index[3] = {-1, -1, -1};
+  for (int c = 0; c < nch; ++c)
+    for (int k = 0; k < 3; ++k)
+      if (spec.channelnames[static_cast<std::size_t>(c)] == rgb_names[static_cast<std::size_t>(k)]) rgb_index[k] = c;
+  if (rgb_index[0] < 0 || rgb_index[1] < 0 || rgb_index[2] < 0)
+    fail(what, path, "no R, G, B channels (not a frame written by lightcone)");
+
+  const std::size_t n = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+  std::vector<float> pixels(n * static_cast<std::size_t>(nch));
+  if (!in->read_image(0, 0, 0, nch, OIIO::TypeDesc::FLOAT, pixels.data()))
+    fail(what, path, oiio_reason(in->geterror()));
+
+  FrameImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  image.rgb.resize(3 * n);
+  for (int c = 0; c < nch; ++c) {
+    if (c == rgb_index[0] || c == rgb_index[1] || c == rgb_index[2]) continue;
+    image.layers.push_back({spec.channelnames[static_cast<std::size_t>(c)], std::vector<float>(n)});
+  }
+  for (std::size_t p = 0; p < n; ++p) {
+    const float* px = &pixels[p * static_cast<std::size_t>(nch)];
+    for (int k = 0; k < 3; ++k) image.rgb[3 * p + static_cast<std::size_t>(k)] = px[rgb_index[k]];
+    std::size_t l = 0;
+    for (int c = 0; c < nch; ++c)
+      if (c != rgb_index[0] && c != rgb_index[1] && c != rgb_index[2]) image.layers[l++].values[p] = px[c];
+  }
+  return image;
+}
+
+ImageMetadata read_exr_metadata(const std::filesystem::path& path) {
+  std::unique_ptr<OIIO::ImageInput> in = open_exr(path, "cannot read EXR");
+  ImageMetadata metadata;
+  for (const OIIO::ParamValue& p : in->spec().extra_attribs)
+    if (p.type() == OIIO::TypeString) metadata.emplace_back(p.name().string(), p.get_string());
+  return metadata;
+}
+
+FrameImage read_image_linear(const std::filesystem::path& path) { return detail::read_linear_rgb(path, "cannot read image"); }
+
+FrameImage detail::read_linear_rgb(const std::filesystem::path& path, const char* what) {
+  check_readable(path, what);
+  // Ask for alpha as stored so it can be applied in linear light below
+  // (OIIO would otherwise premultiply the sRGB-encoded values).
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string(), &config);
+  if (!in) fail(what, path, "not an image OpenImageIO can read (" + oiio_reason(OIIO::geterror()) + ")");
+  const OIIO::ImageSpec spec = in->spec();
+  check_size(spec.width, spec.height, what, path);
+  if (spec.depth != 1) fail(what, path, "a volume image, not a 2D image");
+  if (spec.nchannels < 1) fail(what, path, "image has no channels");
+
+  // Colour channels: the first three that are not alpha (one means grey).
+  const int nread = std::min(spec.nchannels, 4);
+  const int alpha = spec.alpha_channel >= 0 && spec.alpha_channel < nread ? spec.alpha_channel : -1;
+  std::array<int, 3> colour{};
+  int ncolour = 0;
+  for (int c = 0; c < nread && ncolour < 3; ++c)
+    if (c != alpha) colour[static_cast<std::size_t>(ncolour++)] = c;
+  if (ncolour == 0) fail(what, path, "image has only an alpha channel");
+  if (ncolour < 3) colour = {colour[0], colour[0], colour[0]};
+  const bool apply_alpha = alpha >= 0 && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
+
+  const Transfer transfer = transfer_of(spec);
+  const std::size_t n = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+  std::vector<float> values(n * static_cast<std::size_t>(nread));
+  // 8-bit data goes through a 256-entry table: a large sky texture would
+  // otherwise cost one pow() per value at load.
+  const bool eight_bit = spec.format == OIIO::TypeDesc::UINT8 && spec.channelformats.empty();
+  if (eight_bit) {
+    std::vector<std::uint8_t> bytes(values.size());
+    if (!in->read_image(0, 0, 0, nread, OIIO::TypeDesc::UINT8, bytes.data()))
+      fail(what, path, oiio_reason(in->geterror()));
+    std::array<float, 256> table{};
+    for (int k = 0; k < 256; ++k) table[static_cast<std::size_t>(k)] = static_cast<float>(decode(transfer, k / 255.0));
+    for (std::size_t i = 0; i < bytes.size(); ++i) values[i] = table[bytes[i]];
+    if (alpha >= 0)  // alpha is coverage, never colour-decoded
+      for (std::size_t p = 0; p < n; ++p)
+        values[p * static_cast<std::size_t>(nread) + static_cast<std::size_t>(alpha)] =
+            bytes[p * static_cast<std::size_t>(nread) + static_cast<std::size_t>(alpha)] / 255.0f;
+  } else {
+    if (!in->read_image(0, 0, 0, nread, OIIO::TypeDesc::FLOAT, values.data()))
+      fail(what, path, oiio_reason(in->geterror()));
+    if (transfer.kind != Transfer::linear)
+      for (std::size_t i = 0; i < values.size(); ++i)
+        if (static_cast<int>(i % static_cast<std::size_t>(nread)) != alpha)
+          values[i] = static_cast<float>(decode(transfer, values[i]));
+  }
+
+  FrameImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  image.rgb.resize(3 * n);
+  for (std::size_t p = 0; p < n; ++p) {
+    const float* px = &values[p * static_cast<std::size_t>(nread)];
+    const float a = apply_alpha ? px[alpha] : 1.0f;
+    for (std::size_t k = 0; k < 3; ++k) image.rgb[3 * p + k] = px[colour[k]] * a;
+  }
+  return image;
+}
+
+}  // namespace lc

@@ -1,0 +1,58 @@
+#pragma once
+// Frames out and images in: OpenEXR reference frames, 8-bit sRGB PNG
+// previews, and reading both back.  OpenImageIO does the file formats but
+// stays inside image_io.cpp: nothing that includes this header sees OIIO.
+//
+// Every function takes the file format from its own name (EXR or PNG), not
+// from the path's extension, because the frame store writes to temporary
+// names ("x.0001.exr.tmp-123") and renames.  Readers detect the format from
+// the file's content.  Every failure is a std::runtime_error whose message
+// names the file and the reason.
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "image/frame_image.hpp"
+
+namespace lc {
+
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+
+// Writes `image` as OpenEXR to `path`: channels R, G, B, then one channel
+// per layer named after it, all 32-bit FLOAT (reference images are never
+// lossy and never half), zip compression, scanlines top to bottom, plus
+// `metadata` as string attributes (e.g. "lightcone/shot" = "kerr_disk").
+// Refuses an inconsistent image (sizes, empty or duplicate layer names, a
+// layer called R, G or B) and metadata keys that would steer the writer
+// instead of annotating the file (containing ':', or EXR's own header
+// names such as "compression").  On a failure after the file was created the
+// partial file is removed.
+void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata = {});
+
+// Writes the RGB of `image` as an 8-bit sRGB PNG (linear -> sRGB curve,
+// clamp, round to nearest; NaN -> 0), tagged as sRGB.  Layers are ignored.
+void write_png(const std::filesystem::path& path, const FrameImage& image);
+
+// Reads an EXR written by write_exr: R, G, B into rgb and every other
+// channel, by name, into layers in the order the file lists them (OpenEXR
+// sorts channel names, so that may differ from the order written).  Values
+// are returned as stored, no colour conversion.  Throws when the file is not
+// an EXR or has no R, G, B channels.
+FrameImage read_exr(const std::filesystem::path& path);
+
+// The string attributes of an EXR's header (those passed to write_exr, plus
+// any OpenImageIO or OpenEXR add themselves), in file order.
+ImageMetadata read_exr_metadata(const std::filesystem::path& path);
+
+// Reads any image OpenImageIO understands into linear RGB (layers empty).
+// Colour: the file's colour-space tag decides (sRGB, linear, gamma n); with
+// no usable tag integer data is taken as sRGB and floating point as linear.
+// Grey images are copied to R, G and B.  Unassociated alpha is applied in
+// linear light (composited over black, what an opaque sky needs); other
+// channels beyond the fourth are ignored.  Throws for a missing file, a
+// file no reader accepts, zero size, or a side above max_image_side.
+FrameImage read_image_linear(const std::filesystem::path& path);
+
+}  // namespace lc
