@@ -9,6 +9,9 @@
 
 #include "bench_command.hpp"
 #include "geodesic_command.hpp"
+#include "inspect_command.hpp"
+#include "render_command.hpp"
+#include "trace_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"lightcone: general-relativistic black-hole animation, traced along null geodesics", "lightcone"};
@@ -20,6 +23,31 @@ int main(int argc, char** argv) {
       "geodesic", "Trace one null or timelike geodesic described by a Lua spec and write its samples as CSV");
   geodesic->add_option("spec", geo.spec, "Geodesic spec script (docs/geodesic.md)")->required()->check(CLI::ExistingFile);
   geodesic->add_option("-o,--output", geo.output, "CSV file to write (default: standard output)");
+
+  lc::RenderCommand render;
+  auto* render_cmd = app.add_subcommand("render", "Render frames of a shot to EXR and PNG with every core");
+  render_cmd->add_option("shot", render.shot, "Shot script (docs/shots.md)")->required()->check(CLI::ExistingFile);
+  render_cmd->add_option("-o,--out", render.out, "Output directory (created if missing)")->required();
+  render_cmd->add_option("--frames", render.frames, "Frames A, A:B or A:B:STEP (inclusive, numbered from 0)");
+  render_cmd->add_option("--size", render.size, "Image size WxH instead of the shot's");
+  render_cmd->add_option("--scale", render.scale, "Scale the image size by S (previews: 0.25)");
+  render_cmd->add_option("--supersample", render.supersample, "N x N samples per pixel instead of the shot's");
+  render_cmd->add_flag("--layers", render.layers, "Add data layers (hit.kind, hit.r, hit.phi, hit.t, hit.order) to the EXR");
+  render_cmd->add_option("--threads", render.threads, "Threads (default: every core)")->check(CLI::Range(1, 1024));
+
+  lc::InspectCommand inspect;
+  auto* inspect_cmd = app.add_subcommand("inspect", "Print the evaluated scene of each frame as JSON, without rendering");
+  inspect_cmd->add_option("shot", inspect.shot, "Shot script")->required()->check(CLI::ExistingFile);
+  inspect_cmd->add_option("--frames", inspect.frames, "Frames A, A:B or A:B:STEP (inclusive, numbered from 0)");
+
+  lc::TraceCommand trace;
+  auto* trace_cmd = app.add_subcommand("trace", "Follow the ray through one pixel: its path as CSV and what it hit");
+  trace_cmd->add_option("shot", trace.shot, "Shot script")->required()->check(CLI::ExistingFile);
+  trace_cmd->add_option("--frame", trace.frame, "Frame number (from 0)")->required();
+  trace_cmd->add_option("--pixel", trace.pixel, "Pixel I,J (column from the left, row from the top)")->required();
+  trace_cmd->add_option("-o,--output", trace.output, "CSV file to write (default: standard output)");
+  trace_cmd->add_option("--size", trace.size, "Image size WxH instead of the shot's");
+  trace_cmd->add_option("--scale", trace.scale, "Scale the image size by S");
 
   lc::BenchCommand bench;
   auto* bench_cmd = app.add_subcommand("bench", "Measure rays per second on fixed scenes, one thread and all threads");
@@ -36,6 +64,9 @@ int main(int argc, char** argv) {
 
   try {
     if (*geodesic) return lc::run_geodesic(geo);
+    if (*render_cmd) return lc::run_render(render);
+    if (*inspect_cmd) return lc::run_inspect(inspect);
+    if (*trace_cmd) return lc::run_trace(trace);
     if (*bench_cmd) return lc::run_bench(bench);
   } catch (const std::exception& e) {
     fmt::print(stderr, "lightcone: error: {}\n", e.what());

@@ -10,11 +10,12 @@
 
 namespace lc {
 
-// g(state) changes sign between the step's ends (g0 at t0, g1 at t0 + h).
-// Returns the parameter of the crossing to within `tol` in g or in t.
+// g(state) changes sign between parameters a and b inside the step (ga at a,
+// gb at b).  Returns the parameter of the crossing to within `tol` in g or
+// in the parameter.
 template <std::size_t N, class G>
-double locate_crossing(const DenseStep<N>& step, G&& g, double g0, double g1, double tol = 1e-13) {
-  double a = step.t0, b = step.t0 + step.h, ga = g0, gb = g1;
+double locate_crossing(const DenseStep<N>& step, G&& g, double a, double b, double ga, double gb,
+                       double tol = 1e-13) {
   int side = 0;
   for (int it = 0; it < 60; ++it) {
     const double t = (a * gb - b * ga) / (gb - ga);
@@ -33,6 +34,12 @@ double locate_crossing(const DenseStep<N>& step, G&& g, double g0, double g1, do
     }
   }
   return (a * gb - b * ga) / (gb - ga);
+}
+
+// The same over the whole step (g0 at t0, g1 at t0 + h).
+template <std::size_t N, class G>
+double locate_crossing(const DenseStep<N>& step, G&& g, double g0, double g1, double tol = 1e-13) {
+  return locate_crossing(step, g, step.t0, step.t0 + step.h, g0, g1, tol);
 }
 
 }  // namespace lc

@@ -3,82 +3,89 @@
 #include <string>
 
 #include "lua/table_reader.hpp"
-#include "spacetime/spacetime.hpp"
+#include "script/scene_reader.hpp"
+#include "script/spacetime_reader.hpp"
 
 namespace lc {
 
 namespace {
 
-// Starts the tagged result table: {__kind = kind, __where = "file:line"}.
-void push_tagged(lua_State* L, const char* kind) {
-  lua_newtable(L);
-  lua_pushstring(L, kind);
-  lua_setfield(L, -2, "__kind");
-  const std::string where = lua::Sandbox::where(L, 1);
-  lua_pushstring(L, where.c_str());
-  lua_setfield(L, -2, "__where");
-}
-
-void set_number(lua_State* L, const char* key, double v) {
-  lua_pushnumber(L, v);
-  lua_setfield(L, -2, key);
-}
-
-// Argument table of a constructor call f{...}; a missing table reads as {}.
-lua::TableReader arguments(lua_State* L, const char* name) {
+// Builds {__kind = kind, __where = "file:line", <every argument field>} from
+// the call's argument table (a missing table reads as {}), leaving it on the
+// stack top, and returns a reader of it.
+lua::TableReader tagged_copy(lua_State* L, const char* kind) {
   if (lua_isnoneornil(L, 1)) {
     lua_settop(L, 0);
     lua_newtable(L);
   }
-  return lua::TableReader(L, 1, name);
+  if (!lua_istable(L, 1))
+    throw lua::FieldError(std::string(kind) + ": expected a table of fields, like " + kind + "{...}, got " +
+                          luaL_typename(L, 1));
+  lua_newtable(L);
+  const int out = lua_gettop(L);
+  lua_pushnil(L);
+  while (lua_next(L, 1) != 0) {
+    lua_pushvalue(L, -2);
+    lua_insert(L, -2);
+    lua_rawset(L, out);
+  }
+  lua_pushstring(L, kind);
+  lua_setfield(L, out, "__kind");
+  const std::string where = lua::Sandbox::where(L, 1);
+  lua_pushstring(L, where.c_str());
+  lua_setfield(L, out, "__where");
+  return lua::TableReader(L, out, kind);
 }
 
-// kerr{mass = M, spin = a}: |a| <= M, M >= 0.
-int l_kerr(lua_State* L) {
-  return lua::protect(L, [](lua_State* L) {
-    auto args = arguments(L, "kerr");
-    const double M = args.number("mass");
-    const double a = args.number_or("spin", 0.0);
-    args.finish();
-    const Kerr check(M, a);  // throws with the reason
-    push_tagged(L, "kerr");
-    set_number(L, "mass", M);
-    set_number(L, "spin", a);
+// One constructor: copy and tag the arguments, then validate them with the
+// same reader the engine uses on the frame's scene, so an error names the
+// script line that made the value.
+template <void (*Validate)(lua::TableReader&)>
+int construct(lua_State* L, const char* kind) {
+  return lua::protect(L, [kind](lua_State* L) {
+    {
+      lua::TableReader r = tagged_copy(L, kind);
+      Validate(r);
+    }
     return 1;
   });
 }
 
-// dihole{m1 = , m2 = , d = 1}: holes at z = +d (m1) and z = -d (m2).
-int l_dihole(lua_State* L) {
-  return lua::protect(L, [](lua_State* L) {
-    auto args = arguments(L, "dihole");
-    const double m1 = args.number("m1");
-    const double m2 = args.number("m2");
-    const double d = args.number_or("d", 1.0);
-    args.finish();
-    const Dihole check(m1, m2, d);
-    push_tagged(L, "dihole");
-    set_number(L, "m1", m1);
-    set_number(L, "m2", m2);
-    set_number(L, "d", d);
-    return 1;
-  });
-}
+void validate_spacetime(lua::TableReader& t) { read_spacetime(t, KerrSchildSense::outgoing); }
+void validate_camera(lua::TableReader& t) { read_camera(t); }
+void validate_disk(lua::TableReader& t) { read_disk(t); }
+void validate_sky(lua::TableReader& t) { read_sky(t); }
+void validate_worldline(lua::TableReader& t) { read_worldline(t); }
+void validate_sphere(lua::TableReader& t) { read_sphere(t, nullptr); }
+void validate_observer(lua::TableReader& t) { read_observer(t, nullptr); }
 
-int l_minkowski(lua_State* L) {
-  return lua::protect(L, [](lua_State* L) {
-    arguments(L, "minkowski").finish();
-    push_tagged(L, "minkowski");
-    return 1;
-  });
-}
+#define LC_CONSTRUCTOR(name, validate) \
+  int l_##name(lua_State* L) { return construct<validate>(L, #name); }
+LC_CONSTRUCTOR(kerr, validate_spacetime)
+LC_CONSTRUCTOR(dihole, validate_spacetime)
+LC_CONSTRUCTOR(minkowski, validate_spacetime)
+LC_CONSTRUCTOR(camera, validate_camera)
+LC_CONSTRUCTOR(disk, validate_disk)
+LC_CONSTRUCTOR(sky_checker, validate_sky)
+LC_CONSTRUCTOR(sky_image, validate_sky)
+LC_CONSTRUCTOR(worldline, validate_worldline)
+LC_CONSTRUCTOR(sphere, validate_sphere)
+LC_CONSTRUCTOR(static_observer, validate_observer)
+LC_CONSTRUCTOR(zamo, validate_observer)
+LC_CONSTRUCTOR(free_fall, validate_observer)
+#undef LC_CONSTRUCTOR
 
 }  // namespace
 
 void install_engine_api(lua::Sandbox& sandbox) {
   lua_State* L = sandbox.state();
   lua_newtable(L);
-  const luaL_Reg functions[] = {{"kerr", l_kerr}, {"dihole", l_dihole}, {"minkowski", l_minkowski}, {nullptr, nullptr}};
+  const luaL_Reg functions[] = {
+      {"kerr", l_kerr},           {"dihole", l_dihole},           {"minkowski", l_minkowski},
+      {"camera", l_camera},       {"disk", l_disk},               {"sky_checker", l_sky_checker},
+      {"sky_image", l_sky_image}, {"worldline", l_worldline},     {"sphere", l_sphere},
+      {"static_observer", l_static_observer}, {"zamo", l_zamo},   {"free_fall", l_free_fall},
+      {nullptr, nullptr}};
   for (const luaL_Reg* f = functions; f->name; ++f) {
     lua_pushcfunction(L, f->func);
     lua_setfield(L, -2, f->name);

@@ -14,12 +14,12 @@ Spacetime read_spacetime(lua::TableReader& t, KerrSchildSense sense) {
   t.mark_known({"__where"});
   try {
     if (*kind == "kerr") {
-      const double M = t.number("mass"), a = t.number("spin");
+      const double M = t.number("mass"), a = t.number_or("spin", 0.0);
       t.finish();
       return Kerr(M, a, sense);
     }
     if (*kind == "dihole") {
-      const double m1 = t.number("m1"), m2 = t.number("m2"), d = t.number("d");
+      const double m1 = t.number("m1"), m2 = t.number("m2"), d = t.number_or("d", 1.0);
       t.finish();
       return Dihole(m1, m2, d);
     }
@@ -28,8 +28,11 @@ Spacetime read_spacetime(lua::TableReader& t, KerrSchildSense sense) {
       return Minkowski{};
     }
   } catch (const std::invalid_argument& e) {
-    // Fields edited after construction can still be unphysical.
-    throw lua::FieldError(fmt::format("{}: {}", t.context(), e.what()));
+    // The spacetime classes prefix their messages with their kind; the
+    // context already names it.
+    std::string_view msg = e.what();
+    if (msg.starts_with(*kind + ": ")) msg.remove_prefix(kind->size() + 2);
+    throw lua::FieldError(fmt::format("{}: {}", t.context(), msg));
   }
   throw lua::FieldError(fmt::format("{}: a {} is not a spacetime", t.context(), *kind));
 }

@@ -21,6 +21,7 @@ class Dihole : public CartesianScene {
   double mass1() const { return m1_; }
   double mass2() const { return m2_; }
   double separation() const { return d_; }
+  double asymptotic_mass() const { return m1_ + m2_; }
 
   // U and its gradient at a spatial point.
   double potential(const Vec4& x, Vec3* grad = nullptr) const {

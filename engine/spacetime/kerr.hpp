@@ -39,6 +39,8 @@ class Kerr {
   Kerr with_sense(KerrSchildSense s) const { return Kerr(M_, a_, s); }
 
   double mass() const { return M_; }
+  // Mass seen from far away (for the weak-field tail of escaping rays).
+  double asymptotic_mass() const { return M_; }
   double spin() const { return a_; }
   // Outer horizon r_+ (0 for M = 0).
   double horizon_radius() const { return r_plus_; }

@@ -12,6 +12,7 @@ class Minkowski : public CartesianScene {
     dx = {-p[0], p[1], p[2], p[3]};
     dp = {0.0, 0.0, 0.0, 0.0};
   }
+  double asymptotic_mass() const { return 0.0; }
   bool captured(const Vec4&) const { return false; }
   bool inside_horizon(const Vec4&) const { return false; }
   Mat4 metric(const Vec4&) const { return {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }

@@ -24,6 +24,10 @@ using Spacetime = std::variant<Minkowski, Kerr, Dihole>;
 // Short lowercase name ("minkowski", "kerr", "dihole") for messages and output.
 std::string spacetime_name(const Spacetime& s);
 
+// The spacetime and its exact parameters, e.g. "kerr(mass=1, spin=0.9)";
+// equal strings mean the same spacetime (hex-float exact with exact = true).
+std::string describe(const Spacetime& s, bool exact = false);
+
 // True when scene coordinates are Boyer–Lindquist (t, r, theta, phi).
 inline bool has_polar_scene(const Spacetime& s) { return std::holds_alternative<Kerr>(s); }
 

@@ -1,0 +1,27 @@
+#pragma once
+// What one traced ray (one sample) found: its colour and the data-layer
+// values of docs/layers.md.
+
+#include "geodesic/stop_reason.hpp"
+#include "scene/frame_scene.hpp"
+
+namespace lc {
+
+// Values of the hit.kind layer.
+enum class HitKind : int { sky = 0, disk = 1, horizon = 2, object = 3, gave_up = 4 };
+
+struct RaySample {
+  Color color{0.0f, 0.0f, 0.0f};  // linear RGB
+  HitKind kind = HitKind::gave_up;
+  // The event where the ray ended (disk or object hit, capture, escape), in
+  // Boyer–Lindquist r and phi (phi in [0, 2 pi)) for Kerr, spherical r and
+  // phi about the origin otherwise; t is its scene time minus the observer's.
+  double r = 0.0, phi = 0.0, t = 0.0;
+  int order = 0;  // equatorial-plane crossings before the end
+  long steps = 0;
+  StopReason reason = StopReason::gave_up;
+  std::array<double, 8> end{};  // trace-coordinate state (x^mu, p_mu) where the ray ended
+  double lambda_end = 0.0;      // its affine parameter
+};
+
+}  // namespace lc

@@ -1,0 +1,46 @@
+#pragma once
+// Pixels of a frame: N x N supersampled camera rays per pixel, averaged in
+// linear RGB, plus the data layers of docs/layers.md from the ray through the
+// pixel centre.  Rows are independent, so any split over threads or
+// processes gives bit-identical images.
+
+#include <atomic>
+#include <span>
+
+#include "image/image.hpp"
+#include "render/scene.hpp"
+
+namespace lc {
+
+struct RenderSettings {
+  int width = 0, height = 0;
+  int supersample = 1;  // N: N x N samples per pixel
+  bool layers = false;  // also fill hit.kind, hit.r, hit.phi, hit.t, hit.order
+};
+
+struct RenderStats {
+  long rays = 0, steps = 0, gave_up = 0;
+  RenderStats& operator+=(const RenderStats& o) {
+    rays += o.rays;
+    steps += o.steps;
+    gave_up += o.gave_up;
+    return *this;
+  }
+};
+
+// The names of the data layers, in the order they are stored.
+inline constexpr std::array<const char*, 5> layer_names = {"hit.kind", "hit.r", "hit.phi", "hit.t", "hit.order"};
+
+// An empty frame of the right size (and layers, if asked for).
+FrameImage make_frame(const RenderSettings& rs);
+
+// Renders the listed rows into `image` (made by make_frame).  Thread-safe for
+// disjoint rows.
+RenderStats render_rows(const Scene& scene, const RenderSettings& rs, std::span<const int> rows, FrameImage& image);
+
+// Renders a whole frame with `threads` threads (0: every core), rows handed
+// out dynamically.  `rows_done`, when given, counts finished rows (progress).
+FrameImage render_frame(const Scene& scene, const RenderSettings& rs, int threads, RenderStats* stats = nullptr,
+                        std::atomic<int>* rows_done = nullptr);
+
+}  // namespace lc

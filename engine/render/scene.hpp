@@ -1,0 +1,296 @@
+#pragma once
+// A frame ready to render: the spacetime in the chart rays are traced in, the
+// observer's event and tetrad, the camera and the objects.  trace_sample()
+// follows one camera ray through it; everything here is templated on the
+// concrete spacetime so the metric inlines into the integrator.
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "geodesic/crossing.hpp"
+#include "geodesic/null_ray.hpp"
+#include "observer/ray_direction.hpp"
+#include "render/camera.hpp"
+#include "render/hit.hpp"
+#include "render/objects.hpp"
+
+namespace lc {
+
+template <class S>
+struct SceneOf {
+  S spacetime;
+  Vec4 observer{};       // trace coordinates
+  double observer_time;  // scene time of the observer (BL t for Kerr)
+  Mat4 metric{};         // at the observer
+  Tetrad frame{};
+  PinholeCamera camera;
+  std::optional<Disk> disk;
+  Sky sky;
+  std::vector<Sphere> spheres;
+  RayOptions rays;
+};
+
+using Scene = std::variant<SceneOf<Minkowski>, SceneOf<Kerr>, SceneOf<Dihole>>;
+
+// Scene time, radius and longitude of a trace-coordinate event: Boyer–Lindquist
+// for Kerr, spherical about the origin otherwise.
+template <class S>
+inline void scene_polar(const S& st, const Vec4& x, double& t, double& r, double& phi) {
+  if constexpr (std::is_same_v<S, Kerr>) {
+    const Vec4 s = st.scene_from_trace(x);
+    t = s[0];
+    r = s[1];
+    phi = s[3];
+  } else {
+    t = x[0];
+    r = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    phi = std::atan2(x[2], x[1]);
+    if (phi < 0) phi += two_pi;
+  }
+}
+
+namespace detail {
+
+// Local coordinates (on the sphere frame's spatial legs) of the ray point X,
+// taken on the sphere's simultaneity slice: Newton on g(X - C(tau), u(tau)) = 0,
+// whose derivative in tau is -g(u, u) = 1 (local linearisation, DESIGN.md).
+template <class S>
+Vec3 sphere_local(const S& st, const Sphere& sphere, const Vec4& X) {
+  SphereFrame f = sphere.at(X[0]);
+  Mat4 g = st.metric(f.centre);
+  for (int it = 0; it < 3; ++it) {
+    const double lag = contract(g, X - f.centre, f.frame.e[0]);
+    if (std::abs(lag) < 1e-12) break;
+    // Moving the centre along u by -lag in proper time; in coordinate time
+    // that is -lag * u^0.
+    f = sphere.at(f.centre[0] + lag * f.frame.e[0][0]);
+    g = st.metric(f.centre);
+  }
+  const Vec4 d = X - f.centre;
+  return {contract(g, d, f.frame.e[1]), contract(g, d, f.frame.e[2]), contract(g, d, f.frame.e[3])};
+}
+
+inline bool boxes_overlap(const Vec3& alo, const Vec3& ahi, const Vec3& blo, const Vec3& bhi) {
+  for (int k = 0; k < 3; ++k)
+    if (ahi[k] < blo[k] || bhi[k] < alo[k]) return false;
+  return true;
+}
+
+// First entry of the ray into the sphere within this step, if any: the affine
+// parameter of the crossing.  The spacetime tube (the centre's box over the
+// step's time range, grown by 2R) rejects almost every step cheaply.
+template <class S>
+std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayStep& step) {
+  const double l0 = step.t0, l1 = step.t0 + step.h;
+  const RayState& a = step.start();
+  const RayState b = step.at(l1);
+  const RayState m = step.at(0.5 * (l0 + l1));
+  Vec3 rlo, rhi;
+  double chord2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    rlo[k] = std::min({a[k + 1], b[k + 1], m[k + 1]});
+    rhi[k] = std::max({a[k + 1], b[k + 1], m[k + 1]});
+    chord2 += (b[k + 1] - a[k + 1]) * (b[k + 1] - a[k + 1]);
+  }
+  Vec3 clo, chi;
+  sphere.bounds(a[0], b[0], clo, chi);
+  const double grow = 2.0 * sphere.spec.radius + 0.1 * std::sqrt(chord2);
+  for (int k = 0; k < 3; ++k) {
+    clo[k] -= grow;
+    chi[k] += grow;
+  }
+  if (!boxes_overlap(rlo, rhi, clo, chi)) return std::nullopt;
+
+  // Clip the step to the tube with the straight chord (a step is nearly
+  // straight; the interval is widened by 5% of the step each side for the
+  // bulge), then sample F = |xi|^2 - R^2 at spacing R/4 along what is left,
+  // so no sphere slips between samples however long the step.
+  const double R = sphere.spec.radius, R2 = R * R;
+  double s0 = 0.0, s1 = 1.0;
+  for (int k = 0; k < 3; ++k) {
+    const double d = b[k + 1] - a[k + 1];
+    if (std::abs(d) < 1e-300) continue;
+    double e0 = (clo[k] - a[k + 1]) / d, e1 = (chi[k] - a[k + 1]) / d;
+    if (e0 > e1) std::swap(e0, e1);
+    s0 = std::max(s0, e0);
+    s1 = std::min(s1, e1);
+  }
+  s0 = std::max(0.0, s0 - 0.05);
+  s1 = std::min(1.0, s1 + 0.05);
+  if (s0 >= s1) return std::nullopt;
+  const double chord = std::sqrt(chord2);
+  const int n = std::clamp(static_cast<int>(std::ceil((s1 - s0) * chord / (0.25 * R))), 4, 100000);
+  auto F = [&](const RayState& y) {
+    const Vec3 xi = sphere_local(st, sphere, {y[0], y[1], y[2], y[3]});
+    return xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2] - R2;
+  };
+  double prev_l = l0 + s0 * (l1 - l0);
+  double prev_f = F(step.at(prev_l));
+  double min_f = prev_f, min_l = prev_l, min_lo = prev_l, min_hi = prev_l;
+  for (int i = 1; i <= n; ++i) {
+    const double l = l0 + (s0 + (s1 - s0) * i / n) * (l1 - l0);
+    const double f = F(step.at(l));
+    if (prev_f > 0.0 && f <= 0.0)
+      return locate_crossing(step, F, prev_l, l, prev_f, f, 1e-12 * std::max(1.0, R2));
+    if (f < min_f) {
+      min_f = f;
+      min_l = l;
+      min_lo = prev_l;
+      min_hi = l;  // widened below once the next sample is known
+    } else if (min_hi == min_l) {
+      min_hi = l;
+    }
+    prev_l = l;
+    prev_f = f;
+  }
+  // A grazing ray can dip into the sphere between two samples.  Along a
+  // nearly straight segment F is nearly a parabola, so the sample nearest
+  // the closest approach has F < spacing^2 / 4 when the ray enters; refine
+  // the minimum there by golden-section search and take the entry before it.
+  const double spacing = (s1 - s0) * chord / n;
+  if (min_f < 0.5 * spacing * spacing && min_f > 0.0) {
+    double a = min_lo, b = min_hi;
+    constexpr double g = 0.6180339887498949;
+    double c = b - g * (b - a), d = a + g * (b - a);
+    double fc = F(step.at(c)), fd = F(step.at(d));
+    for (int it = 0; it < 60 && b - a > 1e-13 * (1.0 + std::abs(b)); ++it) {
+      if (fc <= 0.0 || fd <= 0.0) break;
+      if (fc < fd) {
+        b = d;
+        d = c;
+        fd = fc;
+        c = b - g * (b - a);
+        fc = F(step.at(c));
+      } else {
+        a = c;
+        c = d;
+        fc = fd;
+        d = a + g * (b - a);
+        fd = F(step.at(d));
+      }
+    }
+    const double inside = fc <= 0.0 ? c : (fd <= 0.0 ? d : 0.0);
+    if (fc <= 0.0 || fd <= 0.0) {
+      const double fa = F(step.at(min_lo));
+      return locate_crossing(step, F, min_lo, inside, fa, F(step.at(inside)), 1e-12 * std::max(1.0, R2));
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace detail
+
+// Traces the camera ray along local direction n (on the observer's legs).
+// OnStep(const RayStep&) sees every accepted step (for `lightcone trace`).
+template <class S, class OnStep>
+RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
+  const S& st = sc.spacetime;
+  const Vec4 p = backward_ray_momentum(sc.metric, sc.frame, n);
+  RaySample out;
+  int crossings = 0;
+  auto visit = [&](const RayStep& step, RayResult& res) {
+    on_step(step);
+    const double l1 = step.t0 + step.h;
+    double best = l1 + 1.0;
+    int hit_sphere = -1;
+    for (std::size_t k = 0; k < sc.spheres.size(); ++k)
+      if (auto l = detail::sphere_entry(st, sc.spheres[k], step); l && *l < best) {
+        best = *l;
+        hit_sphere = static_cast<int>(k);
+      }
+    const double z0 = step.start()[3], z1 = step.component(3, l1);
+    if ((z0 > 0.0) != (z1 > 0.0) && z0 != 0.0) {
+      const double lz = locate_crossing(step, [](const RayState& y) { return y[3]; }, z0, z1);
+      if (lz < best) {
+        const RayState y = step.at(lz);
+        double t, r, phi;
+        scene_polar(st, {y[0], y[1], y[2], y[3]}, t, r, phi);
+        if (sc.disk && r >= sc.disk->spec.inner && r <= sc.disk->spec.outer) {
+          out.kind = HitKind::disk;
+          out.color = sc.disk->color(r, phi);
+          out.r = r;
+          out.phi = phi;
+          out.t = t - sc.observer_time;
+          out.order = crossings;
+          res.reason = StopReason::hit;
+          res.y = y;
+          res.lambda = lz;
+          return true;
+        }
+        ++crossings;
+      }
+    }
+    if (hit_sphere >= 0) {
+      const RayState y = step.at(best);
+      const Sphere& sp = sc.spheres[hit_sphere];
+      const Vec3 xi = detail::sphere_local(st, sp, {y[0], y[1], y[2], y[3]});
+      double t, r, phi;
+      scene_polar(st, {y[0], y[1], y[2], y[3]}, t, r, phi);
+      out.kind = HitKind::object;
+      out.color = sp.color(xi);
+      out.r = r;
+      out.phi = phi;
+      out.t = t - sc.observer_time;
+      out.order = crossings;
+      res.reason = StopReason::hit;
+      res.y = y;
+      res.lambda = best;
+      return true;
+    }
+    return false;
+  };
+  const RayResult res = trace_null_ray(st, sc.observer, p, sc.rays, visit);
+  out.steps = res.steps;
+  out.reason = res.reason;
+  out.end = res.y;
+  out.lambda_end = res.lambda;
+  if (res.reason == StopReason::hit) return out;
+  const Vec4 x = {res.y[0], res.y[1], res.y[2], res.y[3]};
+  double t, r, phi;
+  scene_polar(st, x, t, r, phi);
+  out.r = r;
+  out.phi = phi;
+  out.t = t - sc.observer_time;
+  out.order = crossings;
+  if (res.reason == StopReason::horizon) {
+    out.kind = HitKind::horizon;
+    return out;
+  }
+  if (res.reason != StopReason::escaped) return out;  // gave up: black, kind 4
+  // Escape direction: the spatial tangent, bent by the weak-field deflection
+  // still to come between here and infinity, (2M/r) tan(psi/2) towards the
+  // centre (psi: angle between position and direction) — without it the sky
+  // would sit ~2M/R radians off at the escape radius R.
+  Vec4 dx, dp;
+  st.hamiltonian_rhs(x, {res.y[4], res.y[5], res.y[6], res.y[7]}, dx, dp);
+  Vec3 d = {dx[1], dx[2], dx[3]};
+  const double dn = norm3(d);
+  for (auto& c : d) c /= dn;
+  const double M = st.asymptotic_mass();
+  if (M > 0.0) {
+    const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    const Vec3 rh = {x[1] / rho, x[2] / rho, x[3] / rho};
+    const double c = std::clamp(rh[0] * d[0] + rh[1] * d[1] + rh[2] * d[2], -1.0, 1.0);
+    const double psi = std::acos(c);
+    if (psi > 1e-9) {
+      const double delta = 2.0 * M / rho * std::tan(0.5 * psi);
+      // Unit vector in the plane, perpendicular to d, pointing away from the centre side.
+      Vec3 w = {rh[0] - c * d[0], rh[1] - c * d[1], rh[2] - c * d[2]};
+      const double wn = norm3(w);
+      for (auto& q : w) q /= wn;
+      const double cd = std::cos(delta), sd = std::sin(delta);
+      d = {cd * d[0] - sd * w[0], cd * d[1] - sd * w[1], cd * d[2] - sd * w[2]};
+    }
+  }
+  out.kind = HitKind::sky;
+  const double theta = std::acos(std::clamp(d[2], -1.0, 1.0));
+  double sphi = std::atan2(d[1], d[0]);
+  if (sphi < 0) sphi += two_pi;
+  out.color = sc.sky.color(theta, sphi);
+  return out;
+}
+
+}  // namespace lc

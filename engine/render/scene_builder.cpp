@@ -1,0 +1,128 @@
+#include "render/scene_builder.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace lc {
+
+ShotResources::ShotResources(std::vector<std::filesystem::path> asset_dirs) : asset_dirs_(std::move(asset_dirs)) {}
+
+std::shared_ptr<const Worldline> ShotResources::worldline(const WorldlineSpec& spec) {
+  const std::string key = spec.key();
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = worldlines_.find(key); it != worldlines_.end()) return it->second;
+  }
+  // Integrate outside the lock; a racing duplicate is harmless (same result).
+  auto w = std::make_shared<const Worldline>(Worldline::integrate(spec));
+  std::lock_guard lock(mutex_);
+  return worldlines_.emplace(key, std::move(w)).first->second;
+}
+
+std::shared_ptr<const Texture> ShotResources::texture(const std::filesystem::path& file) {
+  std::filesystem::path found;
+  if (file.is_absolute()) {
+    found = file;
+  } else {
+    for (const auto& dir : asset_dirs_)
+      if (std::filesystem::exists(dir / file)) {
+        found = dir / file;
+        break;
+      }
+    if (found.empty()) {
+      std::string tried;
+      for (const auto& dir : asset_dirs_) tried += "\n  " + (dir / file).string();
+      throw std::invalid_argument(fmt::format("sky image '{}' not found; looked in:{}", file.string(), tried));
+    }
+  }
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = textures_.find(found); it != textures_.end()) return it->second;
+  }
+  auto t = std::make_shared<const Texture>(Texture::load(found));
+  std::lock_guard lock(mutex_);
+  return textures_.emplace(found, std::move(t)).first->second;
+}
+
+std::vector<std::filesystem::path> ShotResources::files() const {
+  std::lock_guard lock(mutex_);
+  std::vector<std::filesystem::path> out;
+  for (const auto& [path, tex] : textures_) out.push_back(path);
+  return out;
+}
+
+namespace {
+
+template <class S>
+Tetrad rest_frame_for_object(const S& st, const Vec4& scene) {
+  if constexpr (std::is_same_v<S, Kerr>)
+    return static_polar_tetrad(st, scene);
+  else
+    return static_cartesian_tetrad(st, st.trace_from_scene(scene));
+}
+
+template <class S>
+Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResources& res, const RayOptions& rays) {
+  const std::string here = describe(fs.spacetime);
+  auto check_same = [&](const WorldlineSpec& w, const char* what) {
+    if (describe(w.spacetime, true) != describe(fs.spacetime, true))
+      throw std::invalid_argument(fmt::format(
+          "{}: {}'s worldline ({}) was made in {}, but this frame's spacetime is {}; a worldline only "
+          "makes sense in the spacetime it was integrated in",
+          w.where, what, w.where, describe(w.spacetime), here));
+  };
+
+  SceneOf<S> sc{st, {}, 0.0, {}, {}, PinholeCamera(fs.camera, width, height), std::nullopt, Sky{fs.sky, nullptr}, {},
+                rays};
+  const ObserverSpec& ob = fs.observer;
+  try {
+    if (ob.kind == ObserverKind::free_fall) {
+      check_same(*ob.worldline, "the observer");
+      const auto w = res.worldline(*ob.worldline);
+      const WorldlineEvent ev = w->at_proper_time(ob.proper_time);
+      sc.observer = ev.x;
+      sc.frame = ev.frame;
+    } else {
+      sc.observer = st.trace_from_scene(ob.position);
+      sc.frame = ob.kind == ObserverKind::zamo ? zamo_polar_tetrad(st, ob.position)
+                                               : static_polar_tetrad(st, ob.position);
+    }
+  } catch (const ObserverError& e) {
+    throw std::invalid_argument(fmt::format("observer: {}", e.what()));
+  }
+  if (st.captured(sc.observer))
+    throw std::invalid_argument("observer: too close to a horizon (inside the capture region where rays are stopped)");
+  sc.metric = st.metric(sc.observer);
+  double r_unused, phi_unused;
+  scene_polar(st, sc.observer, sc.observer_time, r_unused, phi_unused);
+
+  if (fs.disk) sc.disk = Disk{*fs.disk};
+  if (fs.sky.kind == SkyKind::image) sc.sky.texture = res.texture(fs.sky.image);
+  for (const SphereSpec& spec : fs.spheres) {
+    Sphere sp{spec, nullptr, {}, {}};
+    if (spec.worldline) {
+      check_same(*spec.worldline, "a sphere");
+      sp.worldline = res.worldline(*spec.worldline);
+    } else {
+      sp.rest_position = st.trace_from_scene(*spec.position);
+      try {
+        sp.rest_frame = rest_frame_for_object(st, *spec.position);
+      } catch (const ObserverError& e) {
+        throw std::invalid_argument(fmt::format("sphere at rest: {}", e.what()));
+      }
+    }
+    sc.spheres.push_back(std::move(sp));
+  }
+  return sc;
+}
+
+}  // namespace
+
+Scene build_scene(const FrameScene& fs, int width, int height, ShotResources& resources, const RayOptions& rays) {
+  Spacetime st = fs.spacetime;
+  if (auto* k = std::get_if<Kerr>(&st)) *k = k->with_sense(KerrSchildSense::outgoing);
+  return std::visit([&](const auto& s) { return build(s, fs, width, height, resources, rays); }, st);
+}
+
+}  // namespace lc

@@ -1,0 +1,103 @@
+#include "scene/scene_json.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+
+namespace lc {
+
+namespace {
+
+std::string num(double v) {
+  if (!std::isfinite(v)) return "null";
+  return fmt::format("{:.12g}", v);
+}
+
+std::string color(const Color& c) { return fmt::format("[{}, {}, {}]", num(c[0]), num(c[1]), num(c[2])); }
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) {
+      out += fmt::format("\\u{:04x}", c);
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string position(const Vec4& p, bool polar) {
+  if (polar)
+    return fmt::format("{{\"t\": {}, \"r\": {}, \"theta\": {}, \"phi\": {}}}", num(p[0]), num(p[1]), num(p[2] / degree),
+                       num(p[3] / degree));
+  return fmt::format("{{\"t\": {}, \"x\": {}, \"y\": {}, \"z\": {}}}", num(p[0]), num(p[1]), num(p[2]), num(p[3]));
+}
+
+std::string spacetime(const Spacetime& st) {
+  return std::visit(
+      [](const auto& s) -> std::string {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, Kerr>)
+          return fmt::format("{{\"kind\": \"kerr\", \"mass\": {}, \"spin\": {}}}", num(s.mass()), num(s.spin()));
+        else if constexpr (std::is_same_v<S, Dihole>)
+          return fmt::format("{{\"kind\": \"dihole\", \"m1\": {}, \"m2\": {}, \"d\": {}}}", num(s.mass1()),
+                             num(s.mass2()), num(s.separation()));
+        else
+          return "{\"kind\": \"minkowski\"}";
+      },
+      st);
+}
+
+std::string worldline(const WorldlineSpec& w) {
+  const bool polar = has_polar_scene(w.spacetime);
+  return fmt::format("{{\"spacetime\": {}, \"start\": {}, \"velocity\": [{}, {}, {}], \"duration\": {}, \"where\": {}}}",
+                     spacetime(w.spacetime), position(w.start, polar), num(w.velocity[0]), num(w.velocity[1]),
+                     num(w.velocity[2]), num(w.duration), quoted(w.where));
+}
+
+}  // namespace
+
+std::string to_json(const FrameScene& fs, int frame) {
+  const bool polar = has_polar_scene(fs.spacetime);
+  std::string out = fmt::format("{{\"frame\": {}, \"spacetime\": {}, ", frame, spacetime(fs.spacetime));
+  const ObserverSpec& o = fs.observer;
+  if (o.kind == ObserverKind::free_fall)
+    out += fmt::format("\"observer\": {{\"kind\": \"free_fall\", \"proper_time\": {}, \"worldline\": {}}}, ",
+                       num(o.proper_time), worldline(*o.worldline));
+  else
+    out += fmt::format("\"observer\": {{\"kind\": \"{}\", \"position\": {}}}, ",
+                       o.kind == ObserverKind::zamo ? "zamo" : "static", position(o.position, polar));
+  out += fmt::format("\"camera\": {{\"fov\": {}, \"yaw\": {}, \"pitch\": {}, \"roll\": {}}}, ", num(fs.camera.fov),
+                     num(fs.camera.yaw), num(fs.camera.pitch), num(fs.camera.roll));
+  if (fs.disk)
+    out += fmt::format(
+        "\"disk\": {{\"inner\": {}, \"outer\": {}, \"rings\": {}, \"sectors\": {}, \"colors\": [{}, {}]}}, ",
+        num(fs.disk->inner), num(fs.disk->outer), fs.disk->rings, fs.disk->sectors, color(fs.disk->color_a),
+        color(fs.disk->color_b));
+  else
+    out += "\"disk\": null, ";
+  if (fs.sky.kind == SkyKind::image)
+    out += fmt::format("\"sky\": {{\"kind\": \"image\", \"file\": {}, \"rotate\": {}}}, ", quoted(fs.sky.image.string()),
+                       num(fs.sky.rotate));
+  else
+    out += fmt::format("\"sky\": {{\"kind\": \"checker\", \"rows\": {}, \"columns\": {}, \"rotate\": {}}}, ",
+                       fs.sky.rows, fs.sky.columns, num(fs.sky.rotate));
+  out += "\"objects\": [";
+  for (std::size_t i = 0; i < fs.spheres.size(); ++i) {
+    const SphereSpec& s = fs.spheres[i];
+    out += i ? ", " : "";
+    out += fmt::format("{{\"kind\": \"sphere\", \"radius\": {}, ", num(s.radius));
+    if (s.position)
+      out += fmt::format("\"position\": {}", position(*s.position, polar));
+    else
+      out += fmt::format("\"worldline\": {}", worldline(*s.worldline));
+    out += "}";
+  }
+  return out + "]}";
+}
+
+}  // namespace lc

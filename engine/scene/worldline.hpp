@@ -1,0 +1,62 @@
+#pragma once
+// A free-falling worldline integrated once per shot (GSL reference solver,
+// tetrad parallel-transported), then sampled by proper time (observers) or
+// by coordinate time (objects met by rays).  Stored at uniform proper-time
+// steps and interpolated with cubic Hermite polynomials (position with its
+// 4-velocity as derivative), so a lookup costs a few dozen flops.
+
+#include <vector>
+
+#include "observer/tetrad.hpp"
+#include "scene/frame_scene.hpp"
+
+namespace lc {
+
+struct WorldlineEvent {
+  Vec4 x;        // trace coordinates
+  Tetrad frame;  // e[0] = 4-velocity; legs orthonormal
+  double tau;    // proper time since the start
+};
+
+class Worldline {
+ public:
+  // Integrates the spec in the chart rays are traced in (outgoing
+  // Kerr–Schild for Kerr).  Throws std::invalid_argument naming spec.where
+  // when the start is unphysical or the body is captured before `duration`.
+  static Worldline integrate(const WorldlineSpec& spec);
+
+  double duration() const { return duration_; }
+  double start_time() const { return samples_.front().x[0]; }  // trace coordinate time
+  double end_time() const { return samples_.back().x[0]; }
+
+  // The event at proper time tau in [0, duration] (clamped).
+  WorldlineEvent at_proper_time(double tau) const;
+  // The event at trace coordinate time t; before the start the body is
+  // taken to have been held at rest at its start (the frame of the start
+  // event, no motion); after the end: clamped to the end.
+  WorldlineEvent at_coordinate_time(double t) const;
+  // Proper time at trace coordinate time t (clamped to [0, duration]).
+  double proper_time_at(double t) const;
+
+  // Axis-aligned spatial box of the positions over the coordinate-time
+  // interval [t0, t1] (any order): the tube the object's centre stays in.
+  void bounds(double t0, double t1, Vec3& lo, Vec3& hi) const;
+
+  const Spacetime& spacetime() const { return spacetime_; }
+
+ private:
+  struct Sample {
+    Vec4 x, u;
+    Tetrad e;
+  };
+  WorldlineEvent interpolate(std::size_t i, double s) const;  // s in [0,1] within step i
+
+  Spacetime spacetime_ = Minkowski{};
+  std::vector<Sample> samples_;
+  double dtau_ = 0.0, duration_ = 0.0;
+  // Per chunk of kChunk samples: spatial bounds, for the spacetime tube.
+  static constexpr std::size_t kChunk = 16;
+  std::vector<std::array<Vec3, 2>> chunk_bounds_;
+};
+
+}  // namespace lc

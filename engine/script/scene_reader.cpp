@@ -1,0 +1,249 @@
+#include "script/scene_reader.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+#include "script/spacetime_reader.hpp"
+
+namespace lc {
+
+namespace {
+
+using lua::FieldError;
+using lua::TableReader;
+
+[[noreturn]] void fail(const TableReader& t, const std::string& what) {
+  throw FieldError(fmt::format("{}: {}", t.context(), what));
+}
+
+// The __kind of a constructor-made table (or "" for a plain table).
+std::string kind_of(TableReader& t) {
+  t.mark_known({"__where"});
+  return t.optional_string("__kind").value_or("");
+}
+
+void expect_kind(TableReader& t, std::initializer_list<const char*> kinds, const char* made_by) {
+  const std::string k = kind_of(t);
+  for (const char* want : kinds)
+    if (k == want) return;
+  fail(t, fmt::format("expected a value made by {}{}", made_by, k.empty() ? "" : fmt::format(", got a {}", k)));
+}
+
+double positive(TableReader& t, const char* key, std::optional<double> fallback = std::nullopt) {
+  const double v = fallback ? t.number_or(key, *fallback) : t.number(key);
+  if (!(v > 0.0)) fail(t, fmt::format("field '{}' must be > 0, got {}", key, v));
+  return v;
+}
+
+// An integer in [lo, hi]; required when there is no fallback.
+int count(TableReader& t, const char* key, std::optional<int> fallback, int lo, int hi) {
+  const auto v = fallback ? t.integer_or(key, *fallback) : t.integer(key);
+  if (v < lo || v > hi) fail(t, fmt::format("field '{}' must be between {} and {}, got {}", key, lo, hi, v));
+  return static_cast<int>(v);
+}
+
+// colors = {{r, g, b}, {r, g, b}}: two linear RGB colours, components >= 0.
+void read_colors(TableReader& t, Color& a, Color& b) {
+  auto list = t.optional_table("colors");
+  if (!list) return;
+  if (list->length() != 2) fail(*list, "must hold two colours {{r, g, b}, {r, g, b}}");
+  for (std::size_t i = 1; i <= 2; ++i) {
+    auto c = list->table_at(i);
+    if (c.length() != 3) fail(c, "a colour is {r, g, b} (three numbers, linear RGB)");
+    Color& out = i == 1 ? a : b;
+    for (std::size_t k = 1; k <= 3; ++k) {
+      const double v = c.number_at(k);
+      if (v < 0.0) fail(c, fmt::format("colour components must be >= 0, got {}", v));
+      out[k - 1] = static_cast<float>(v);
+    }
+    c.finish();
+  }
+  list->finish();
+}
+
+// Components on the static frame's legs: {r, theta, phi} or {x, y, z}.
+Vec3 read_leg_vector(TableReader& t, bool polar) {
+  const char* k[3] = {"x", "y", "z"};
+  if (polar) k[0] = "r", k[1] = "theta", k[2] = "phi";
+  Vec3 v = {t.number_or(k[0], 0.0), t.number_or(k[1], 0.0), t.number_or(k[2], 0.0)};
+  t.finish();
+  return v;
+}
+
+}  // namespace
+
+ScriptPosition read_position(TableReader& t) {
+  const bool has_polar = t.has("r") || t.has("theta") || t.has("phi");
+  const bool has_cart = t.has("x") || t.has("y") || t.has("z");
+  if (has_polar && has_cart) fail(t, "give either {r, theta, phi} (Boyer–Lindquist, degrees) or {x, y, z}, not both");
+  if (!has_polar && !has_cart) fail(t, "a position needs {r, theta, phi} (Boyer–Lindquist, degrees) or {x, y, z}");
+  ScriptPosition p;
+  p.polar = has_polar;
+  if (p.polar) {
+    p.coords = {t.number_or("t", 0.0), t.number("r"), t.number("theta") * degree, t.number("phi") * degree};
+    if (!(p.coords[1] > 0.0)) fail(t, fmt::format("r must be > 0, got {}", p.coords[1]));
+  } else {
+    p.coords = {t.number_or("t", 0.0), t.number("x"), t.number("y"), t.number("z")};
+  }
+  t.finish();
+  return p;
+}
+
+Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::string& context) {
+  const bool polar = has_polar_scene(st);
+  if (p.polar != polar)
+    throw FieldError(fmt::format("{}: positions in {} are {}", context, spacetime_name(st),
+                                 polar ? "Boyer–Lindquist {r, theta, phi} (degrees)" : "Cartesian {x, y, z}"));
+  return p.coords;
+}
+
+CameraSpec read_camera(TableReader& t) {
+  expect_kind(t, {"camera"}, "lc.camera{...}");
+  CameraSpec c;
+  c.fov = t.number_or("fov", c.fov);
+  if (!(c.fov > 0.0 && c.fov < 180.0)) fail(t, fmt::format("fov must be between 0 and 180 degrees, got {}", c.fov));
+  c.yaw = t.number_or("yaw", 0.0);
+  c.pitch = t.number_or("pitch", 0.0);
+  c.roll = t.number_or("roll", 0.0);
+  t.finish();
+  return c;
+}
+
+DiskSpec read_disk(TableReader& t) {
+  expect_kind(t, {"disk"}, "lc.disk{...}");
+  DiskSpec d;
+  d.inner = t.number("inner");
+  d.outer = t.number("outer");
+  if (!(d.inner >= 0.0)) fail(t, fmt::format("inner radius must be >= 0, got {}", d.inner));
+  if (!(d.outer > d.inner)) fail(t, fmt::format("inner radius {} must be below the outer radius {}", d.inner, d.outer));
+  d.rings = count(t, "rings", d.rings, 1, 100000);
+  d.sectors = count(t, "sectors", d.sectors, 1, 100000);
+  read_colors(t, d.color_a, d.color_b);
+  t.finish();
+  return d;
+}
+
+SkySpec read_sky(TableReader& t) {
+  const std::string k = kind_of(t);
+  SkySpec s;
+  if (k == "sky_checker") {
+    s.kind = SkyKind::checker;
+    s.rows = count(t, "rows", s.rows, 1, 100000);
+    s.columns = count(t, "columns", s.columns, 1, 100000);
+    read_colors(t, s.color_a, s.color_b);
+  } else if (k == "sky_image") {
+    s.kind = SkyKind::image;
+    s.image = t.string("file");
+    if (s.image.empty()) fail(t, "file must name an image");
+  } else {
+    fail(t, "expected a value made by lc.sky_checker{...}, lc.sky_image{...} or lc.starfield{...}");
+  }
+  s.rotate = t.number_or("rotate", 0.0);
+  t.finish();
+  return s;
+}
+
+WorldlineSpec read_worldline(TableReader& t) {
+  expect_kind(t, {"worldline"}, "lc.worldline{...}");
+  WorldlineSpec w;
+  w.where = t.string_or("__where", t.context());
+  auto st = t.table("spacetime");
+  w.spacetime = read_spacetime(st, KerrSchildSense::outgoing);
+  auto start = t.table("start");
+  w.start = resolve_position(read_position(start), w.spacetime, start.context());
+  if (auto v = t.optional_table("velocity")) w.velocity = read_leg_vector(*v, has_polar_scene(w.spacetime));
+  if (!(norm3(w.velocity) < 1.0))
+    fail(t, fmt::format("|velocity| = {} must be below the speed of light (1)", norm3(w.velocity)));
+  w.duration = positive(t, "duration");
+  t.finish();
+  return w;
+}
+
+SphereSpec read_sphere(TableReader& t, const Spacetime* st) {
+  expect_kind(t, {"sphere"}, "lc.sphere{...}");
+  SphereSpec s;
+  s.radius = positive(t, "radius");
+  const bool has_pos = t.has("position"), has_wl = t.has("worldline");
+  if (has_pos == has_wl) fail(t, "give either position (held at rest) or worldline (free fall)");
+  if (has_pos) {
+    auto p = t.table("position");
+    const ScriptPosition sp = read_position(p);
+    s.position = st ? resolve_position(sp, *st, p.context()) : sp.coords;
+  } else {
+    auto w = t.table("worldline");
+    s.worldline = read_worldline(w);
+  }
+  s.rows = count(t, "rows", s.rows, 1, 100000);
+  s.columns = count(t, "columns", s.columns, 1, 100000);
+  read_colors(t, s.color_a, s.color_b);
+  t.finish();
+  return s;
+}
+
+ObserverSpec read_observer(TableReader& t, const Spacetime* st) {
+  const std::string k = kind_of(t);
+  ObserverSpec o;
+  if (k == "static_observer" || k == "zamo") {
+    o.kind = k == "zamo" ? ObserverKind::zamo : ObserverKind::static_observer;
+    const ScriptPosition p = read_position(t);  // reads and finishes t
+    o.position = st ? resolve_position(p, *st, t.context()) : p.coords;
+    return o;
+  }
+  if (k == "free_fall") {
+    o.kind = ObserverKind::free_fall;
+    auto w = t.table("worldline");
+    o.worldline = read_worldline(w);
+    o.proper_time = t.number("proper_time");
+    if (o.proper_time < 0.0 || o.proper_time > o.worldline->duration)
+      fail(t, fmt::format("proper_time {} is outside the worldline's [0, {}]", o.proper_time, o.worldline->duration));
+    t.finish();
+    return o;
+  }
+  fail(t, "expected a value made by lc.static_observer{...}, lc.zamo{...} or lc.free_fall{...}");
+}
+
+FrameScene read_frame_scene(TableReader& t) {
+  FrameScene fs;
+  auto st = t.table("spacetime");
+  fs.spacetime = read_spacetime(st, KerrSchildSense::outgoing);
+  {
+    auto o = t.table("observer");
+    fs.observer = read_observer(o, &fs.spacetime);
+  }
+  if (auto time = t.optional_number("time")) {
+    if (fs.observer.kind == ObserverKind::free_fall)
+      fail(t, "a free-falling observer's time comes from its worldline; remove 'time'");
+    fs.observer.position[0] = *time;
+  }
+  if (auto c = t.optional_table("camera")) fs.camera = read_camera(*c);
+  if (auto d = t.optional_table("disk")) fs.disk = read_disk(*d);
+  if (auto s = t.optional_table("sky")) fs.sky = read_sky(*s);
+  if (auto objs = t.optional_table("objects")) {
+    for (std::size_t i = 1; i <= objs->length(); ++i) {
+      auto o = objs->table_at(i);
+      fs.spheres.push_back(read_sphere(o, &fs.spacetime));
+    }
+    objs->finish();
+  }
+  t.finish();
+  return fs;
+}
+
+ShotInfo read_shot_info(TableReader& t) {
+  ShotInfo s;
+  s.name = t.string("name");
+  if (s.name.empty()) fail(t, "name must not be empty");
+  for (char c : s.name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
+      fail(t, fmt::format("name '{}' may only use letters, digits, '_' and '-' (it names the output files)", s.name));
+  s.frames = count(t, "frames", std::nullopt, 1, 10'000'000);
+  s.fps = positive(t, "fps", 30.0);
+  s.width = count(t, "width", std::nullopt, 1, 16384);
+  s.height = count(t, "height", std::nullopt, 1, 16384);
+  s.supersample = count(t, "supersample", 1, 1, 16);
+  return s;
+}
+
+}  // namespace lc

@@ -1,0 +1,86 @@
+#include "trace_command.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "atomic_file.hpp"
+#include "frame_range.hpp"
+#include "geodesic_csv.hpp"
+#include "render/scene_builder.hpp"
+#include "render_command.hpp"
+#include "scene/shot.hpp"
+
+namespace lc {
+
+namespace {
+
+constexpr const char* kind_names[] = {"sky", "disk", "horizon", "object", "gave up"};
+
+}  // namespace
+
+int run_trace(const TraceCommand& cmd) {
+  Shot shot(cmd.shot);
+  const ShotInfo& info = shot.info();
+  const int f = parse_frame_range(std::to_string(cmd.frame), info.frames, "--frame").first;
+  const auto [width, height] = output_size(info.width, info.height, cmd.size, cmd.scale);
+  int i = 0, j = 0;
+  char extra = 0;
+  if (std::sscanf(cmd.pixel.c_str(), "%d,%d%c", &i, &j, &extra) != 2)
+    throw std::invalid_argument(fmt::format("--pixel '{}': expected I,J (column from the left, row from the top)", cmd.pixel));
+  if (i < 0 || i >= width || j < 0 || j >= height)
+    throw std::invalid_argument(fmt::format("--pixel {},{}: outside the {}x{} image", i, j, width, height));
+
+  const FrameScene fs = shot.frame(f);
+  ShotResources resources(shot.asset_dirs());
+  const Scene scene = [&] {
+    try {
+      return build_scene(fs, width, height, resources);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("{}: frame {}: {}", cmd.shot.string(), f, e.what()));
+    }
+  }();
+
+  // The path, as the geodesic tool reports a curve integrated into the past:
+  // lambda = -(affine parameter of the backward ray), tangent future-directed.
+  GeodesicPath path;
+  Spacetime st_out = Minkowski{};
+  const RaySample s = std::visit(
+      [&](const auto& sc) {
+        st_out = sc.spacetime;
+        auto record = [&](const RayState& y, double mu) {
+          GeodesicSample g{};
+          g.lambda = -mu;
+          g.x = {y[0], y[1], y[2], y[3]};
+          Vec4 dx, dp;
+          sc.spacetime.hamiltonian_rhs(g.x, {y[4], y[5], y[6], y[7]}, dx, dp);
+          g.u = -1.0 * dx;
+          path.samples.push_back(g);
+        };
+        RaySample r = trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5),
+                                   [&](const RayStep& step) { record(step.start(), step.t0); });
+        record(r.end, r.lambda_end);
+        return r;
+      },
+      scene);
+  path.reason = s.reason;
+  path.steps = s.steps;
+  std::string csv = geodesic_csv_header(false, false);
+  append_geodesic_csv(csv, st_out, path, false, std::nullopt);
+  if (cmd.output) {
+    AtomicFile out(*cmd.output);
+    out.write(csv);
+    out.commit();
+  } else {
+    std::fwrite(csv.data(), 1, csv.size(), stdout);
+  }
+  fmt::print(stderr,
+             "trace: frame {} pixel {},{}: hit {} (hit.kind {}), stop reason {}, {} steps; r = {:.9g}, phi = {:.9g} rad, "
+             "t = {:.9g}, equatorial crossings before it: {}; colour {:.4g} {:.4g} {:.4g}\n",
+             f, i, j, kind_names[static_cast<int>(s.kind)], static_cast<int>(s.kind), to_string(s.reason), s.steps, s.r,
+             s.phi, s.t, s.order, s.color[0], s.color[1], s.color[2]);
+  return 0;
+}
+
+}  // namespace lc

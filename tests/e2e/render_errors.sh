@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Every bad shot or flag: a clear message naming the shot file and line or the
+# field or flag, a non-zero exit, and nothing under a frame's final name.
+source "$(dirname "$0")/lib.sh"
+e2e_begin "$@"
+
+# shot NAME SCENE-FIELDS [SHOT-FIELDS]: a one-frame shot whose frame returns
+# {SCENE-FIELDS}; the scene table starts on line 5.
+shot() {
+  cat >"$WORK/$1.lua" <<LUA
+local lc = require "lightcone"
+return {
+  name = "$1", frames = 1, width = 8, height = 8, ${3:-}
+  frame = function(i) return {
+    $2
+  } end,
+}
+LUA
+}
+good_kerr='spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 30, theta = 80, phi = 0},'
+
+shot missing_texture "$good_kerr sky = lc.sky_image{file = 'nope.png'}"
+expect_error missing_texture "sky image 'nope.png' not found" -- "$LIGHTCONE" render missing_texture.lua --out out
+shot negative_radius "$good_kerr disk = lc.disk{inner = -1, outer = 5}"
+expect_error negative_radius "negative_radius.lua:5: disk: inner radius must be >= 0" -- "$LIGHTCONE" render negative_radius.lua --out out
+shot inverted_disk "$good_kerr disk = lc.disk{inner = 10, outer = 5}"
+expect_error inverted_disk "inverted_disk.lua:5: disk: inner radius 10 must be below the outer radius 5" -- "$LIGHTCONE" render inverted_disk.lua --out out
+shot zero_width "$good_kerr" "width = 0,"
+expect_error zero_width "field 'width' must be between 1 and 16384, got 0" -- "$LIGHTCONE" render zero_width.lua --out out
+shot ok "$good_kerr"
+expect_error zero_size "image size 0x10 is out of range" -- "$LIGHTCONE" render ok.lua --out out --size 0x10
+expect_error absurd_size "image size 100000x10 is out of range" -- "$LIGHTCONE" render ok.lua --out out --size 100000x10
+expect_error bad_size "--size 'big': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size big
+expect_error bad_scale "--scale -1: must be a positive number" -- "$LIGHTCONE" render ok.lua --out out --scale -1
+expect_error bad_frames "--frames '5:9': the shot has frames 0 to 0" -- "$LIGHTCONE" render ok.lua --out out --frames 5:9
+expect_error bad_frames2 "--frames 'x'" -- "$LIGHTCONE" render ok.lua --out out --frames x
+shot ergo "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 1.8, theta = 90, phi = 0},"
+expect_error ergo "ergo.lua: frame 0: observer: static observer: no static observer exists here (inside the ergoregion" -- "$LIGHTCONE" render ergo.lua --out out
+shot inside "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.zamo{r = 1.2, theta = 90, phi = 0},"
+expect_error inside "inside a horizon" -- "$LIGHTCONE" render inside.lua --out out
+shot nan "$good_kerr camera = lc.camera{fov = 0/0},"
+expect_error nan "nan.lua:5: camera: field 'fov' is nan" -- "$LIGHTCONE" render nan.lua --out out
+shot wide "$good_kerr camera = lc.camera{fov = 200},"
+expect_error wide "wide.lua:5: camera: fov must be between 0 and 180 degrees" -- "$LIGHTCONE" render wide.lua --out out
+shot typo "$good_kerr disk = lc.disk{iner = 6, outer = 10},"
+expect_error typo "typo.lua:5: disk: missing field 'inner' (there is a field 'iner': misspelt?)" -- "$LIGHTCONE" render typo.lua --out out
+shot scene_typo "spacetime = lc.kerr{mass = 1}, obsrver = lc.static_observer{r = 30, theta = 80, phi = 0},"
+expect_error scene_typo "scene_typo.lua: frame 0: missing field 'observer' (there is a field 'obsrver': misspelt?)" -- "$LIGHTCONE" render scene_typo.lua --out out
+shot scene_typo2 "$good_kerr camra = lc.camera{fov = 30},"
+expect_error scene_typo2 "scene_typo2.lua: frame 0: unknown field 'camra' (did you mean 'camera'?)" -- "$LIGHTCONE" render scene_typo2.lua --out out
+shot wrong_coords "spacetime = lc.kerr{mass = 1}, observer = lc.static_observer{x = 30, y = 0, z = 0},"
+expect_error wrong_coords "positions in kerr are Boyer–Lindquist" -- "$LIGHTCONE" render wrong_coords.lua --out out
+shot raw_table "$good_kerr disk = {inner = 6, outer = 10},"
+expect_error raw_table "expected a value made by lc.disk{...}" -- "$LIGHTCONE" render raw_table.lua --out out
+shot runtime "$good_kerr camera = lc.camera{fov = nil + 1},"
+expect_error runtime "runtime.lua:5: attempt to perform arithmetic" -- "$LIGHTCONE" render runtime.lua --out out
+cat >"$WORK/not_a_scene.lua" <<'LUA'
+return {name = "not_a_scene", frames = 1, width = 8, height = 8, frame = function(i) return 42 end}
+LUA
+expect_error not_a_scene "not_a_scene.lua: frame 0: frame(i) must return a scene table, got number" -- "$LIGHTCONE" render not_a_scene.lua --out out
+cat >"$WORK/no_frame.lua" <<'LUA'
+return {name = "no_frame", frames = 1, width = 8, height = 8}
+LUA
+expect_error no_frame "field 'frame' must be a function(i)" -- "$LIGHTCONE" render no_frame.lua --out out
+cat >"$WORK/bad_name.lua" <<'LUA'
+return {name = "../evil", frames = 1, width = 8, height = 8, frame = function(i) return {} end}
+LUA
+expect_error bad_name "name '../evil' may only use letters, digits" -- "$LIGHTCONE" render bad_name.lua --out out
+touch not_a_dir
+expect_error out_is_file "--out not_a_dir: cannot create the output directory" -- "$LIGHTCONE" render ok.lua --out not_a_dir
+
+[ ! -e out ] || [ -z "$(ls -A out)" ] || fail "failed renders left files in out/: $(ls out)"
+e2e_end
