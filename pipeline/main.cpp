@@ -11,6 +11,7 @@
 #include "geodesic_command.hpp"
 #include "inspect_command.hpp"
 #include "render_command.hpp"
+#include "starfield_command.hpp"
 #include "trace_command.hpp"
 
 int main(int argc, char** argv) {
@@ -49,6 +50,12 @@ int main(int argc, char** argv) {
   trace_cmd->add_option("--size", trace.size, "Image size WxH instead of the shot's");
   trace_cmd->add_option("--scale", trace.scale, "Scale the image size by S");
 
+  lc::StarfieldCommand starfield;
+  auto* starfield_cmd = app.add_subcommand("starfield", "Write the procedural star field as an equirectangular PNG");
+  starfield_cmd->add_option("-o,--output", starfield.output, "PNG file to write")->required();
+  starfield_cmd->add_option("--width", starfield.width, "Width in pixels (height is half)");
+  starfield_cmd->add_option("--seed", starfield.seed, "Catalogue seed");
+
   lc::BenchCommand bench;
   auto* bench_cmd = app.add_subcommand("bench", "Measure rays per second on fixed scenes, one thread and all threads");
   bench_cmd->add_option("--size", bench.size, "Rays per side of the camera grid")->check(CLI::Range(1, 4096));
@@ -67,6 +74,7 @@ int main(int argc, char** argv) {
     if (*render_cmd) return lc::run_render(render);
     if (*inspect_cmd) return lc::run_inspect(inspect);
     if (*trace_cmd) return lc::run_trace(trace);
+    if (*starfield_cmd) return lc::run_starfield(starfield);
     if (*bench_cmd) return lc::run_bench(bench);
   } catch (const std::exception& e) {
     fmt::print(stderr, "lightcone: error: {}\n", e.what());

@@ -34,7 +34,7 @@ struct Sky {
   Color color(double theta, double phi) const {
     phi += spec.rotate * degree;
     phi -= two_pi * std::floor(phi / two_pi);
-    if (spec.kind == SkyKind::image) {
+    if (spec.kind != SkyKind::checker) {
       Color c;
       texture->sample(phi / two_pi, theta / pi, c.data());
       return c;

@@ -45,6 +45,18 @@ std::shared_ptr<const Texture> ShotResources::texture(const std::filesystem::pat
   return textures_.emplace(found, std::move(t)).first->second;
 }
 
+std::shared_ptr<const Texture> ShotResources::starfield(std::uint32_t seed, int width) {
+  const auto key = std::pair{seed, width};
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = starfields_.find(key); it != starfields_.end()) return it->second;
+  }
+  FrameImage img = render_starfield(width, width / 2, seed);
+  auto t = std::make_shared<const Texture>(Texture::from_pixels(img.width, img.height, std::move(img.rgb)));
+  std::lock_guard lock(mutex_);
+  return starfields_.emplace(key, std::move(t)).first->second;
+}
+
 std::vector<std::filesystem::path> ShotResources::files() const {
   std::lock_guard lock(mutex_);
   std::vector<std::filesystem::path> out;
@@ -99,6 +111,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
 
   if (fs.disk) sc.disk = Disk{*fs.disk};
   if (fs.sky.kind == SkyKind::image) sc.sky.texture = res.texture(fs.sky.image);
+  if (fs.sky.kind == SkyKind::stars) sc.sky.texture = res.starfield(fs.sky.seed, fs.sky.resolution);
   for (const SphereSpec& spec : fs.spheres) {
     Sphere sp{spec, nullptr, {}, {}};
     if (spec.worldline) {

@@ -23,6 +23,8 @@ class ShotResources {
   explicit ShotResources(std::vector<std::filesystem::path> asset_dirs = {});
   std::shared_ptr<const Worldline> worldline(const WorldlineSpec& spec);
   std::shared_ptr<const Texture> texture(const std::filesystem::path& file);
+  // The procedural star field (render_starfield), made once per seed and size.
+  std::shared_ptr<const Texture> starfield(std::uint32_t seed, int width);
   // Every file loaded (textures), for hashing a shot's inputs.
   std::vector<std::filesystem::path> files() const;
 
@@ -31,6 +33,7 @@ class ShotResources {
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<const Worldline>> worldlines_;
   std::map<std::filesystem::path, std::shared_ptr<const Texture>> textures_;
+  std::map<std::pair<std::uint32_t, int>, std::shared_ptr<const Texture>> starfields_;
 };
 
 // Throws std::invalid_argument for a scene that cannot exist (an observer

@@ -5,6 +5,7 @@
 // Building a renderable Scene from it is render/scene.hpp's job.
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -57,7 +58,7 @@ struct DiskSpec {
   Color color_a = {1.0f, 0.55f, 0.15f}, color_b = {0.35f, 0.12f, 0.03f};
 };
 
-enum class SkyKind { checker, image };
+enum class SkyKind { checker, image, stars };
 
 // The sky at infinity, looked up by the direction a ray escapes in:
 // longitude phi = atan2(y, x), colatitude theta from +z.
@@ -66,6 +67,8 @@ struct SkySpec {
   int rows = 18, columns = 36;  // checker cells in theta and phi
   Color color_a = {0.6f, 0.6f, 0.65f}, color_b = {0.05f, 0.05f, 0.08f};
   std::filesystem::path image;  // equirectangular
+  std::uint32_t seed = 1;       // procedural star field: catalogue seed ...
+  int resolution = 2048;        // ... and width of its equirectangular texture
   double rotate = 0.0;          // degrees added to the longitude
 };
 

@@ -80,7 +80,10 @@ std::string to_json(const FrameScene& fs, int frame) {
         color(fs.disk->color_b));
   else
     out += "\"disk\": null, ";
-  if (fs.sky.kind == SkyKind::image)
+  if (fs.sky.kind == SkyKind::stars)
+    out += fmt::format("\"sky\": {{\"kind\": \"stars\", \"seed\": {}, \"resolution\": {}, \"rotate\": {}}}, ",
+                       fs.sky.seed, fs.sky.resolution, num(fs.sky.rotate));
+  else if (fs.sky.kind == SkyKind::image)
     out += fmt::format("\"sky\": {{\"kind\": \"image\", \"file\": {}, \"rotate\": {}}}, ", quoted(fs.sky.image.string()),
                        num(fs.sky.rotate));
   else

@@ -68,6 +68,7 @@ LC_CONSTRUCTOR(camera, validate_camera)
 LC_CONSTRUCTOR(disk, validate_disk)
 LC_CONSTRUCTOR(sky_checker, validate_sky)
 LC_CONSTRUCTOR(sky_image, validate_sky)
+LC_CONSTRUCTOR(sky_stars, validate_sky)
 LC_CONSTRUCTOR(worldline, validate_worldline)
 LC_CONSTRUCTOR(sphere, validate_sphere)
 LC_CONSTRUCTOR(static_observer, validate_observer)
@@ -83,7 +84,7 @@ void install_engine_api(lua::Sandbox& sandbox) {
   const luaL_Reg functions[] = {
       {"kerr", l_kerr},           {"dihole", l_dihole},           {"minkowski", l_minkowski},
       {"camera", l_camera},       {"disk", l_disk},               {"sky_checker", l_sky_checker},
-      {"sky_image", l_sky_image}, {"worldline", l_worldline},     {"sphere", l_sphere},
+      {"sky_image", l_sky_image}, {"sky_stars", l_sky_stars}, {"worldline", l_worldline},     {"sphere", l_sphere},
       {"static_observer", l_static_observer}, {"zamo", l_zamo},   {"free_fall", l_free_fall},
       {nullptr, nullptr}};
   for (const luaL_Reg* f = functions; f->name; ++f) {

@@ -137,8 +137,12 @@ SkySpec read_sky(TableReader& t) {
     s.kind = SkyKind::image;
     s.image = t.string("file");
     if (s.image.empty()) fail(t, "file must name an image");
+  } else if (k == "sky_stars") {
+    s.kind = SkyKind::stars;
+    s.seed = static_cast<std::uint32_t>(count(t, "seed", 1, 0, 2147483647));
+    s.resolution = count(t, "resolution", s.resolution, 64, 16384);
   } else {
-    fail(t, "expected a value made by lc.sky_checker{...}, lc.sky_image{...} or lc.starfield{...}");
+    fail(t, "expected a value made by lc.sky_checker{...}, lc.sky_stars{...}, lc.sky_image{...} or lc.starfield{...}");
   }
   s.rotate = t.number_or("rotate", 0.0);
   t.finish();

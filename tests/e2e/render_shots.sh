@@ -48,4 +48,19 @@ grep -q "hit horizon" trace.log || fail "centre pixel should see the horizon: $(
 [ "$(wc -l <ray.csv)" -gt 10 ] || fail "trace CSV too short"
 # The path starts at the observer (BL r = 30) and ends near the horizon.
 awk -F, 'NR == 2 && ($3 < 29.999 || $3 > 30.001) { exit 1 }' ray.csv || fail "trace starts at r = $(sed -n 2p ray.csv)"
+# The shipped star field is the project's own: regenerating it gives the same bytes.
+"$LIGHTCONE" starfield -o stars.png 2>/dev/null || fail "starfield"
+cmp -s stars.png "$SRC/shots/textures/starfield.png" || fail "starfield.png is not what 'lightcone starfield' makes"
+
+# Both star skies render: the shipped image (looked up in shots/) and the procedural one.
+cat >skies.lua <<'LUA'
+local lc = require "lightcone"
+return {name = "skies", frames = 2, width = 16, height = 8,
+  frame = function(i)
+    return {spacetime = lc.kerr{mass = 1}, observer = lc.static_observer{r = 20, theta = 90, phi = 0},
+            sky = i == 0 and lc.starfield{rotate = 90} or lc.sky_stars{seed = 7, resolution = 256}}
+  end}
+LUA
+"$LIGHTCONE" render skies.lua --out skies 2>skies.log || fail "star skies: $(cat skies.log)"
+[ -s skies/skies.0000.png ] && [ -s skies/skies.0001.png ] || fail "star sky frames missing"
 e2e_end

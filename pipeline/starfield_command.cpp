@@ -1,0 +1,29 @@
+#include "starfield_command.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "image/image.hpp"
+
+namespace lc {
+
+int run_starfield(const StarfieldCommand& cmd) {
+  if (cmd.width < 64 || cmd.width > 16384 || cmd.width % 2 != 0)
+    throw std::invalid_argument(fmt::format("--width {}: must be even, between 64 and 16384", cmd.width));
+  // Written beside the target and renamed, like every output.
+  std::filesystem::path temp = cmd.output;
+  temp += ".tmp-starfield";
+  try {
+    make_starfield(temp, cmd.width, cmd.width / 2, cmd.seed);
+    std::filesystem::rename(temp, cmd.output);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(temp, ec);
+    throw;
+  }
+  fmt::print(stderr, "starfield: {}x{} (seed {}) -> {}\n", cmd.width, cmd.width / 2, cmd.seed, cmd.output.string());
+  return 0;
+}
+
+}  // namespace lc
