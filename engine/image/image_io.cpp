@@ -29,9 +29,10 @@ namespace fs = std::filesystem;
   throw std::runtime_error(std::string(what) + " '" + path.string() + "': " + reason);
 }
 
-// OIIO's error text, trimmed, never empty.
+// OIIO's error text on one line (it stacks messages line by line), never empty.
 std::string oiio_reason(std::string msg) {
   while (!msg.empty() && std::isspace(static_cast<unsigned char>(msg.back()))) msg.pop_back();
+  for (std::size_t at = msg.find('\n'); at != std::string::npos; at = msg.find('\n', at)) msg.replace(at, 1, "; ");
   return msg.empty() ? std::string("unknown OpenImageIO error") : msg;
 }
 
@@ -76,11 +77,12 @@ void check_frame(const FrameImage& im, bool with_layers, std::string_view what, 
 // header attributes describe the pixel layout.
 void check_metadata(const ImageMetadata& metadata, std::string_view what, const fs::path& path) {
   static constexpr std::array<std::string_view, 14> reserved = {
-      "channels", "chunkcount",         "compression",        "datawindow", "displaywindow", "lineorder", "name",
-      "tiles",    "pixelaspectratio", "screenwindowcenter", "screenwindowwidth", "type",   "version",   "view"};
+      "channels", "chunkcount",       "compression",        "datawindow",        "displaywindow", "lineorder", "name",
+      "tiles",    "pixelaspectratio", "screenwindowcenter", "screenwindowwidth", "type",          "version",   "view"};
   for (const auto& [key, value] : metadata) {
     if (key.empty()) fail(what, path, "metadata key is empty");
-    if (key.find(':') != std::string::npos || std::find(reserved.begin(), reserved.end(), lowercase(key)) != reserved.end())
+    if (key.find(':') != std::string::npos ||
+        std::find(reserved.begin(), reserved.end(), lowercase(key)) != reserved.end())
       fail(what, path, "metadata key '" + key + "' is reserved for the file format");
   }
 }
@@ -152,15 +154,19 @@ Transfer transfer_of(const OIIO::ImageSpec& spec) {
 // Stored value (normalised to [0, 1] for integer formats) -> linear.
 double decode(const Transfer& t, double v) {
   switch (t.kind) {
-    case Transfer::linear: return v;
-    case Transfer::srgb: return srgb_to_linear(v);
-    case Transfer::gamma: return v > 0.0 ? std::pow(v, t.exponent) : 0.0;
+    case Transfer::linear:
+      return v;
+    case Transfer::srgb:
+      return srgb_to_linear(v);
+    case Transfer::gamma:
+      return v > 0.0 ? std::pow(v, t.exponent) : 0.0;
   }
   return v;
 }
 
 }  // namespace
 
+// Validates, names the channels, interleaves RGB and layers, writes FLOAT zip.
 void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata) {
   constexpr std::string_view what = "cannot write EXR";
   check_frame(image, true, what, path);
@@ -174,6 +180,10 @@ void write_exr(const std::filesystem::path& path, const FrameImage& image, const
   spec.alpha_channel = -1;
   spec.z_channel = -1;
   spec.attribute("compression", "zip");
+  // OIIO stamps the current time into the header unless told otherwise (an
+  // empty DateTime writes none): the same frame then gives the same bytes,
+  // whichever run or node wrote it.  A caller may still pass a DateTime.
+  spec.attribute("DateTime", "");
   for (const auto& [key, value] : metadata) spec.attribute(key, value);
 
   // OIIO writes interleaved pixels; layers are planar in FrameImage.
@@ -189,6 +199,7 @@ void write_exr(const std::filesystem::path& path, const FrameImage& image, const
   write_with("openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data(), what, path);
 }
 
+// Encodes to 8-bit sRGB codes here (srgb.hpp), so OIIO only stores bytes.
 void write_png(const std::filesystem::path& path, const FrameImage& image) {
   constexpr std::string_view what = "cannot write PNG";
   check_frame(image, false, what, path);
@@ -199,6 +210,7 @@ void write_png(const std::filesystem::path& path, const FrameImage& image) {
   write_with("png", spec, OIIO::TypeDesc::UINT8, bytes.data(), what, path);
 }
 
+// Reads every channel as float, then splits R, G, B from the layers by name.
 FrameImage read_exr(const std::filesystem::path& path) {
   constexpr std::string_view what = "cannot read EXR";
   std::unique_ptr<OIIO::ImageInput> in = open_exr(path, what);
@@ -237,6 +249,7 @@ FrameImage read_exr(const std::filesystem::path& path) {
   return image;
 }
 
+// Only the header is read, no pixels.
 ImageMetadata read_exr_metadata(const std::filesystem::path& path) {
   std::unique_ptr<OIIO::ImageInput> in = open_exr(path, "cannot read EXR");
   ImageMetadata metadata;
@@ -245,8 +258,13 @@ ImageMetadata read_exr_metadata(const std::filesystem::path& path) {
   return metadata;
 }
 
-FrameImage read_image_linear(const std::filesystem::path& path) { return detail::read_linear_rgb(path, "cannot read image"); }
+// The shared reader, with messages that say "image".
+FrameImage read_image_linear(const std::filesystem::path& path) {
+  return detail::read_linear_rgb(path, "cannot read image");
+}
 
+// Opens by content (any extension), checks the size before allocating,
+// reads at most four channels and converts them to linear RGB.
 FrameImage detail::read_linear_rgb(const std::filesystem::path& path, const char* what) {
   check_readable(path, what);
   // Ask for alpha as stored so it can be applied in linear light below

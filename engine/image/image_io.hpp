@@ -27,8 +27,9 @@ using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 // Refuses an inconsistent image (sizes, empty or duplicate layer names, a
 // layer called R, G or B) and metadata keys that would steer the writer
 // instead of annotating the file (containing ':', or EXR's own header
-// names such as "compression").  On a failure after the file was created the
-// partial file is removed.
+// names such as "compression").  No timestamp is added, so equal frames and
+// metadata give byte-identical files.  On a failure after the file was
+// created the partial file is removed.
 void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata = {});
 
 // Writes the RGB of `image` as an 8-bit sRGB PNG (linear -> sRGB curve,

@@ -11,14 +11,10 @@ namespace lc {
 
 // Linear value -> sRGB-encoded value, both nominally in [0, 1]; values
 // outside that range follow the curve's formula (no clamping here).
-inline double linear_to_srgb(double c) {
-  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-}
+inline double linear_to_srgb(double c) { return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
 
 // sRGB-encoded value in [0, 1] -> linear value; inverse of linear_to_srgb.
-inline double srgb_to_linear(double s) {
-  return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
-}
+inline double srgb_to_linear(double s) { return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4); }
 
 // Linear value -> 8-bit sRGB code: transfer curve, clamp to [0, 255], round
 // to nearest.  NaN maps to 0 so a bad pixel shows black, not a random code.

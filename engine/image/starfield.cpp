@@ -22,7 +22,7 @@ constexpr double faintest_peak = 0.03;           // linear, at the star's intrin
 constexpr double brightest_peak = 6.0;
 // N(brighter than P) ∝ P^-1.5: stars spread uniformly through space.
 constexpr double brightness_slope = 1.5;
-constexpr double band_tilt = 60.0 * degree;        // band pole from +z, so the band is not the equator
+constexpr double band_tilt = 60.0 * degree;          // band pole from +z, so the band is not the equator
 constexpr double band_star_latitude = 7.0 * degree;  // Gaussian sigma of band stars' latitude
 constexpr double band_glow_width = 8.0 * degree;
 constexpr double band_glow = 0.008;  // linear, at the centre line before mottling; sRGB code ~ 23
@@ -204,7 +204,7 @@ void paint_background(FrameImage& image, std::uint32_t seed) {
   for (int j = 0; j < image.height; ++j)
     for (int i = 0; i < image.width; ++i) {
       const Dir d = dirs.at(i, j);
-      const double s = dot(d, band.pole);  // sine of the band latitude
+      const double s = dot(d, band.pole);                                // sine of the band latitude
       const double c2 = std::max(0.0, 2.0 - 2.0 * dot(d, band.centre));  // chord² to the bulge
       double glow = band_glow * std::exp(-s * s / (2.0 * band_glow_width * band_glow_width)) +
                     bulge_glow * std::exp(-c2 / (2.0 * bulge_width * bulge_width));
@@ -218,12 +218,23 @@ void paint_background(FrameImage& image, std::uint32_t seed) {
       }
       float* px = &image.rgb[3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(image.width) +
                                   static_cast<std::size_t>(i))];
-      for (int k = 0; k < 3; ++k) px[k] = background[static_cast<std::size_t>(k)] + static_cast<float>(glow * glow_colour[static_cast<std::size_t>(k)]);
+      for (int k = 0; k < 3; ++k)
+        px[k] = background[static_cast<std::size_t>(k)] +
+                static_cast<float>(glow * glow_colour[static_cast<std::size_t>(k)]);
     }
+}
+
+// Why width x height is not a star field size, or "" when it is one.
+std::string size_problem(int width, int height) {
+  if (width > 0 && height > 0 && width <= max_image_side && height <= max_image_side) return {};
+  return "bad size " + std::to_string(width) + " x " + std::to_string(height) + " (1 to " +
+         std::to_string(max_image_side) + " a side)";
 }
 
 }  // namespace
 
+// Field stars first, then band stars; the order of draws is part of the
+// seed's meaning, so changing it changes every shipped sky.
 std::vector<Star> starfield_catalogue(std::uint32_t seed) {
   const Band band = band_of(seed);
   Draw draw(seed, star_stream);
@@ -243,8 +254,12 @@ std::vector<Star> starfield_catalogue(std::uint32_t seed) {
   return stars;
 }
 
+// Splats each star over the texels of its cap only (bounded in θ, and in φ
+// by the cap's longitude half-width), with the exact angular distance.
 void add_stars(FrameImage& image, std::span<const Star> stars) {
   const int W = image.width, H = image.height;
+  if (W <= 0 || H <= 0 || image.rgb.size() != 3 * static_cast<std::size_t>(W) * static_cast<std::size_t>(H))
+    throw std::invalid_argument("add_stars: image buffer does not match its size");
   const double pitch = pi / H, phi_pitch = two_pi / W;
   // A texel integrates light over its area: blurring by about half a texel
   // keeps a star that is smaller than a texel from vanishing between the
@@ -279,16 +294,17 @@ void add_stars(FrameImage& image, std::span<const Star> stars) {
         // Chord² between directions ≈ angle² for the small angles that matter.
         const double chord2 = std::max(0.0, 2.0 - 2.0 * dot(dirs.at(i, j), s));
         const double v = peak * std::exp(-chord2 / (2.0 * sigma2));
-        float* px = &image.rgb[3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(W) + static_cast<std::size_t>(i))];
+        float* px =
+            &image.rgb[3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(W) + static_cast<std::size_t>(i))];
         for (int c = 0; c < 3; ++c) px[c] += static_cast<float>(v * star.tint[static_cast<std::size_t>(c)]);
       }
   }
 }
 
+// Background and band, then the catalogue on top.
 FrameImage render_starfield(int width, int height, std::uint32_t seed) {
-  if (width <= 0 || height <= 0 || width > max_image_side || height > max_image_side)
-    throw std::runtime_error("star field: bad size " + std::to_string(width) + " x " + std::to_string(height) +
-                             " (1 to " + std::to_string(max_image_side) + " a side)");
+  if (const std::string problem = size_problem(width, height); !problem.empty())
+    throw std::runtime_error("star field: " + problem);
   FrameImage image;
   image.width = width;
   image.height = height;
@@ -299,14 +315,11 @@ FrameImage render_starfield(int width, int height, std::uint32_t seed) {
   return image;
 }
 
+// Checks the size first so the message names the file.
 void make_starfield(const std::filesystem::path& path, int width, int height, std::uint32_t seed) {
-  FrameImage image;
-  try {
-    image = render_starfield(width, height, seed);
-  } catch (const std::runtime_error& e) {
-    throw std::runtime_error("cannot make star field '" + path.string() + "': " + e.what());
-  }
-  write_png(path, image);
+  if (const std::string problem = size_problem(width, height); !problem.empty())
+    throw std::runtime_error("cannot make star field '" + path.string() + "': " + problem);
+  write_png(path, render_starfield(width, height, seed));
 }
 
 }  // namespace lc

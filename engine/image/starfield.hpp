@@ -33,13 +33,15 @@ struct Star {
   std::array<float, 3> tint;        // colour factor, luminance about 1
 };
 
-// The seed's star catalogue: same seed, same stars, on every platform
-// (std::mt19937_64 plus this file's own conversions, no std distributions).
+// The seed's star catalogue: same seed, same stars.  The random draws are
+// the same on every platform (std::mt19937_64 plus this file's own
+// conversions, no std distributions); libm may still differ in a last bit.
 std::vector<Star> starfield_catalogue(std::uint32_t seed);
 
 // Adds `stars` to the linear RGB of `image` (any size).  Each star is
 // widened by the pixel footprint (sigma_pix = half a texel in θ) with its
-// flux kept.  Assumes a valid image (rgb.size() == 3 * width * height).
+// flux kept.  Throws std::invalid_argument for an empty image or one
+// whose rgb.size() != 3 * width * height.
 void add_stars(FrameImage& image, std::span<const Star> stars);
 
 // The whole sky for `seed` at width x height, linear RGB, no layers.

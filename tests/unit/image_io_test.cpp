@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -33,9 +34,8 @@ using lc::Texture;
 class ScratchDir {
  public:
   ScratchDir() {
-    path_ = fs::temp_directory_path() /
-            ("lightcone_image_" + std::to_string(::getpid()) + "_" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    path_ = fs::temp_directory_path() / ("lightcone_image_" + std::to_string(::getpid()) + "_" +
+                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -70,6 +70,11 @@ std::string head_bytes(const fs::path& p, std::size_t n) {
   in.read(s.data(), static_cast<std::streamsize>(n));
   s.resize(static_cast<std::size_t>(in.gcount()));
   return s;
+}
+
+std::string file_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 const std::string kExrMagic("\x76\x2f\x31\x01", 4);
@@ -117,8 +122,13 @@ TEST(ImageIo, ExrRoundTripIsBitExactWithLayersAndMetadata) {
   im.width = w;
   im.height = h;
   // Values half floats or lossy compression would change, and special ones.
-  const std::array<float, 8> special = {0.1f,   -0.0f, 1e-40f /* denormal */, 3.0e38f, -2.5f,
-                                        1.0f / 3.0f, std::numeric_limits<float>::infinity(),
+  const std::array<float, 8> special = {0.1f,
+                                        -0.0f,
+                                        1e-40f /* denormal */,
+                                        3.0e38f,
+                                        -2.5f,
+                                        1.0f / 3.0f,
+                                        std::numeric_limits<float>::infinity(),
                                         std::numeric_limits<float>::quiet_NaN()};
   for (int k = 0; k < 3 * n; ++k)
     im.rgb.push_back(k < 8 ? special[static_cast<std::size_t>(k)] : 0.001f * static_cast<float>(k * k) + 1e-7f);
@@ -156,6 +166,12 @@ TEST(ImageIo, ExrRoundTripIsBitExactWithLayersAndMetadata) {
   EXPECT_EQ(value_of("lightcone/shot"), "kerr_disk");
   EXPECT_EQ(value_of("lightcone/frame"), "12");
   EXPECT_EQ(value_of("compression"), "zip");
+  EXPECT_EQ(value_of("DateTime"), "<missing>");  // no timestamp: reproducible bytes
+
+  // The same frame written again is the same file.
+  const fs::path again = dir / "frame.0001.exr.again";
+  lc::write_exr(again, im, {{"lightcone/shot", "kerr_disk"}, {"lightcone/frame", "12"}});
+  EXPECT_EQ(file_bytes(again), file_bytes(file));
 
   // Every channel stored as 32-bit float, straight from the file's header.
   auto in = OIIO::ImageInput::open(file.string());
@@ -189,9 +205,10 @@ TEST(ImageIo, ExrRefusesInconsistentFramesAndReservedMetadata) {
   FrameImage empty;
   EXPECT_NE(error_of([&] { lc::write_exr(file, empty); }).find("zero-size"), std::string::npos);
 
-  EXPECT_NE(error_of([&] { lc::write_exr(file, im, {{"compression", "dwaa"}}); }).find("reserved"),
-            std::string::npos);
-  EXPECT_NE(error_of([&] { lc::write_exr(file, im, {{"openexr:lineOrder", "x"}}); }).find("reserved"),
+  EXPECT_NE(error_of([&] { lc::write_exr(file, im, {{"compression", "dwaa"}}); }).find("reserved"), std::string::npos);
+  EXPECT_NE(error_of([&] {
+              lc::write_exr(file, im, {{"openexr:lineOrder", "x"}});
+            }).find("reserved"),
             std::string::npos);
   EXPECT_FALSE(fs::exists(file));
 }
@@ -230,8 +247,8 @@ TEST(ImageIo, PngStoresSrgbCodes) {
   FrameImage im;
   im.width = 3;
   im.height = 2;
-  im.rgb = {0.214f, 0.0f, 1.0f,  /**/ 5.0f, -0.5f, 0.5f, /**/ 0.001f, 0.02f, 0.9f,
-            0.0f,   0.0f, 0.0f, /**/ 1.0f, 1.0f, 1.0f,   /**/ 0.214f, 0.214f, 0.214f};
+  im.rgb = {0.214f, 0.0f, 1.0f, /**/ 5.0f, -0.5f, 0.5f, /**/ 0.001f, 0.02f,  0.9f,
+            0.0f,   0.0f, 0.0f, /**/ 1.0f, 1.0f,  1.0f, /**/ 0.214f, 0.214f, 0.214f};
   im.layers = {{"hit.kind", std::vector<float>(6, 1.0f)}};  // ignored by PNG
   const fs::path file = dir / "frame.png";
   lc::write_png(file, im);
@@ -393,8 +410,8 @@ TEST(Texture, EightBitSrgbIsDecodedToLinear) {
   ScratchDir dir;
   const fs::path file = dir / "sky.png";
   // Codes 0, 64, 128, 255 in red; green and blue fixed.
-  const std::vector<float> values = {0.0f, 1.0f, 0.5f, 64 / 255.0f, 1.0f, 0.5f, 128 / 255.0f, 1.0f, 0.5f,
-                                     1.0f, 1.0f, 0.5f};
+  const std::vector<float> values = {0.0f,         1.0f, 0.5f, 64 / 255.0f, 1.0f, 0.5f,
+                                     128 / 255.0f, 1.0f, 0.5f, 1.0f,        1.0f, 0.5f};
   write_with_oiio(file, 4, 1, 3, OIIO::TypeDesc::UINT8, values);
   const Texture t = Texture::load(file);
   ASSERT_EQ(t.width(), 4);

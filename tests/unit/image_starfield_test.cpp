@@ -31,9 +31,8 @@ constexpr double kPi = std::numbers::pi;
 class ScratchDir {
  public:
   ScratchDir() {
-    path_ = fs::temp_directory_path() /
-            ("lightcone_starfield_" + std::to_string(::getpid()) + "_" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    path_ = fs::temp_directory_path() / ("lightcone_starfield_" + std::to_string(::getpid()) + "_" +
+                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -55,8 +54,8 @@ std::string file_bytes(const fs::path& p) {
 }
 
 double luminance(const FrameImage& im, int i, int j) {
-  const float* p = &im.rgb[3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(im.width) +
-                                static_cast<std::size_t>(i))];
+  const float* p =
+      &im.rgb[3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(im.width) + static_cast<std::size_t>(i))];
   return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
 }
 
@@ -181,12 +180,14 @@ TEST(Starfield, StarsAreRoundOnTheSphereAndWiderNearThePoles) {
     for (double theta0 : {kPi / 2, 0.45, 2.6}) {
       const double phi0 = 1.0;
       const Star star{{std::sin(theta0) * std::cos(phi0), std::sin(theta0) * std::sin(phi0), std::cos(theta0)},
-                      sigma, 1.0, {1.0f, 1.0f, 1.0f}};
+                      sigma,
+                      1.0,
+                      {1.0f, 1.0f, 1.0f}};
       FrameImage im = black(128, 64);
       lc::add_stars(im, std::span<const Star>(&star, 1));
       const std::array<double, 2> m = moments(im, theta0, phi0);
       EXPECT_NEAR(m[1] / m[0], 1.0, 0.05) << "theta " << theta0 << " sigma " << sigma;  // round on the sphere
-      EXPECT_NEAR(std::sqrt(m[0]), std::hypot(sigma, 0.5 * texel), 0.1 * sigma);          // flux-kept blur
+      EXPECT_NEAR(std::sqrt(m[0]), std::hypot(sigma, 0.5 * texel), 0.1 * sigma);        // flux-kept blur
 
       // In texels the footprint is 1 / sin θ wider along the row than at the
       // equator (the limit for stars much smaller than their distance θ
