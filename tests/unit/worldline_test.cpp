@@ -1,0 +1,89 @@
+// Worldlines integrated once per shot and sampled by proper or coordinate
+// time must agree with the reference solver sampled directly.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geodesic/geodesic_solver.hpp"
+#include "scene/worldline.hpp"
+
+namespace lc {
+namespace {
+
+WorldlineSpec dihole_oscillation() {
+  WorldlineSpec w;
+  w.spacetime = Dihole(0.4, 0.4, 1.0);
+  w.start = {0, 5, 0, 0};
+  w.duration = 100;
+  w.where = "test";
+  return w;
+}
+
+TEST(Worldline, InterpolationMatchesTheReferenceSolver) {
+  const Worldline w = Worldline::integrate(dihole_oscillation());
+  for (double tau : {0.0, 12.345, 39.3765, 77.7, 100.0}) {
+    GeodesicProblem pb;
+    pb.spacetime = Dihole(0.4, 0.4, 1.0);
+    pb.kind = CurveKind::timelike;
+    pb.x0 = {0, 5, 0, 0};
+    pb.u0 = static_cartesian_tetrad(Dihole(0.4, 0.4, 1.0), pb.x0).e[0];
+    pb.stop_parameter = StopParameter::proper_time;
+    pb.stop_value = std::max(tau, 1e-9);
+    const Vec4 ref = solve_geodesic(pb).samples.back().x;
+    const WorldlineEvent ev = w.at_proper_time(tau);
+    for (int m = 0; m < 4; ++m) EXPECT_NEAR(ev.x[m], ref[m], 1e-7) << "tau " << tau << " component " << m;
+    // The interpolated frame is orthonormal and its time leg is the 4-velocity.
+    const Mat4 g = Dihole(0.4, 0.4, 1.0).metric(ev.x);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        EXPECT_NEAR(contract(g, ev.frame.e[a], ev.frame.e[b]), a == b ? (a == 0 ? -1.0 : 1.0) : 0.0, 1e-10);
+  }
+}
+
+TEST(Worldline, CoordinateTimeLookupInvertsProperTime) {
+  const Worldline w = Worldline::integrate(dihole_oscillation());
+  for (double t : {0.5, 30.0, 55.297, 110.0}) {
+    const WorldlineEvent ev = w.at_coordinate_time(t);
+    EXPECT_NEAR(ev.x[0], t, 1e-9);
+    EXPECT_NEAR(w.at_proper_time(ev.tau).x[0], t, 1e-9);
+  }
+  // Half a period after release (T/2 = 55.297) the body is at x = -5.
+  EXPECT_NEAR(w.at_coordinate_time(110.594 / 2).x[1], -5.0, 1e-4);
+}
+
+TEST(Worldline, BeforeItsStartTheBodyRestsThere) {
+  const Worldline w = Worldline::integrate(dihole_oscillation());
+  const WorldlineEvent ev = w.at_coordinate_time(-20.0);
+  EXPECT_EQ(ev.x[0], -20.0);
+  EXPECT_EQ(ev.x[1], 5.0);
+  EXPECT_EQ(ev.tau, 0.0);
+}
+
+TEST(Worldline, SpacetimeTubeBoundsThePath) {
+  const Worldline w = Worldline::integrate(dihole_oscillation());
+  Vec3 lo, hi;
+  w.bounds(0.0, 110.594, lo, hi);  // a whole period: x spans [-5, 5]
+  EXPECT_LE(lo[0], -4.999);
+  EXPECT_GE(hi[0], 4.999);
+  w.bounds(0.0, 1.0, lo, hi);  // the first moment: still near x = 5
+  EXPECT_GT(lo[0], 4.5);
+}
+
+TEST(Worldline, RefusesACaptureBeforeItsEnd) {
+  WorldlineSpec w;
+  w.spacetime = Kerr(1.0, 0.0);
+  w.start = {0, 6, 1.5707963267948966, 0};
+  w.duration = 500;  // at rest at r = 6: falls in long before
+  w.where = "shot.lua:9";
+  try {
+    Worldline::integrate(w);
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("shot.lua:9: the worldline stopped early (horizon)"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace lc
