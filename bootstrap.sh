@@ -47,12 +47,16 @@ case "$job" in
     ctest --test-dir build --output-on-failure -j "$jobs"
     ;;
   demo)
+    for shot in shots/bench/kerr_disk.lua shots/bench/dihole_sphere.lua; do
+      ./build/pipeline/lightcone render "$shot" --out out/bench
+    done
+    ./build/pipeline/lightcone render shots/orbit_example.lua --out out/orbit_example --frames 0:95:8
     mkdir -p out/geodesics
     for spec in shots/geodesics/*.lua; do
       name=$(basename "$spec" .lua)
       ./build/pipeline/lightcone geodesic "$spec" -o "out/geodesics/$name.csv"
     done
     ./build/pipeline/lightcone bench --size 64 --repeats 1
-    echo "bootstrap: geodesics written to out/geodesics/ (CSV, see docs/geodesic.md)"
+    echo "bootstrap: frames in out/bench/ and out/orbit_example/ (EXR + PNG), geodesics in out/geodesics/ (CSV)"
     ;;
 esac

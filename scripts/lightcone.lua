@@ -24,6 +24,46 @@ function M.starfield(t)
   return engine.sky_image{file = "textures/starfield.png", rotate = t.rotate or 0}
 end
 
+-- Cartesian components and polar angles (radians) of a position table
+-- {x, y, z} or {r, theta, phi} (degrees).
+local function cartesian(p, what)
+  if type(p) ~= "table" then error("look_at: " .. what .. " must be a position table", 3) end
+  if p.r ~= nil then
+    local th, ph = math.rad(p.theta or 0), math.rad(p.phi or 0)
+    return {p.r * math.sin(th) * math.cos(ph), p.r * math.sin(th) * math.sin(ph), p.r * math.cos(th)}, th, ph
+  end
+  local x, y, z = p.x or 0, p.y or 0, p.z or 0
+  local r = math.sqrt(x * x + y * y + z * z)
+  return {x, y, z}, r > 0 and math.acos(z / r) or 0, math.atan2(y, x)
+end
+
+-- lc.look_at{from = pos, to = pos, fov = 60, roll = 0} -> a camera for an
+-- observer at `from` that aims at the point `to`.  Aims along the straight
+-- coordinate line (the flat-space picture: exact for M = 0; near a hole the
+-- light from `to` arrives bent, so the point may appear off-centre).  The
+-- result is lc.camera{fov, yaw, pitch, roll} relative to the default view
+-- "at the hole" (forward = -e_r, up = -e_theta, right = e_phi).
+function M.look_at(t)
+  if type(t) ~= "table" then error("look_at: expected look_at{from = ..., to = ...}", 2) end
+  for k in pairs(t) do
+    if k ~= "from" and k ~= "to" and k ~= "fov" and k ~= "roll" then
+      error("look_at: unknown field '" .. tostring(k) .. "' (it takes from, to, fov, roll)", 2)
+    end
+  end
+  local p, th, ph = cartesian(t.from, "from")
+  local q = cartesian(t.to, "to")
+  local d = {q[1] - p[1], q[2] - p[2], q[3] - p[3]}
+  local len = math.sqrt(d[1] ^ 2 + d[2] ^ 2 + d[3] ^ 2)
+  if len == 0 then error("look_at: from and to are the same point", 2) end
+  local er = {math.sin(th) * math.cos(ph), math.sin(th) * math.sin(ph), math.cos(th)}
+  local et = {math.cos(th) * math.cos(ph), math.cos(th) * math.sin(ph), -math.sin(th)}
+  local ep = {-math.sin(ph), math.cos(ph), 0}
+  local function dot(a, b) return a[1] * b[1] + a[2] * b[2] + a[3] * b[3] end
+  local f, r, u = -dot(d, er) / len, dot(d, ep) / len, -dot(d, et) / len
+  return engine.camera{fov = t.fov, yaw = math.deg(math.atan2(r, f)),
+                       pitch = math.deg(math.asin(math.max(-1, math.min(1, u)))), roll = t.roll}
+end
+
 -- Animation helpers: easing, keyframes, timelines, paths (pure Lua).
 for name, value in pairs(require "lightcone.animation") do
   assert(M[name] == nil, "lightcone: duplicate name " .. name)

@@ -21,6 +21,9 @@ good_kerr='spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_obser
 
 shot missing_texture "$good_kerr sky = lc.sky_image{file = 'nope.png'}"
 expect_error missing_texture "sky image 'nope.png' not found" -- "$LIGHTCONE" render missing_texture.lua --out out
+echo "not an image" >garbage.png
+shot garbage_texture "$good_kerr sky = lc.sky_image{file = 'garbage.png'}"
+expect_error garbage_texture "garbage.png" -- "$LIGHTCONE" render garbage_texture.lua --out out
 shot negative_radius "$good_kerr disk = lc.disk{inner = -1, outer = 5}"
 expect_error negative_radius "negative_radius.lua:5: disk: inner radius must be >= 0" -- "$LIGHTCONE" render negative_radius.lua --out out
 shot inverted_disk "$good_kerr disk = lc.disk{inner = 10, outer = 5}"
