@@ -147,6 +147,40 @@ WorldlineEvent Worldline::at_coordinate_time(double t) const {
   return at_proper_time(proper_time_at(t));
 }
 
+double Worldline::scene_time(const Vec4& x) const {
+  return std::visit([&](const auto& st) { return st.scene_from_trace(x)[0]; }, spacetime_);
+}
+
+std::vector<WorldlineEvent> Worldline::apocentres() const {
+  auto radius = [&](const Vec4& x) {
+    return std::visit(
+        [&](const auto& st) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(st)>, Kerr>)
+            return st.bl_radius(x[1], x[2], x[3]);
+          else
+            return std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+        },
+        spacetime_);
+  };
+  std::vector<WorldlineEvent> out;
+  for (std::size_t i = 1; i + 1 < samples_.size(); ++i) {
+    const double a = radius(samples_[i - 1].x), b = radius(samples_[i].x), c = radius(samples_[i + 1].x);
+    if (!(b > a && b >= c)) continue;
+    // Golden-section search for the maximum of r on the interpolant within
+    // the bracket [i-1, i+1] of samples.
+    double lo = (static_cast<double>(i) - 1) * dtau_, hi = (static_cast<double>(i) + 1) * dtau_;
+    for (int it = 0; it < 80 && hi - lo > 1e-12; ++it) {
+      const double m1 = lo + (hi - lo) * 0.381966011250105, m2 = lo + (hi - lo) * 0.618033988749895;
+      if (radius(at_proper_time(m1).x) < radius(at_proper_time(m2).x))
+        lo = m1;
+      else
+        hi = m2;
+    }
+    out.push_back(at_proper_time(0.5 * (lo + hi)));
+  }
+  return out;
+}
+
 void Worldline::bounds(double t0, double t1, Vec3& lo, Vec3& hi) const {
   if (t0 > t1) std::swap(t0, t1);
   const std::size_t i0 = static_cast<std::size_t>(proper_time_at(t0) / dtau_);

@@ -44,6 +44,15 @@ class Worldline {
 
   const Spacetime& spacetime() const { return spacetime_; }
 
+  // Events where the distance from the origin (Boyer–Lindquist r for Kerr,
+  // |x| otherwise) has a local maximum, in order: the turning points of an
+  // oscillation or the apocentres of an orbit, located by golden-section
+  // search on the interpolant (the maximum is flat: the time is good to
+  // ~sqrt(interpolation error), ~1e-6).  Shots time animation by them.
+  std::vector<WorldlineEvent> apocentres() const;
+  // Scene time (Boyer–Lindquist t for Kerr) of a trace-coordinate event.
+  double scene_time(const Vec4& x) const;
+
  private:
   struct Sample {
     Vec4 x, u;

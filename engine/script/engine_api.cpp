@@ -4,6 +4,8 @@
 
 #include "lua/table_reader.hpp"
 #include "script/scene_reader.hpp"
+#include "scene/worldline.hpp"
+#include "spacetime/scene_polar.hpp"
 #include "script/spacetime_reader.hpp"
 
 namespace lc {
@@ -59,6 +61,33 @@ void validate_worldline(lua::TableReader& t) { read_worldline(t); }
 void validate_sphere(lua::TableReader& t) { read_sphere(t, nullptr); }
 void validate_observer(lua::TableReader& t) { read_observer(t, nullptr); }
 
+// apocentres(w) -> array of {t = scene time, tau = proper time, r = radius}
+// where the worldline's distance from the origin peaks (turning points of an
+// oscillation).  Integrates the worldline (once per call).
+int l_apocentres(lua_State* L) {
+  return lua::protect(L, [](lua_State* L) {
+    const Worldline w = [&] {
+      lua::TableReader t(L, 1, "apocentres");
+      return Worldline::integrate(read_worldline(t));
+    }();
+    const std::vector<WorldlineEvent> events = w.apocentres();
+    lua_createtable(L, static_cast<int>(events.size()), 0);
+    for (std::size_t i = 0; i < events.size(); ++i) {
+      lua_createtable(L, 0, 3);
+      lua_pushnumber(L, w.scene_time(events[i].x));
+      lua_setfield(L, -2, "t");
+      lua_pushnumber(L, events[i].tau);
+      lua_setfield(L, -2, "tau");
+      double t_unused, r, phi_unused;
+      std::visit([&](const auto& st) { scene_polar(st, events[i].x, t_unused, r, phi_unused); }, w.spacetime());
+      lua_pushnumber(L, r);
+      lua_setfield(L, -2, "r");
+      lua_rawseti(L, -2, static_cast<int>(i + 1));
+    }
+    return 1;
+  });
+}
+
 #define LC_CONSTRUCTOR(name, validate) \
   int l_##name(lua_State* L) { return construct<validate>(L, #name); }
 LC_CONSTRUCTOR(kerr, validate_spacetime)
@@ -86,6 +115,7 @@ void install_engine_api(lua::Sandbox& sandbox) {
       {"camera", l_camera},       {"disk", l_disk},               {"sky_checker", l_sky_checker},
       {"sky_image", l_sky_image}, {"sky_stars", l_sky_stars}, {"worldline", l_worldline},     {"sphere", l_sphere},
       {"static_observer", l_static_observer}, {"zamo", l_zamo},   {"free_fall", l_free_fall},
+      {"apocentres", l_apocentres},
       {nullptr, nullptr}};
   for (const luaL_Reg* f = functions; f->name; ++f) {
     lua_pushcfunction(L, f->func);
