@@ -76,25 +76,20 @@ class Kerr {
     dx[2] = p[2] - f * L * ly;
     dx[3] = p[3] - f * L * lz;
     // Gradient of r (implicit differentiation of the defining quartic).
-    const double gr_common = r2 * r * den;
-    const double drx = X * gr_common, dry = Y * gr_common, drz = Z * (r2 + a2) * r * den;
+    const double r3den = r2 * r * den;
+    const double drx = X * r3den, dry = Y * r3den, drz = Z * (r2 + a2) * r * den;
     // f(r, z): partial derivatives, then chain rule.
     const double dfdr = 2.0 * M_ * r2 * (3.0 * a2 * Z * Z - r2 * r2) * den * den;
-    const double dfdz = -4.0 * M_ * r2 * r * a2 * Z * den * den;
-    const double dfx = dfdr * drx, dfy = dfdr * dry, dfz = dfdr * drz + dfdz;
-    // dL/dx^j = sum_i (d l_i/dx^j) p_i, l_x = (rX + aY) q, l_y = (rY - aX) q, l_z = Z/r.
-    const double two_r_q = 2.0 * r * q;
-    auto dL = [&](double drj, double dXj, double dYj, double dZj) {
-      const double dlx = (drj * X + r * dXj + a * dYj) * q - lx * two_r_q * drj;
-      const double dly = (drj * Y + r * dYj - a * dXj) * q - ly * two_r_q * drj;
-      const double dlz = dZj * inv_r - lz * inv_r * drj;
-      return dlx * p[1] + dly * p[2] + dlz * p[3];
-    };
-    const double half_L2 = 0.5 * L * L;
+    const double dfz_r = -4.0 * M_ * r2 * r * a2 * Z * den * den;
+    // dL/dx^j = sum_i (d l_i/dx^j) p_i = (dr/dx^j) A + B_j, where A collects
+    // every term through r and B_j the explicit x, y, z dependence of l.
+    const double A = q * (X * p[1] + Y * p[2]) - 2.0 * r * q * (lx * p[1] + ly * p[2]) - lz * inv_r * p[3];
+    const double Bx = q * (r * p[1] - a * p[2]), By = q * (r * p[2] + a * p[1]), Bz = p[3] * inv_r;
+    const double half_L2 = 0.5 * L * L, fL = f * L;
     dp[0] = 0.0;
-    dp[1] = dfx * half_L2 + f * L * dL(drx, 1.0, 0.0, 0.0);
-    dp[2] = dfy * half_L2 + f * L * dL(dry, 0.0, 1.0, 0.0);
-    dp[3] = dfz * half_L2 + f * L * dL(drz, 0.0, 0.0, 1.0);
+    dp[1] = dfdr * drx * half_L2 + fL * (drx * A + Bx);
+    dp[2] = dfdr * dry * half_L2 + fL * (dry * A + By);
+    dp[3] = (dfdr * drz + dfz_r) * half_L2 + fL * (drz * A + Bz);
   }
 
   // Captured: inside the capture radius (see constants.hpp).  Kerr–Schild point.
