@@ -56,7 +56,7 @@ case "$job" in
       name=$(basename "$spec" .lua)
       ./build/pipeline/lightcone geodesic "$spec" -o "out/geodesics/$name.csv"
     done
-    ./build/pipeline/lightcone bench --size 64 --repeats 1
+    ./build/pipeline/lightcone bench --repeats 1
     echo "bootstrap: frames in out/bench/ and out/orbit_example/ (EXR + PNG), geodesics in out/geodesics/ (CSV)"
     ;;
 esac

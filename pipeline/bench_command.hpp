@@ -1,13 +1,19 @@
 #pragma once
-// `lightcone bench`: rays per second on fixed scenes, one thread and all
-// threads.  Numbers go into issue notes and docs/performance.md.
+// `lightcone bench`: speed (rays per core-second, one thread and all) and
+// accuracy (against a tight-tolerance render) on the benchmark shots of
+// shots/bench/.  Numbers go into issue notes and docs/performance.md.
+
+#include <filesystem>
+#include <vector>
 
 namespace lc {
 
 struct BenchCommand {
-  int size = 128;      // rays per side of the fixed camera grid
-  int threads = 0;     // 0: every core
-  int repeats = 3;     // best of N (the machines are shared and noisy)
+  std::vector<std::filesystem::path> shots;  // default: shots/bench/kerr_disk.lua, dihole_sphere.lua
+  int threads = 0;                           // 0: every core
+  int repeats = 3;                           // best of N (the machines are shared and noisy)
+  double reference_tolerance = 1e-13;
+  double tolerance = 0.0;  // 0: the production default (constants.hpp)
 };
 
 int run_bench(const BenchCommand& cmd);

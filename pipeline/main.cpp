@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   geodesic->add_option("-o,--output", geo.output, "CSV file to write (default: standard output)");
 
   lc::RenderCommand render;
-  auto* render_cmd = app.add_subcommand("render", "Render frames of a shot to EXR and PNG with every core");
+  auto* render_cmd = app.add_subcommand(
+      "render", "Render frames of a shot to EXR and PNG with every core (or under mpirun, on every rank); resumes");
   render_cmd->add_option("shot", render.shot, "Shot script (docs/shots.md)")->required()->check(CLI::ExistingFile);
   render_cmd->add_option("-o,--out", render.out, "Output directory (created if missing)")->required();
   render_cmd->add_option("--frames", render.frames, "Frames A, A:B or A:B:STEP (inclusive, numbered from 0)");
@@ -34,7 +35,13 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--scale", render.scale, "Scale the image size by S (previews: 0.25)");
   render_cmd->add_option("--supersample", render.supersample, "N x N samples per pixel instead of the shot's");
   render_cmd->add_flag("--layers", render.layers, "Add data layers (hit.kind, hit.r, hit.phi, hit.t, hit.order) to the EXR");
-  render_cmd->add_option("--threads", render.threads, "Threads (default: every core)")->check(CLI::Range(1, 1024));
+  render_cmd->add_option("--threads", render.threads, "Render threads per process (default: every core; under mpirun the node's share)")
+      ->check(CLI::Range(1, 1024));
+  render_cmd->add_option("--stripes", render.stripes, "Working sets per frame: interleaved row stripes (default 64)");
+  render_cmd->add_option("--preview", render.preview, "Render every K-th stripe of every frame first, as DIR/preview/*.png");
+  render_cmd->add_flag("--force", render.force, "Resume even if the shot or settings changed: re-render the frames that differ");
+  render_cmd->add_option("--progress", render.progress,
+                         "Seconds between progress lines when stderr is not a terminal (default 5; 0: none)");
 
   lc::InspectCommand inspect;
   auto* inspect_cmd = app.add_subcommand("inspect", "Print the evaluated scene of each frame as JSON, without rendering");
@@ -57,11 +64,18 @@ int main(int argc, char** argv) {
   starfield_cmd->add_option("--seed", starfield.seed, "Catalogue seed");
 
   lc::BenchCommand bench;
-  auto* bench_cmd = app.add_subcommand("bench", "Measure rays per second on fixed scenes, one thread and all threads");
-  bench_cmd->add_option("--size", bench.size, "Rays per side of the camera grid")->check(CLI::Range(1, 4096));
+  auto* bench_cmd = app.add_subcommand(
+      "bench", "Measure rays per core-second and accuracy against a tight reference on the benchmark shots");
+  bench_cmd->add_option("--shot", bench.shots, "Benchmark shot (repeatable; default: shots/bench/*.lua)")
+      ->check(CLI::ExistingFile);
   bench_cmd->add_option("--threads", bench.threads, "Threads for the parallel run (default: every core)")
       ->check(CLI::Range(1, 1024));
   bench_cmd->add_option("--repeats", bench.repeats, "Best of this many runs")->check(CLI::Range(1, 100));
+  bench_cmd->add_option("--tolerance", bench.tolerance, "Integrator tolerance to measure (default: production)")
+      ->check(CLI::Range(1e-15, 1e-2));
+  bench_cmd->add_option("--reference-tolerance", bench.reference_tolerance,
+                        "Integrator tolerance of the reference render")
+      ->check(CLI::Range(1e-15, 1e-6));
 
   try {
     app.parse(argc, argv);

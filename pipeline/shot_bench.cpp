@@ -1,0 +1,88 @@
+#include "shot_bench.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <thread>
+#include <vector>
+
+#include "render/scene_builder.hpp"
+#include "scene/shot.hpp"
+
+namespace lc {
+
+namespace {
+
+struct NoPath {
+  void operator()(const RayStep&) const {}
+};
+
+// Pixel-centre samples of the whole image, rows handed out to `threads`.
+std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int threads, long* steps) {
+  std::vector<RaySample> out(static_cast<std::size_t>(width) * height);
+  std::atomic<int> next{0};
+  std::atomic<long> total{0};
+  auto worker = [&] {
+    long local = 0;
+    for (int j; (j = next.fetch_add(1)) < height;)
+      std::visit(
+          [&](const auto& sc) {
+            for (int i = 0; i < width; ++i) {
+              RaySample s = trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{});
+              local += s.steps;
+              out[static_cast<std::size_t>(j) * width + i] = s;
+            }
+          },
+          scene);
+    total += local;
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (steps) *steps = total;
+  return out;
+}
+
+double seconds_of(const std::function<void()>& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  f();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, int repeats, double tolerance,
+                           double reference_tolerance) {
+  Shot shot(file);
+  const ShotInfo& info = shot.info();
+  const FrameScene fs = shot.frame(0);
+  ShotResources resources(shot.asset_dirs());
+  ShotBenchResult r;
+  r.name = info.name;
+  r.width = info.width;
+  r.height = info.height;
+  r.rays = static_cast<long>(info.width) * info.height;
+  r.threads = threads;
+  RayOptions defaults;
+  if (tolerance > 0.0) defaults.control.rtol = defaults.control.atol = tolerance;
+  r.tolerance = defaults.control.rtol;
+  r.reference_tolerance = reference_tolerance;
+  const Scene scene = build_scene(fs, info.width, info.height, resources, defaults);
+  std::vector<RaySample> test;
+  r.seconds_one = r.seconds_all = 1e300;
+  for (int k = 0; k < repeats; ++k) {
+    r.seconds_one = std::min(r.seconds_one, seconds_of([&] { test = trace_all(scene, r.width, r.height, 1, &r.steps); }));
+    if (threads > 1)
+      r.seconds_all = std::min(r.seconds_all, seconds_of([&] { trace_all(scene, r.width, r.height, threads, nullptr); }));
+  }
+  RayOptions tight;
+  tight.control.rtol = tight.control.atol = reference_tolerance;
+  tight.control.h_min = 1e-14;
+  const Scene reference_scene = build_scene(fs, info.width, info.height, resources, tight);
+  const std::vector<RaySample> reference = trace_all(reference_scene, r.width, r.height, threads, nullptr);
+  r.accuracy = compare_samples(reference, test, fs);
+  return r;
+}
+
+}  // namespace lc

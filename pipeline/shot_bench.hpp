@@ -1,0 +1,30 @@
+#pragma once
+// One benchmark shot measured: rays per core-second with one thread and
+// with all, and accuracy against lightcone's own tight-tolerance render of
+// the same frame (docs/performance.md).
+
+#include <filesystem>
+#include <string>
+
+#include "render/accuracy.hpp"
+
+namespace lc {
+
+struct ShotBenchResult {
+  std::string name;
+  int width = 0, height = 0;
+  long rays = 0, steps = 0;
+  double seconds_one = 0.0, seconds_all = 0.0;  // best of the repeats
+  int threads = 1;
+  double tolerance = 0.0, reference_tolerance = 0.0;
+  AccuracyReport accuracy;
+};
+
+// Renders frame 0 of `shot` (one ray through each pixel centre, at the shot's
+// size) `repeats` times with one thread and with `threads`, then once at
+// `reference_tolerance`, and compares.
+// `tolerance` 0 means the production default.
+ShotBenchResult bench_shot(const std::filesystem::path& shot, int threads, int repeats, double tolerance,
+                           double reference_tolerance);
+
+}  // namespace lc
