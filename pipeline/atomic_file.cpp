@@ -42,4 +42,15 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
+void write_output(const std::optional<std::filesystem::path>& path, std::string_view data) {
+  if (path) {
+    AtomicFile out(*path);
+    out.write(data);
+    out.commit();
+    return;
+  }
+  if (std::fwrite(data.data(), 1, data.size(), stdout) != data.size() || std::fflush(stdout) != 0)
+    throw std::runtime_error(fmt::format("cannot write to standard output: {}", std::strerror(errno)));
+}
+
 }  // namespace lc

@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -33,5 +34,9 @@ class AtomicFile {
   std::FILE* file_ = nullptr;
   bool committed_ = false;
 };
+
+// Writes `data` atomically to `path`, or to standard output when no path is
+// given (for commands whose output defaults to stdout).
+void write_output(const std::optional<std::filesystem::path>& path, std::string_view data);
 
 }  // namespace lc

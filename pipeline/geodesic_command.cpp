@@ -48,14 +48,7 @@ int run_geodesic(const GeodesicCommand& cmd) {
   }
   // Everything is computed before anything is written: a failure leaves no
   // partial file.
-  if (cmd.output) {
-    AtomicFile out(*cmd.output);
-    out.write(csv);
-    out.commit();
-  } else {
-    std::fwrite(csv.data(), 1, csv.size(), stdout);
-    std::fflush(stdout);
-  }
+  write_output(cmd.output, csv);
   return 0;
 }
 

@@ -68,13 +68,7 @@ int run_trace(const TraceCommand& cmd) {
   path.steps = s.steps;
   std::string csv = geodesic_csv_header(false, false);
   append_geodesic_csv(csv, st_out, path, false, std::nullopt);
-  if (cmd.output) {
-    AtomicFile out(*cmd.output);
-    out.write(csv);
-    out.commit();
-  } else {
-    std::fwrite(csv.data(), 1, csv.size(), stdout);
-  }
+  write_output(cmd.output, csv);
   fmt::print(stderr,
              "trace: frame {} pixel {},{}: hit {} (hit.kind {}), stop reason {}, {} steps; r = {:.9g}, phi = {:.9g} rad, "
              "t = {:.9g}, equatorial crossings before it: {}; colour {:.4g} {:.4g} {:.4g}\n",

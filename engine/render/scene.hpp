@@ -175,6 +175,21 @@ RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
   const Vec4 p = backward_ray_momentum(sc.metric, sc.frame, n);
   RaySample out;
   int crossings = 0;
+  // Ends the ray at the event y (affine parameter lambda) on an object.
+  auto hit = [&](HitKind kind, const Color& color, const RayState& y, double lambda, RayResult& res) {
+    double t, r, phi;
+    scene_polar(st, {y[0], y[1], y[2], y[3]}, t, r, phi);
+    out.kind = kind;
+    out.color = color;
+    out.r = r;
+    out.phi = phi;
+    out.t = t - sc.observer_time;
+    out.order = crossings;
+    res.reason = StopReason::hit;
+    res.y = y;
+    res.lambda = lambda;
+    return true;
+  };
   auto visit = [&](const RayStep& step, RayResult& res) {
     on_step(step);
     const double l1 = step.t0 + step.h;
@@ -192,37 +207,15 @@ RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
         const RayState y = step.at(lz);
         double t, r, phi;
         scene_polar(st, {y[0], y[1], y[2], y[3]}, t, r, phi);
-        if (sc.disk && r >= sc.disk->spec.inner && r <= sc.disk->spec.outer) {
-          out.kind = HitKind::disk;
-          out.color = sc.disk->color(r, phi);
-          out.r = r;
-          out.phi = phi;
-          out.t = t - sc.observer_time;
-          out.order = crossings;
-          res.reason = StopReason::hit;
-          res.y = y;
-          res.lambda = lz;
-          return true;
-        }
+        if (sc.disk && r >= sc.disk->spec.inner && r <= sc.disk->spec.outer)
+          return hit(HitKind::disk, sc.disk->color(r, phi), y, lz, res);
         ++crossings;
       }
     }
     if (hit_sphere >= 0) {
       const RayState y = step.at(best);
       const Sphere& sp = sc.spheres[hit_sphere];
-      const Vec3 xi = detail::sphere_local(st, sp, {y[0], y[1], y[2], y[3]});
-      double t, r, phi;
-      scene_polar(st, {y[0], y[1], y[2], y[3]}, t, r, phi);
-      out.kind = HitKind::object;
-      out.color = sp.color(xi);
-      out.r = r;
-      out.phi = phi;
-      out.t = t - sc.observer_time;
-      out.order = crossings;
-      res.reason = StopReason::hit;
-      res.y = y;
-      res.lambda = best;
-      return true;
+      return hit(HitKind::object, sp.color(detail::sphere_local(st, sp, {y[0], y[1], y[2], y[3]})), y, best, res);
     }
     return false;
   };

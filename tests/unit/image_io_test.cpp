@@ -7,6 +7,8 @@
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+
+#include "scratch_dir.hpp"
 #include <unistd.h>
 
 #include <array>
@@ -29,27 +31,7 @@ namespace fs = std::filesystem;
 using lc::FrameImage;
 using lc::Texture;
 
-// A scratch directory under the system temp directory, removed at the end
-// of the test.
-class ScratchDir {
- public:
-  ScratchDir() {
-    path_ = fs::temp_directory_path() / ("lightcone_image_" + std::to_string(::getpid()) + "_" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
+using lc::test::ScratchDir;
 
 // The message of the std::runtime_error `f` throws; fails the test if none is.
 template <class F>

@@ -4,6 +4,8 @@
 // errors naming the file.
 
 #include <gtest/gtest.h>
+
+#include "scratch_dir.hpp"
 #include <unistd.h>
 
 #include <algorithm>
@@ -26,27 +28,7 @@ using lc::FrameImage;
 using lc::Star;
 constexpr double kPi = std::numbers::pi;
 
-// A scratch directory under the system temp directory, removed at the end
-// of the test.
-class ScratchDir {
- public:
-  ScratchDir() {
-    path_ = fs::temp_directory_path() / ("lightcone_starfield_" + std::to_string(::getpid()) + "_" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
+using lc::test::ScratchDir;
 
 std::string file_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

