@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "bench_command.hpp"
+#include "contact_sheet_command.hpp"
+#include "encode_command.hpp"
 #include "geodesic_command.hpp"
 #include "inspect_command.hpp"
 #include "render_command.hpp"
@@ -63,6 +65,31 @@ int main(int argc, char** argv) {
   starfield_cmd->add_option("--width", starfield.width, "Width in pixels (height is half)");
   starfield_cmd->add_option("--seed", starfield.seed, "Catalogue seed");
 
+  lc::EncodeCommand encode;
+  auto* encode_cmd = app.add_subcommand(
+      "encode", "Encode a shot's PNG frames to video (H.264 MP4 by default), join videos, or make a title card");
+  encode_cmd->add_option("inputs", encode.inputs, "Frame directory; with --concat, the videos to join in order");
+  encode_cmd->add_option("-o,--output", encode.output, "Video file to write (.mp4, .mov, .mkv, .webm)")->required();
+  encode_cmd->add_option("--fps", encode.fps, "Frames per second (default: the shot's if recorded, else 30)");
+  encode_cmd->add_option("--crf", encode.crf, "Constant quality: lower is better (default h264 18, hevc 22, vp9 24, av1 30)");
+  encode_cmd->add_option("--codec", encode.codec, "h264 (default), hevc, vp9, av1 or prores");
+  encode_cmd->add_option("--preset", encode.preset,
+                         "Speed/quality: x264/x265 preset (default medium), vp9/av1 speed number, prores profile");
+  encode_cmd->add_option("--shot", encode.shot, "The shot whose frames to encode when DIR holds several");
+  encode_cmd->add_flag("--concat", encode.concat, "Join the videos given, without re-encoding");
+  encode_cmd->add_option("--title", encode.title, "Make a title card: one line of text (repeat for more lines)");
+  encode_cmd->add_option("--size", encode.size, "Title card size WxH");
+  encode_cmd->add_option("--seconds", encode.seconds, "Title card length in seconds (default 3)");
+
+  lc::ContactSheetCommand sheet;
+  auto* sheet_cmd = app.add_subcommand("contact-sheet", "Write a PNG grid of frames picked evenly across a shot");
+  sheet_cmd->add_option("dir", sheet.dir, "Frame directory")->required();
+  sheet_cmd->add_option("-o,--output", sheet.output, "PNG file to write")->required();
+  sheet_cmd->add_option("--columns", sheet.columns, "Frames per row (default 4)");
+  sheet_cmd->add_option("--width", sheet.width, "Sheet width in pixels (default 1280)");
+  sheet_cmd->add_option("--count", sheet.count, "Frames shown at most (default 16)");
+  sheet_cmd->add_option("--shot", sheet.shot, "The shot when DIR holds several");
+
   lc::BenchCommand bench;
   auto* bench_cmd = app.add_subcommand(
       "bench", "Measure rays per core-second and accuracy against a tight reference on the benchmark shots");
@@ -89,6 +116,8 @@ int main(int argc, char** argv) {
     if (*inspect_cmd) return lc::run_inspect(inspect);
     if (*trace_cmd) return lc::run_trace(trace);
     if (*starfield_cmd) return lc::run_starfield(starfield);
+    if (*encode_cmd) return lc::run_encode(encode);
+    if (*sheet_cmd) return lc::run_contact_sheet(sheet);
     if (*bench_cmd) return lc::run_bench(bench);
   } catch (const std::exception& e) {
     fmt::print(stderr, "lightcone: error: {}\n", e.what());

@@ -1,0 +1,30 @@
+#include "contact_sheet_command.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "video/contact_sheet.hpp"
+#include "video/frame_sequence.hpp"
+
+namespace lc {
+
+int run_contact_sheet(const ContactSheetCommand& cmd) {
+  // Input: the parsed flags; output: the sheet, and a summary on stderr.
+  // Holes in the sequence are allowed here (a sheet is for looking at
+  // whatever exists); the labels show which frames are there.
+  std::string ext = cmd.output.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".png") throw std::invalid_argument(fmt::format("-o {}: a contact sheet is a PNG (name it .png)", cmd.output.string()));
+  const FrameSequence seq = select_frame_sequence(cmd.dir, cmd.shot);
+  const ContactSheetOptions o{cmd.columns, cmd.width, cmd.count};
+  write_contact_sheet(seq, o, cmd.output);
+  const std::size_t shown = pick_evenly(seq.files.size(), static_cast<std::size_t>(cmd.count)).size();
+  fmt::print(stderr, "contact-sheet: shot {}, {} of {} frames ({}-{}) -> {}\n", seq.shot, shown, seq.files.size(),
+             seq.frames.front(), seq.frames.back(), cmd.output.string());
+  return 0;
+}
+
+}  // namespace lc

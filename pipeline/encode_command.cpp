@@ -1,0 +1,186 @@
+#include "encode_command.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <regex>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "image/image_io.hpp"
+#include "video/concat_videos.hpp"
+#include "video/encode_sequence.hpp"
+#include "video/frame_sequence.hpp"
+#include "video/interrupt.hpp"
+#include "video/title_card.hpp"
+
+namespace lc {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A ProgressFn for the command line: a line on stderr about once a second
+// ("encode: 120/900 frames, 21.5 frames/s"), and the place where a Ctrl-C
+// turns into an exception between frames.
+ProgressFn progress_printer(const InterruptGuard& guard, const char* unit) {
+  const Clock::time_point start = Clock::now();
+  auto last = std::make_shared<Clock::time_point>(start);
+  return [&guard, unit, start, last](int done, int total) {
+    guard.check();
+    const Clock::time_point now = Clock::now();
+    if (now - *last < std::chrono::seconds(1) || done == total) return;
+    *last = now;
+    const double s = std::chrono::duration<double>(now - start).count();
+    fmt::print(stderr, "encode: {}/{} {}, {:.1f} {}/s\n", done, total, unit, done / s, unit);
+  };
+}
+
+// "1.2 MB" etc. for the summary.
+std::string size_text(const fs::path& p) {
+  std::error_code ec;
+  const double b = static_cast<double>(fs::file_size(p, ec));
+  if (ec) return "?";
+  if (b < 1e3) return fmt::format("{:.0f} B", b);
+  if (b < 1e6) return fmt::format("{:.1f} kB", b / 1e3);
+  return fmt::format("{:.1f} MB", b / 1e6);
+}
+
+// The frame rate: --fps, else the "lightcone/fps" attribute of the first
+// frame's EXR (if the renderer recorded it), else 30.  Returns the value and
+// where it came from, for the summary.
+std::pair<double, std::string> frame_rate(const EncodeCommand& cmd, const FrameSequence& seq) {
+  if (cmd.fps) return {*cmd.fps, "--fps"};
+  const fs::path exr = seq.files.front().parent_path() /
+                       (seq.files.front().stem().string() + ".exr");  // <shot>.<NNNN>.exr beside the PNG
+  std::error_code ec;
+  if (fs::exists(exr, ec)) {
+    try {
+      for (const auto& [key, value] : read_exr_metadata(exr))
+        if (key == "lightcone/fps") return {std::stod(value), fmt::format("the shot, from {}", exr.filename().string())};
+    } catch (const std::exception&) {
+      // An unreadable EXR is not the encoder's business: the PNGs are its input.
+    }
+  }
+  return {30.0, "default; --fps to change"};
+}
+
+// The codec settings shared by every mode that encodes.
+EncodeOptions encode_options(const EncodeCommand& cmd, double fps) {
+  EncodeOptions o;
+  o.fps = fps;
+  if (cmd.codec) o.codec = parse_codec(*cmd.codec);
+  o.crf = cmd.crf;
+  if (cmd.preset) o.preset = *cmd.preset;
+  validate(o);
+  return o;
+}
+
+// "crf 18, preset medium" (or the ProRes profile).
+std::string settings_text(const EncodeOptions& o) {
+  const std::string preset = o.preset.empty() ? default_preset(o.codec) : o.preset;
+  if (o.codec == Codec::prores) return fmt::format("prores profile {}", preset);
+  return fmt::format("{} crf {}, preset {}", codec_name(o.codec), o.crf.value_or(default_crf(o.codec)), preset);
+}
+
+// Mode DIR: the PNG frames of one shot to a video.
+int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
+  if (cmd.inputs.size() != 1)
+    throw std::invalid_argument(fmt::format("encode takes one frame directory, got {} arguments (joining videos needs --concat)",
+                                            cmd.inputs.size()));
+  if (!cmd.title.empty() || cmd.size || cmd.seconds)
+    throw std::invalid_argument("--size and --seconds go with --title (a title card), not with a frame directory");
+  const fs::path& dir = cmd.inputs.front();
+  if (cmd.codec) parse_codec(*cmd.codec);  // a bad flag is reported before the directory is scanned
+  const FrameSequence seq = select_frame_sequence(dir, cmd.shot);
+  require_complete(seq, dir);
+  const auto [fps, fps_source] = frame_rate(cmd, seq);
+  const EncodeOptions o = encode_options(cmd, fps);
+  container_for(cmd.output, o.codec);  // a wrong extension is reported before anything starts
+  const int step = frame_spacing(seq.frames).step;
+  fmt::print(stderr, "encode: shot {}, {} frames ({}-{}{}), {:g} fps ({}), {} -> {}\n", seq.shot, seq.frames.size(),
+             seq.frames.front(), seq.frames.back(), step == 1 ? "" : fmt::format(" every {}", step), fps, fps_source,
+             settings_text(o), cmd.output.string());
+  const Clock::time_point start = Clock::now();
+  const EncodeResult r = encode_sequence(seq.files, o, cmd.output, progress_printer(guard, "frames"));
+  const double s = std::chrono::duration<double>(Clock::now() - start).count();
+  if (r.encoded_width != r.width || r.encoded_height != r.height)
+    fmt::print(stderr, "encode: frames are {}x{}; padded to {}x{} by repeating the last {} ({} needs even sides)\n",
+               r.width, r.height, r.encoded_width, r.encoded_height,
+               r.width % 2 && r.height % 2 ? "column and row" : r.width % 2 ? "column" : "row",
+               o.codec == Codec::prores ? "yuv422p10" : "yuv420p");
+  fmt::print(stderr, "encode: done: {} frames {}x{}, {:.3f} s at {:g} fps -> {} ({}) in {:.1f} s, {:.1f} frames/s\n",
+             r.frames, r.encoded_width, r.encoded_height, r.seconds, fps, cmd.output.string(), size_text(cmd.output), s,
+             r.frames / std::max(s, 1e-9));
+  return 0;
+}
+
+// Mode --concat: videos joined without re-encoding.
+int encode_concat(const EncodeCommand& cmd, const InterruptGuard& guard) {
+  if (cmd.fps || cmd.crf || cmd.codec || cmd.preset || cmd.shot || !cmd.title.empty() || cmd.size || cmd.seconds)
+    throw std::invalid_argument(
+        "--concat copies the videos without re-encoding: --fps, --crf, --codec, --preset, --shot, --title, --size and "
+        "--seconds do not apply");
+  if (cmd.inputs.empty()) throw std::invalid_argument("--concat: name the videos to join (in order)");
+  std::error_code ec;
+  for (const fs::path& p : cmd.inputs)
+    if (fs::equivalent(p, cmd.output, ec))
+      throw std::invalid_argument(fmt::format("-o {}: is also one of the videos to join", cmd.output.string()));
+  const Clock::time_point start = Clock::now();
+  const ConcatResult r = concat_videos(cmd.inputs, cmd.output, progress_printer(guard, "videos"));
+  const double s = std::chrono::duration<double>(Clock::now() - start).count();
+  fmt::print(stderr, "encode: joined {} videos: {} frames {}x{}, {:.3f} s -> {} ({}) in {:.1f} s\n", cmd.inputs.size(),
+             r.frames, r.width, r.height, r.seconds, cmd.output.string(), size_text(cmd.output), s);
+  return 0;
+}
+
+// Mode --title: a title card clip.
+int encode_title(const EncodeCommand& cmd, const InterruptGuard& guard) {
+  if (!cmd.inputs.empty())
+    throw std::invalid_argument("--title makes a title card: give no frame directory or videos");
+  if (cmd.shot) throw std::invalid_argument("--shot selects frames; a title card has none");
+  if (!cmd.size) throw std::invalid_argument("--title needs --size WxH (the size of the film it goes with)");
+  std::smatch m;
+  static const std::regex wxh(R"(([0-9]{1,5})x([0-9]{1,5}))");
+  if (!std::regex_match(*cmd.size, m, wxh))
+    throw std::invalid_argument(fmt::format("--size {}: expected WxH, e.g. 1280x720", *cmd.size));
+  const int w = std::stoi(m[1]), h = std::stoi(m[2]);
+  if (w < 2 || h < 2 || w > 16384 || h > 16384)
+    throw std::invalid_argument(fmt::format("--size {}: each side must be 2 to 16384", *cmd.size));
+  const double fps = cmd.fps.value_or(30.0);
+  const EncodeOptions o = encode_options(cmd, fps);
+  const double seconds = cmd.seconds.value_or(3.0);
+  if (!(seconds > 0) || seconds > 600)
+    throw std::invalid_argument(fmt::format("--seconds {}: must be above 0 and at most 600", seconds));
+  const int frames = std::max(1, static_cast<int>(std::lround(seconds * fps)));
+  const EncodeResult r = encode_title_card(cmd.title, w, h, frames, o, cmd.output, progress_printer(guard, "frames"));
+  fmt::print(stderr, "encode: title card: {} frames {}x{}, {:.3f} s at {:g} fps, {} -> {} ({})\n", r.frames,
+             r.encoded_width, r.encoded_height, r.seconds, fps, settings_text(o), cmd.output.string(),
+             size_text(cmd.output));
+  return 0;
+}
+
+}  // namespace
+
+int run_encode(const EncodeCommand& cmd) {
+  // Picks the mode; a Ctrl-C or kill ends it between frames with the
+  // temporary output removed (exit 128 + the signal, as a shell reports it).
+  if (cmd.concat && !cmd.title.empty()) throw std::invalid_argument("--concat and --title: choose one");
+  InterruptGuard guard;
+  try {
+    if (cmd.concat) return encode_concat(cmd, guard);
+    if (!cmd.title.empty()) return encode_title(cmd, guard);
+    return encode_dir(cmd, guard);
+  } catch (const Interrupted& e) {
+    fmt::print(stderr, "encode: {}; nothing written to {}\n", e.what(), cmd.output.string());
+    return 128 + e.signal;
+  }
+}
+
+}  // namespace lc

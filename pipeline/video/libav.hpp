@@ -1,0 +1,40 @@
+#pragma once
+// Internal to pipeline/video/*.cpp: the FFmpeg headers (C, hence extern "C")
+// and small helpers turning FFmpeg's error codes into exceptions.  No header
+// outside this folder's .cpp files includes it, so FFmpeg stays out of the
+// rest of lightcone.
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/avutil.h>
+#include <libavutil/error.h>
+#include <libavutil/opt.h>
+#include <libavutil/pixdesc.h>
+#include <libswscale/swscale.h>
+}
+
+#include <cstdint>
+#include <string>
+
+namespace lc::libav {
+
+// FFmpeg's text for an error code (av_err2str is a C compound literal,
+// not usable from C++).
+std::string error_text(int code);
+
+// Throws std::runtime_error "<what>: <FFmpeg's reason>" when code < 0;
+// returns code otherwise.
+int check(int code, const std::string& what);
+
+// Lowers FFmpeg's process-wide log level to errors, once: the encoders'
+// banners and statistics (x264 prints several lines per file) would bury
+// lightcone's own progress.  FFmpeg keeps the level in one global; nothing
+// else in lightcone uses FFmpeg's log.
+void quiet_logs();
+
+// The clock MP4's movie header should use for a video stream with
+// `time_base` so its duration is exact (video_writer.cpp explains).
+std::int64_t movie_timescale(AVRational time_base);
+
+}  // namespace lc::libav
