@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include "image/image_io.hpp"
@@ -20,8 +21,14 @@ namespace {
 class Srgb8Encoder {
  public:
   Srgb8Encoder() {
-    for (int k = 0; k < 255; ++k)
-      upper_[static_cast<std::size_t>(k)] = static_cast<float>(srgb_to_linear((k + 0.5) / 255.0));
+    for (int k = 0; k < 255; ++k) {
+      // The curve's crossing, rounded to float, then nudged to the smallest
+      // float linear_to_srgb8 sends to k+1: the two then agree on every float.
+      float b = static_cast<float>(srgb_to_linear((k + 0.5) / 255.0));
+      while (linear_to_srgb8(b) > k) b = std::nextafter(b, 0.0f);
+      while (linear_to_srgb8(b) <= k) b = std::nextafter(b, 2.0f);
+      upper_[static_cast<std::size_t>(k)] = b;
+    }
     upper_[255] = 2.0f;  // above every value that reaches the lookup
     int code = 0;
     for (int b = 0; b < buckets; ++b) {

@@ -1,0 +1,134 @@
+// Tests of the encode stage's input side: finding a shot's frames in a
+// directory, choosing among shots, and telling a stepped sequence (a preview
+// rendered every k-th frame) from one with holes, with the holes named
+// compactly.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "video/frame_sequence.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// An empty directory for one test, removed afterwards.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path = fs::temp_directory_path() /
+           ("lightcone_encode_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  void touch(const std::string& name) const { std::ofstream(path / name) << "x"; }
+};
+
+// The message of the std::runtime_error `f` throws ("" and a failure if none).
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error thrown";
+  return "";
+}
+
+TEST(encode_sequence, ContiguousFramesHaveStepOneAndNoHoles) {
+  const lc::FrameSpacing s = lc::frame_spacing({3, 4, 5, 6, 7});
+  EXPECT_EQ(s.step, 1);
+  EXPECT_TRUE(s.missing.empty());
+}
+
+TEST(encode_sequence, PreviewStepIsAccepted) {
+  // lightcone render --frames 0:899:10 renders 0, 10, ..., 890.
+  std::vector<int> frames;
+  for (int f = 0; f <= 890; f += 10) frames.push_back(f);
+  const lc::FrameSpacing s = lc::frame_spacing(frames);
+  EXPECT_EQ(s.step, 10);
+  EXPECT_TRUE(s.missing.empty());
+}
+
+TEST(encode_sequence, OneOrTwoFramesAreComplete) {
+  EXPECT_TRUE(lc::frame_spacing({42}).missing.empty());
+  EXPECT_EQ(lc::frame_spacing({42}).step, 1);
+  EXPECT_EQ(lc::frame_spacing({5, 35}).step, 30);
+  EXPECT_TRUE(lc::frame_spacing({5, 35}).missing.empty());
+}
+
+TEST(encode_sequence, HolesAreFoundAtTheSequenceStep) {
+  const lc::FrameSpacing s = lc::frame_spacing({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 16, 17, 18, 19, 20, 41});
+  EXPECT_EQ(s.step, 1);
+  std::vector<int> want = {12, 13, 14, 15};
+  for (int f = 21; f <= 40; ++f) want.push_back(f);
+  EXPECT_EQ(s.missing, want);
+  // Every 10th frame with 30 and 40 lost: the step stays 10.
+  const lc::FrameSpacing t = lc::frame_spacing({0, 10, 20, 50, 60});
+  EXPECT_EQ(t.step, 10);
+  EXPECT_EQ(t.missing, (std::vector<int>{30, 40}));
+}
+
+TEST(encode_sequence, MissingFramesAreListedCompactly) {
+  EXPECT_EQ(lc::describe_frames({12, 13, 14, 15, 40}, 1), "12-15, 40");
+  EXPECT_EQ(lc::describe_frames({7}, 1), "7");
+  EXPECT_EQ(lc::describe_frames({30, 40, 50, 70}, 10), "30-50, 70");
+  EXPECT_EQ(lc::describe_frames({1, 3, 5, 7}, 1, 2), "1, 3, ... (4 frames in all)");
+}
+
+TEST(encode_sequence, FindsFramesByFinalNameOnly) {
+  TempDir d;
+  for (const char* n : {"kerr.0000.png", "kerr.0001.png", "kerr.0002.png", "kerr.0000.exr", "kerr.0003.png.tmp-77",
+                        "kerr.journal", "notes.txt", "kerr.12.png", "my.shot.v2.10000.png"})
+    d.touch(n);
+  fs::create_directories(d.path / "preview" / "kerr.0004.png");  // a directory, not a frame
+  const auto all = lc::find_frame_sequences(d.path);
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all.at("kerr").frames, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(all.at("kerr").files.back().filename(), "kerr.0002.png");
+  EXPECT_EQ(all.at("my.shot.v2").frames, (std::vector<int>{10000}));
+}
+
+TEST(encode_sequence, ChoosesTheOnlyShotOrTheNamedOne) {
+  TempDir d;
+  d.touch("a.0000.png");
+  d.touch("a.0001.png");
+  EXPECT_EQ(lc::select_frame_sequence(d.path, std::nullopt).shot, "a");
+  d.touch("b.0005.png");
+  const std::string many = error_of([&] { lc::select_frame_sequence(d.path, std::nullopt); });
+  EXPECT_NE(many.find("a (2 frames), b (1 frames)"), std::string::npos) << many;
+  EXPECT_NE(many.find("--shot"), std::string::npos) << many;
+  EXPECT_EQ(lc::select_frame_sequence(d.path, std::string("b")).frames, (std::vector<int>{5}));
+  const std::string unknown = error_of([&] { lc::select_frame_sequence(d.path, std::string("c")); });
+  EXPECT_NE(unknown.find("--shot c"), std::string::npos) << unknown;
+}
+
+TEST(encode_sequence, EmptyOrMissingDirectoryIsNamed) {
+  TempDir d;
+  const std::string empty = error_of([&] { lc::select_frame_sequence(d.path, std::nullopt); });
+  EXPECT_NE(empty.find(d.path.string() + ": no frames"), std::string::npos) << empty;
+  const std::string missing = error_of([&] { lc::select_frame_sequence(d.path / "nope", std::nullopt); });
+  EXPECT_NE(missing.find("no such directory"), std::string::npos) << missing;
+}
+
+TEST(encode_sequence, IncompleteSequenceMessageNamesTheHoles) {
+  lc::FrameSequence s{"kerr", {0, 10, 20, 50, 60, 80}, {}};
+  const std::string m = error_of([&] { lc::require_complete(s, "frames"); });
+  EXPECT_NE(m.find("shot kerr, frames 0-80 every 10: missing frames 30-40, 70"), std::string::npos) << m;
+  lc::FrameSequence ok{"kerr", {0, 10, 20}, {}};
+  EXPECT_NO_THROW(lc::require_complete(ok, "frames"));
+}
+
+}  // namespace

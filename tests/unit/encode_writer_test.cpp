@@ -1,0 +1,155 @@
+// Tests of VideoWriter and the encode options through the real FFmpeg
+// libraries, at tiny sizes: the file shows under its final name only after
+// finish(), an abandoned writer leaves nothing, a frame of the wrong size
+// and bad options are refused with the flag or file named.  (The encoded
+// stream itself is checked with ffprobe in tests/e2e/encode.sh.)
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "video/encode_options.hpp"
+#include "video/encode_sequence.hpp"
+#include "video/video_writer.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// An empty directory for one test, removed afterwards.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path = fs::temp_directory_path() /
+           ("lightcone_encode_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  std::size_t entries() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(path), {})); }
+};
+
+template <class E, class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const E& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error thrown";
+  return "";
+}
+
+TEST(encode_writer, FileAppearsOnlyAfterFinish) {
+  TempDir d;
+  const fs::path out = d.path / "clip.mp4";
+  lc::VideoWriter w(out, 16, 8, lc::EncodeOptions{});
+  for (int i = 0; i < 3; ++i) w.add(lc::Rgb8Image::filled(16, 8, static_cast<std::uint8_t>(80 * i), 40, 200));
+  EXPECT_FALSE(fs::exists(out));
+  w.finish();
+  EXPECT_TRUE(fs::exists(out));
+  EXPECT_GT(fs::file_size(out), 100u);
+  EXPECT_EQ(d.entries(), 1u) << "a temporary was left behind";
+  EXPECT_EQ(w.frames(), 3);
+}
+
+TEST(encode_writer, AbandonedWriterLeavesNothing) {
+  TempDir d;
+  {
+    lc::VideoWriter w(d.path / "clip.mp4", 16, 8, lc::EncodeOptions{});
+    w.add(lc::Rgb8Image::filled(16, 8, 1, 2, 3));
+  }
+  EXPECT_EQ(d.entries(), 0u);
+}
+
+TEST(encode_writer, OddSizeIsPaddedToEven) {
+  TempDir d;
+  lc::VideoWriter w(d.path / "odd.mp4", 15, 9, lc::EncodeOptions{});
+  EXPECT_EQ(w.encoded_width(), 16);
+  EXPECT_EQ(w.encoded_height(), 10);
+  w.add(lc::Rgb8Image::filled(15, 9, 9, 9, 9));
+  w.finish();
+}
+
+TEST(encode_writer, WrongFrameSizeAndNoFramesAreRefused) {
+  TempDir d;
+  lc::VideoWriter w(d.path / "clip.mp4", 16, 8, lc::EncodeOptions{});
+  const std::string m = error_of<std::invalid_argument>([&] { w.add(lc::Rgb8Image::filled(8, 8, 0, 0, 0)); });
+  EXPECT_NE(m.find("8x8, the video is 16x8"), std::string::npos) << m;
+  const std::string none = error_of<std::runtime_error>([&] { w.finish(); });
+  EXPECT_NE(none.find("no frames"), std::string::npos) << none;
+}
+
+TEST(encode_writer, UnwritableOutputIsNamed) {
+  TempDir d;
+  const fs::path out = d.path / "missing" / "clip.mp4";
+  const std::string m = error_of<std::runtime_error>([&] { lc::VideoWriter(out, 16, 8, lc::EncodeOptions{}); });
+  EXPECT_NE(m.find("cannot write " + out.string()), std::string::npos) << m;
+  fs::create_directories(d.path / "taken.mp4");
+  const std::string dir =
+      error_of<std::runtime_error>([&] { lc::VideoWriter(d.path / "taken.mp4", 16, 8, lc::EncodeOptions{}); });
+  EXPECT_NE(dir.find("is a directory"), std::string::npos) << dir;
+}
+
+TEST(encode_writer, OptionsAreCheckedAgainstTheCodec) {
+  using lc::Codec;
+  EXPECT_EQ(lc::parse_codec("hevc"), Codec::hevc);
+  EXPECT_NE(error_of<std::invalid_argument>([] { lc::parse_codec("h265"); }).find("--codec h265"), std::string::npos);
+  lc::EncodeOptions o;
+  o.crf = 52;
+  EXPECT_NE(error_of<std::invalid_argument>([&] { lc::validate(o); }).find("--crf 52"), std::string::npos);
+  o.codec = Codec::vp9;
+  EXPECT_NO_THROW(lc::validate(o));
+  o.crf.reset();
+  o.preset = "medium";
+  EXPECT_NE(error_of<std::invalid_argument>([&] { lc::validate(o); }).find("--preset medium"), std::string::npos);
+  o = {};
+  o.fps = 0;
+  EXPECT_NE(error_of<std::invalid_argument>([&] { lc::validate(o); }).find("--fps"), std::string::npos);
+  o = {};
+  o.codec = Codec::prores;
+  o.crf = 10;
+  EXPECT_NE(error_of<std::invalid_argument>([&] { lc::validate(o); }).find("ProRes has no CRF"), std::string::npos);
+  EXPECT_EQ(lc::container_for("a/b.MP4", Codec::h264), lc::Container::mp4);
+  EXPECT_NE(error_of<std::invalid_argument>([] { lc::container_for("x.mp4", lc::Codec::prores); }).find(".mov"),
+            std::string::npos);
+  EXPECT_NE(error_of<std::invalid_argument>([] { lc::container_for("x.avi", lc::Codec::h264); }).find("'.avi'"),
+            std::string::npos);
+}
+
+TEST(encode_writer, StillHoldsForTheFramesAsked) {
+  TempDir d;
+  int calls = 0, last_total = 0;
+  const lc::EncodeResult r =
+      lc::encode_still(lc::Rgb8Image::filled(16, 8, 200, 0, 0), 5, lc::EncodeOptions{}, d.path / "still.mp4",
+                       [&](int done, int total) {
+                         ++calls;
+                         last_total = total;
+                         EXPECT_EQ(done, calls);
+                       });
+  EXPECT_EQ(r.frames, 5);
+  EXPECT_DOUBLE_EQ(r.seconds, 5.0 / 30.0);
+  EXPECT_EQ(calls, 5);
+  EXPECT_EQ(last_total, 5);
+}
+
+TEST(encode_writer, ProgressMayAbandonTheEncoding) {
+  // How a Ctrl-C reaches the encoder: the progress callback throws.
+  TempDir d;
+  struct Stop {};
+  EXPECT_THROW(lc::encode_still(lc::Rgb8Image::filled(16, 8, 0, 0, 0), 10, lc::EncodeOptions{}, d.path / "x.mp4",
+                                [](int done, int) {
+                                  if (done == 3) throw Stop{};
+                                }),
+               Stop);
+  EXPECT_EQ(d.entries(), 0u);
+}
+
+}  // namespace
