@@ -1,0 +1,86 @@
+#include "farm/farm_run.hpp"
+
+namespace lc::farm {
+
+FarmRun::FarmRun(WorkQueue& queue, FrameSink& sink) : queue_(queue), sink_(sink), writer_([this] { writer_loop(); }) {}
+
+FarmRun::~FarmRun() { close(); }
+
+void FarmRun::finish(const WorkItem& item, const RenderStats& stats) {
+  auto done = queue_.finish(item, stats);
+  if (!done) return;
+  {
+    std::lock_guard lock(mutex_);
+    pending_.push_back(std::move(*done));
+  }
+  changed_.notify_all();
+}
+
+void FarmRun::fail(const std::string& message) {
+  {
+    std::lock_guard lock(mutex_);
+    if (!error_) error_ = message;
+  }
+  queue_.stop();
+  changed_.notify_all();
+}
+
+std::optional<std::string> FarmRun::error() const {
+  std::lock_guard lock(mutex_);
+  return error_;
+}
+
+bool FarmRun::over() const {
+  {
+    std::lock_guard lock(mutex_);
+    if (error_) return true;
+  }
+  return queue_.all_stored();
+}
+
+void FarmRun::wait(std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  changed_.wait_for(lock, timeout);
+}
+
+// Stores frames in completion order until closed and empty.  After its own
+// failure (a full disk) it stores nothing more: the next write would fail
+// alike, and the frames are rendered again on resume.
+void FarmRun::writer_loop() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    changed_.wait(lock, [&] { return !pending_.empty() || closing_; });
+    if (pending_.empty()) return;
+    CompletedFrame frame = std::move(pending_.front());
+    pending_.pop_front();
+    if (writer_failed_) continue;
+    lock.unlock();
+    std::optional<std::string> failure;
+    try {
+      sink_.store(frame);
+      queue_.stored(frame.pass, frame.frame);
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+    lock.lock();
+    if (failure) {
+      writer_failed_ = true;
+      if (!error_) error_ = *failure;
+      lock.unlock();
+      queue_.stop();
+      lock.lock();
+    }
+    changed_.notify_all();
+  }
+}
+
+void FarmRun::close() {
+  {
+    std::lock_guard lock(mutex_);
+    closing_ = true;
+  }
+  changed_.notify_all();
+  if (writer_.joinable()) writer_.join();
+}
+
+}  // namespace lc::farm

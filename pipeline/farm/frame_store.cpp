@@ -1,0 +1,189 @@
+#include "farm/frame_store.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/statvfs.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "frame_files.hpp"
+
+namespace lc::farm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// fsync a directory so renames into it survive a crash of the machine.
+void sync_dir(const fs::path& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(fmt::format("cannot open {} to sync it: {}", dir.string(), std::strerror(errno)));
+  const int rc = ::fsync(fd);
+  const int err = errno;
+  ::close(fd);
+  if (rc != 0) throw std::runtime_error(fmt::format("cannot sync {}: {}", dir.string(), std::strerror(err)));
+}
+
+// Whether `name` is a temporary of this shot's frame files
+// ("<shot>.<NNNN>.<ext>.tmp-<pid>", frame_files.cpp's naming).
+bool is_frame_temporary(const std::string& name, const std::string& shot) {
+  if (name.rfind(shot + ".", 0) != 0) return false;
+  const auto t = name.rfind(".tmp-");
+  if (t == std::string::npos || t + 5 >= name.size()) return false;
+  return std::all_of(name.begin() + static_cast<long>(t) + 5, name.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Removes temporaries left by a killed render (we hold the lock: nobody
+// else is writing them).
+void remove_temporaries(const fs::path& dir, const std::string& shot) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.is_regular_file(ec) && is_frame_temporary(e.path().filename().string(), shot)) fs::remove(e.path(), ec);
+}
+
+// Why a write into `dir` may have failed, when the image library's message
+// does not say: a full file system or a file-size limit (ulimit -f).
+std::string space_hint(const fs::path& dir) {
+  std::string hint;
+  struct statvfs vfs {};
+  if (::statvfs(dir.c_str(), &vfs) == 0) {
+    const auto avail = static_cast<std::uintmax_t>(vfs.f_bavail) * vfs.f_frsize;
+    if (avail < (std::uintmax_t{64} << 20))
+      hint += fmt::format(" (the file system holding {} has {} KiB free: is the disk full?)", dir.string(), avail / 1024);
+  }
+  struct rlimit lim {};
+  if (::getrlimit(RLIMIT_FSIZE, &lim) == 0 && lim.rlim_cur != RLIM_INFINITY)
+    hint += fmt::format(" (files are limited to {} KiB by ulimit -f)", lim.rlim_cur / 1024);
+  return hint;
+}
+
+// Runs `write`; a failure's message gains the space hint.
+template <class Write>
+void with_space_hint(const fs::path& dir, Write&& write) {
+  try {
+    write();
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(e.what() + space_hint(dir));
+  }
+}
+
+std::optional<std::uintmax_t> size_of(const fs::path& p) {
+  std::error_code ec;
+  const auto n = fs::file_size(p, ec);
+  if (ec) return std::nullopt;
+  return n;
+}
+
+}  // namespace
+
+FrameStore::FrameStore(fs::path dir, std::string shot, const char* flag) : dir_(std::move(dir)), shot_(std::move(shot)) {
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec || !fs::is_directory(dir_))
+    throw std::runtime_error(fmt::format("{} {}: cannot create the output directory: {}", flag, dir_.string(),
+                                         ec ? ec.message() : "a file of that name exists"));
+  lock_ = std::make_unique<DirLock>(dir_, flag);
+  remove_temporaries(dir_, shot_);
+  remove_temporaries(preview_dir(), shot_);
+  const fs::path file = dir_ / (shot_ + ".journal");
+  journal_ = read_journal(file);
+  writer_ = std::make_unique<JournalWriter>(file, journal_.valid_bytes);
+}
+
+FrameState FrameStore::state(int frame, const FrameSettings& settings, const std::string& inputs) const {
+  auto it = journal_.frames.find(frame);
+  if (it == journal_.frames.end()) return FrameState::todo;
+  const JournalFrame& jf = it->second;
+  if (!(jf.settings == settings) || jf.inputs != inputs) return FrameState::stale;
+  const auto exr = size_of(frame_path(dir_, shot_, frame, "exr"));
+  const auto png = size_of(frame_path(dir_, shot_, frame, "png"));
+  if (!exr || !png || *exr != jf.exr_bytes || *png != jf.png_bytes) return FrameState::damaged;
+  return FrameState::done;
+}
+
+void FrameStore::note_inputs(const std::map<std::string, std::string>& files) {
+  for (const auto& [path, hash] : files) {
+    auto it = journal_.inputs.find(path);
+    if (it != journal_.inputs.end() && it->second == hash) continue;
+    pending_input_lines_.push_back(journal_input_line(hash, path));
+    journal_.inputs[path] = hash;
+  }
+}
+
+void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata,
+                             const FrameSettings& settings, const std::string& inputs, long rays) {
+  with_space_hint(dir_, [&] { write_frame_files(dir_, shot_, frame, image, metadata); });
+  sync_dir(dir_);
+  JournalFrame jf;
+  jf.frame = frame;
+  jf.settings = settings;
+  jf.inputs = inputs;
+  jf.rays = rays;
+  const auto exr = size_of(frame_path(dir_, shot_, frame, "exr"));
+  const auto png = size_of(frame_path(dir_, shot_, frame, "png"));
+  if (!exr || !png)
+    throw std::runtime_error(fmt::format("frame {} vanished from {} right after it was written", frame, dir_.string()));
+  jf.exr_bytes = *exr;
+  jf.png_bytes = *png;
+  with_space_hint(dir_, [&] {
+    while (!pending_input_lines_.empty()) {
+      writer_->append(pending_input_lines_.front());
+      pending_input_lines_.erase(pending_input_lines_.begin());
+    }
+    writer_->append(journal_frame_line(jf));
+  });
+  journal_.frames[frame] = jf;
+}
+
+void fill_missing_rows(FrameImage& image, const std::vector<int>& rendered) {
+  if (rendered.empty()) return;
+  const std::size_t w = static_cast<std::size_t>(image.width);
+  auto copy_row = [&](int from, int to) {
+    std::copy_n(image.rgb.begin() + static_cast<long>(3 * w * from), 3 * w, image.rgb.begin() + static_cast<long>(3 * w * to));
+    for (auto& layer : image.layers)
+      std::copy_n(layer.values.begin() + static_cast<long>(w * from), w, layer.values.begin() + static_cast<long>(w * to));
+  };
+  std::size_t k = 0;  // rendered[k] is the first rendered row >= j
+  for (int j = 0; j < image.height; ++j) {
+    while (k < rendered.size() && rendered[k] < j) ++k;
+    if (k < rendered.size() && rendered[k] == j) continue;
+    const int below = k < rendered.size() ? rendered[k] : -1;
+    const int above = k > 0 ? rendered[k - 1] : -1;
+    int from = above;
+    if (above < 0 || (below >= 0 && below - j < j - above)) from = below;
+    copy_row(from, j);
+  }
+}
+
+void FrameStore::write_preview(int frame, FrameImage image, const std::vector<int>& rendered) {
+  fill_missing_rows(image, rendered);
+  const fs::path dir = preview_dir();
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw std::runtime_error(fmt::format("cannot create {}: {}", dir.string(), ec.message()));
+  const fs::path final = frame_path(dir, shot_, frame, "png");
+  fs::path temp = final;
+  temp += fmt::format(".tmp-{}", ::getpid());
+  try {
+    with_space_hint(dir, [&] { write_png(temp, image); });
+    const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0 || ::fsync(fd) != 0) {
+      const int err = errno;
+      if (fd >= 0) ::close(fd);
+      throw std::runtime_error(fmt::format("cannot sync {}: {}", temp.string(), std::strerror(err)));
+    }
+    ::close(fd);
+    fs::rename(temp, final);
+  } catch (...) {
+    fs::remove(temp, ec);
+    throw;
+  }
+}
+
+}  // namespace lc::farm

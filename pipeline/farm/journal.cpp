@@ -1,0 +1,219 @@
+#include "farm/journal.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "farm/content_hash.hpp"
+
+namespace lc::farm {
+
+namespace {
+
+constexpr const char* header = "lightcone-journal 1";
+
+// Appends " #<check>" where check is the hash of everything before it.
+std::string with_check(const std::string& content) { return content + " #" + to_hex(hash_bytes(content)); }
+
+// The content of a complete line if its check matches, else nullopt.
+std::optional<std::string> checked_content(const std::string& line) {
+  const auto at = line.rfind(" #");
+  if (at == std::string::npos) return std::nullopt;
+  std::string content = line.substr(0, at);
+  if (line.substr(at + 2) != to_hex(hash_bytes(content))) return std::nullopt;
+  return content;
+}
+
+template <class T>
+bool parse_number(const std::string& s, T& out) {
+  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && p == s.data() + s.size();
+}
+
+// key=value tokens separated by single spaces; nullopt when one is malformed.
+std::optional<std::map<std::string, std::string>> fields(const std::string& content) {
+  std::map<std::string, std::string> out;
+  std::istringstream in(content);
+  std::string token;
+  while (in >> token) {
+    const auto eq = token.find('=');
+    if (eq == std::string::npos || eq == 0) return std::nullopt;
+    out[token.substr(0, eq)] = token.substr(eq + 1);
+  }
+  return out;
+}
+
+// A frame line's fields -> JournalFrame; nullopt when any field is missing
+// or malformed (e.g. written by a newer lightcone).
+std::optional<JournalFrame> parse_frame(const std::string& content) {
+  const auto f = fields(content);
+  if (!f) return std::nullopt;
+  auto get = [&](const char* k) -> const std::string* {
+    auto it = f->find(k);
+    return it == f->end() ? nullptr : &it->second;
+  };
+  JournalFrame jf;
+  const std::string *frame = get("frame"), *size = get("size"), *ss = get("supersample"), *layers = get("layers"),
+                    *inputs = get("inputs"), *exr = get("exr"), *png = get("png"), *rays = get("rays");
+  if (!frame || !size || !ss || !layers || !inputs || !exr || !png || !rays) return std::nullopt;
+  const auto x = size->find('x');
+  if (x == std::string::npos) return std::nullopt;
+  if (!parse_number(*frame, jf.frame) || !parse_number(size->substr(0, x), jf.settings.width) ||
+      !parse_number(size->substr(x + 1), jf.settings.height) || !parse_number(*ss, jf.settings.supersample) ||
+      !parse_number(*exr, jf.exr_bytes) || !parse_number(*png, jf.png_bytes) || !parse_number(*rays, jf.rays))
+    return std::nullopt;
+  if (*layers != "0" && *layers != "1") return std::nullopt;
+  jf.settings.layers = *layers == "1";
+  if (inputs->size() != 16) return std::nullopt;
+  jf.inputs = *inputs;
+  return jf;
+}
+
+}  // namespace
+
+std::string FrameSettings::describe() const {
+  return fmt::format("{}x{}, {}x{} samples per pixel, {}", width, height, supersample, supersample,
+                     layers ? "with data layers" : "no data layers");
+}
+
+std::string journal_header_line() { return with_check(header); }
+
+std::string journal_frame_line(const JournalFrame& f) {
+  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} inputs={} exr={} png={} rays={}", f.frame,
+                                f.settings.width, f.settings.height, f.settings.supersample, f.settings.layers ? 1 : 0,
+                                f.inputs, f.exr_bytes, f.png_bytes, f.rays));
+}
+
+std::string journal_input_line(const std::string& hash, const std::string& path) {
+  return with_check(fmt::format("input hash={} path={}", hash, path));
+}
+
+// Walks complete lines; keeps those whose check holds.  The first complete
+// line must be the header, else the file is not ours.
+JournalContents parse_journal(const std::string& text, const std::string& name) {
+  JournalContents out;
+  std::size_t pos = 0;
+  bool first = true;
+  while (pos < text.size()) {
+    const auto nl = text.find('\n', pos);
+    if (nl == std::string::npos) {
+      out.torn_tail = true;
+      break;
+    }
+    const std::string line = text.substr(pos, nl - pos);
+    pos = nl + 1;
+    const auto content = checked_content(line);
+    if (first) {
+      first = false;
+      if (!content || *content != header)
+        throw std::runtime_error(fmt::format(
+            "{} is not a lightcone journal (its first line is '{}'); move it away or choose another --out", name,
+            line.substr(0, 60)));
+      out.valid_bytes = pos;
+      continue;
+    }
+    if (!content) {
+      ++out.bad_lines;
+      continue;
+    }
+    if (content->rfind("input ", 0) == 0) {
+      const auto h = content->find("hash="), p = content->find(" path=");
+      if (h == std::string::npos || p == std::string::npos || p < h + 5) {
+        ++out.bad_lines;
+        continue;
+      }
+      out.inputs[content->substr(p + 6)] = content->substr(h + 5, p - h - 5);
+    } else if (auto jf = parse_frame(*content)) {
+      out.frames[jf->frame] = *jf;
+    } else {
+      ++out.bad_lines;
+      continue;
+    }
+    out.valid_bytes = pos;
+  }
+  // A bad line after the last good one is a torn tail too: cut it off.
+  return out;
+}
+
+JournalContents read_journal(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    if (!std::filesystem::exists(file)) return {};
+    throw std::runtime_error(fmt::format("cannot read {}: {}", file.string(), std::strerror(errno)));
+  }
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse_journal(ss.str(), file.string());
+}
+
+JournalWriter::JournalWriter(std::filesystem::path file, std::uintmax_t valid_bytes)
+    : file_(std::move(file)), valid_bytes_(valid_bytes) {}
+
+JournalWriter::~JournalWriter() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+namespace {
+[[noreturn]] void fail(const std::filesystem::path& p, const char* what) {
+  throw std::runtime_error(fmt::format("cannot {} the journal {}: {}", what, p.string(), std::strerror(errno)));
+}
+
+// Writes all of `data` (write() may write less than asked).
+void write_all(int fd, const std::string& data, const std::filesystem::path& p) {
+  std::size_t done = 0;
+  while (done < data.size()) {
+    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail(p, "write");
+    }
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+// Makes a newly created directory entry durable.
+void sync_dir(const std::filesystem::path& dir) {
+  const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return;  // best effort: the lines themselves are synced
+  ::fsync(fd);
+  ::close(fd);
+}
+}  // namespace
+
+// Opens (creating with the header, or cutting a torn tail) on first use.
+void JournalWriter::open() {
+  const bool existed = std::filesystem::exists(file_);
+  fd_ = ::open(file_.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) fail(file_, "open");
+  if (::ftruncate(fd_, static_cast<off_t>(existed ? valid_bytes_ : 0)) != 0) fail(file_, "truncate");
+  if (::lseek(fd_, 0, SEEK_END) < 0) fail(file_, "seek in");
+  if (!existed || valid_bytes_ == 0) {
+    write_all(fd_, journal_header_line() + "\n", file_);
+    if (::fsync(fd_) != 0) fail(file_, "sync");
+    sync_dir(file_.parent_path());
+  }
+}
+
+void JournalWriter::append(const std::string& line) {
+  if (fd_ < 0) open();
+  const off_t before = ::lseek(fd_, 0, SEEK_END);
+  try {
+    write_all(fd_, line + "\n", file_);
+    if (::fsync(fd_) != 0) fail(file_, "sync");
+  } catch (...) {
+    // Take back a partial line (a full disk) so the file stays clean; if
+    // even that fails, readers skip the torn line anyway.
+    if (before >= 0 && ::ftruncate(fd_, before) == 0) ::fsync(fd_);
+    throw;
+  }
+}
+
+}  // namespace lc::farm

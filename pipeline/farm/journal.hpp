@@ -1,0 +1,84 @@
+#pragma once
+// The journal of finished frames: DIR/<shot>.journal, a text file that is
+// only ever appended to, one line per event, each line fsynced and ending
+// in its own check ("... #<hash>").  A line cut short by a crash (no
+// newline, or a check that does not match) is ignored, and the next writer
+// cuts it off before appending, so a torn tail never hides the lines before
+// it.  Lines:
+//   lightcone-journal 1                                     (first line)
+//   input hash=<16 hex> path=<file>                         (an input file's content as of a run)
+//   frame=<n> size=<W>x<H> supersample=<N> layers=<0|1> inputs=<16 hex> exr=<bytes> png=<bytes> rays=<n>
+// A later frame line for the same frame supersedes an earlier one.
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace lc::farm {
+
+// The settings a frame was rendered with, as the journal spells them.
+struct FrameSettings {
+  int width = 0, height = 0, supersample = 1;
+  bool layers = false;
+  bool operator==(const FrameSettings&) const = default;
+  // "48x32, 1x1 samples per pixel, no data layers": for messages.
+  std::string describe() const;
+};
+
+struct JournalFrame {
+  int frame = 0;
+  FrameSettings settings;
+  std::string inputs;  // 16 hex digits: the frame's input hash
+  std::uintmax_t exr_bytes = 0, png_bytes = 0;
+  long rays = 0;
+};
+
+struct JournalContents {
+  std::map<int, JournalFrame> frames;            // the latest line of each frame
+  std::map<std::string, std::string> inputs;     // path -> latest recorded hash
+  int bad_lines = 0;                             // complete lines that failed their check (skipped)
+  bool torn_tail = false;                        // the last line was cut short
+  std::uintmax_t valid_bytes = 0;                // length up to the end of the last good line
+};
+
+// One line (without the newline) for each kind; with the check appended.
+std::string journal_header_line();
+std::string journal_frame_line(const JournalFrame& f);
+std::string journal_input_line(const std::string& hash, const std::string& path);
+
+// Parses a journal's text.  Throws std::runtime_error naming `name` when the
+// first complete line is not a lightcone journal header (someone else's
+// file: better to stop than to append to it).
+JournalContents parse_journal(const std::string& text, const std::string& name);
+
+// Reads DIR/<shot>.journal; a missing file is an empty journal.
+JournalContents read_journal(const std::filesystem::path& file);
+
+// Appends lines durably.  The file is created (with its header) on the first
+// append, so a render that finishes nothing leaves no journal behind.
+class JournalWriter {
+ public:
+  // `valid_bytes` comes from read_journal: anything after it (a torn line)
+  // is cut off before the first append.
+  JournalWriter(std::filesystem::path file, std::uintmax_t valid_bytes);
+  ~JournalWriter();
+  JournalWriter(const JournalWriter&) = delete;
+  JournalWriter& operator=(const JournalWriter&) = delete;
+
+  // Writes one line (check added here) and fsyncs; throws
+  // std::runtime_error naming the file (e.g. a full disk).  A failed append
+  // leaves at most a torn line, which readers skip.
+  void append(const std::string& line_with_check);
+
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  void open();
+  std::filesystem::path file_;
+  std::uintmax_t valid_bytes_;
+  int fd_ = -1;
+};
+
+}  // namespace lc::farm

@@ -1,0 +1,118 @@
+#include "farm/mpi_master.hpp"
+
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "farm/content_hash.hpp"
+#include "farm/mpi_link.hpp"
+
+#include <mpi.h>
+
+namespace lc::farm {
+
+namespace {
+
+constexpr auto idle_sleep = std::chrono::milliseconds(1);
+
+struct WorkerState {
+  bool hello = false;
+  int wanted = 0;  // sets asked for and not yet served
+  bool told_no_more = false;
+};
+
+}  // namespace
+
+MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& run, Progress& progress,
+                            std::uint64_t digest) {
+  MasterReport report;
+  std::vector<WorkerState> workers(static_cast<std::size_t>(mpi.size()));
+
+  auto handle = [&](Message& m) {
+    WorkerState& w = workers[static_cast<std::size_t>(m.source)];
+    switch (m.tag) {
+      case Tag::hello: {
+        const Hello h = unpack_hello(m.data);
+        if (h.digest != digest) {
+          run.fail(fmt::format(
+              "rank {} loaded a different job (digest {} here, {} there): every rank must read the same shot "
+              "script and modules and get the same flags — is the copy on its node out of date?",
+              m.source, to_hex(digest), to_hex(h.digest)));
+          return;
+        }
+        w.hello = true;
+        ++report.workers;
+        report.worker_threads += h.threads;
+        queue.set_max_open_frames(open_frames_for(report.worker_threads, queue.layout().stripes()));
+        return;
+      }
+      case Tag::request:
+        w.wanted = unpack_count(m.data);
+        return;
+      case Tag::result: {
+        const WorkItem item = result_item(m.data);
+        const RenderStats stats = unpack_result(m.data, queue.canvas(item), queue.layout().rows(item.stripe));
+        run.finish(item, stats);
+        return;
+      }
+      case Tag::error:
+        run.fail(fmt::format("rank {}: {}", m.source, std::string(m.data.begin(), m.data.end())));
+        return;
+      default:
+        run.fail(fmt::format("rank {} sent an unexpected message (tag {})", m.source, static_cast<int>(m.tag)));
+        return;
+    }
+  };
+
+  // Gives worker r what it asked for, or tells it no more is coming.
+  auto serve = [&](int r) {
+    WorkerState& w = workers[static_cast<std::size_t>(r)];
+    if (!w.hello || w.wanted <= 0 || w.told_no_more) return;
+    std::vector<WorkItem> items;
+    while (static_cast<int>(items.size()) < w.wanted)
+      if (auto item = queue.take())
+        items.push_back(*item);
+      else
+        break;
+    if (!items.empty()) {
+      mpi_send(r, Tag::work, pack_items(items));
+      w.wanted = 0;
+    } else if (queue.drained() || queue.stopped()) {
+      mpi_send(r, Tag::work, pack_items({}));
+      w.told_no_more = true;
+    }  // else: throttled until the writer catches up; serve later
+  };
+
+  while (!run.over()) {
+    bool busy = false;
+    while (auto m = mpi_poll(MPI_ANY_SOURCE)) {
+      busy = true;
+      try {
+        handle(*m);
+      } catch (const std::exception& e) {
+        run.fail(fmt::format("rank {}: {}", m->source, e.what()));
+      }
+      if (run.over()) break;
+    }
+    for (int r = 1; r < mpi.size(); ++r) serve(r);
+    progress.tick(queue.progress());
+    if (!busy) std::this_thread::sleep_for(idle_sleep);
+  }
+  return report;
+}
+
+void stop_mpi_workers(const MpiSession& mpi) {
+  const Bytes none;
+  for (int r = 1; r < mpi.size(); ++r) mpi_send(r, Tag::stop, none);
+  int left = mpi.size() - 1;
+  while (left > 0) {
+    if (auto m = mpi_poll(MPI_ANY_SOURCE)) {
+      if (m->tag == Tag::bye) --left;
+    } else {
+      std::this_thread::sleep_for(idle_sleep);
+    }
+  }
+}
+
+}  // namespace lc::farm

@@ -1,0 +1,128 @@
+#include "farm/mpi_messages.hpp"
+
+#include <cstring>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace lc::farm {
+
+namespace {
+
+template <class T>
+void put(Bytes& b, const T& v) {
+  const char* p = reinterpret_cast<const char*>(&v);
+  b.insert(b.end(), p, p + sizeof(T));
+}
+
+template <class T>
+T get(std::span<const char> b, std::size_t& at) {
+  if (at + sizeof(T) > b.size()) throw std::runtime_error("farm message: truncated");
+  T v;
+  std::memcpy(&v, b.data() + at, sizeof(T));
+  at += sizeof(T);
+  return v;
+}
+
+struct ResultHeader {
+  std::int32_t frame, stripe, pass, pad;
+  std::int64_t rays, steps, gave_up;
+};
+
+}  // namespace
+
+Bytes pack_hello(const Hello& h) {
+  Bytes b;
+  put(b, h.digest);
+  put(b, static_cast<std::int64_t>(h.threads));
+  return b;
+}
+
+Hello unpack_hello(std::span<const char> b) {
+  std::size_t at = 0;
+  Hello h;
+  h.digest = get<std::uint64_t>(b, at);
+  h.threads = static_cast<int>(get<std::int64_t>(b, at));
+  return h;
+}
+
+Bytes pack_count(int n) {
+  Bytes b;
+  put(b, static_cast<std::int32_t>(n));
+  return b;
+}
+
+int unpack_count(std::span<const char> b) {
+  std::size_t at = 0;
+  return get<std::int32_t>(b, at);
+}
+
+Bytes pack_items(const std::vector<WorkItem>& items) {
+  Bytes b;
+  put(b, static_cast<std::int32_t>(items.size()));
+  for (const auto& i : items) {
+    put(b, static_cast<std::int32_t>(i.frame));
+    put(b, static_cast<std::int32_t>(i.stripe));
+    put(b, static_cast<std::int32_t>(i.pass));
+  }
+  return b;
+}
+
+std::vector<WorkItem> unpack_items(std::span<const char> b) {
+  std::size_t at = 0;
+  const auto n = get<std::int32_t>(b, at);
+  if (n < 0 || static_cast<std::size_t>(n) * 12 + 4 != b.size()) throw std::runtime_error("farm message: bad work list");
+  std::vector<WorkItem> out(static_cast<std::size_t>(n));
+  for (auto& i : out) {
+    i.frame = get<std::int32_t>(b, at);
+    i.stripe = get<std::int32_t>(b, at);
+    i.pass = get<std::int32_t>(b, at) == 0 ? Pass::preview : Pass::full;
+  }
+  return out;
+}
+
+Bytes pack_result(const WorkItem& item, const RenderStats& stats, const FrameImage& canvas,
+                  const std::vector<int>& rows) {
+  const std::size_t w = static_cast<std::size_t>(canvas.width);
+  const std::size_t floats = rows.size() * w * (3 + canvas.layers.size());
+  Bytes b;
+  b.reserve(sizeof(ResultHeader) + floats * sizeof(float));
+  put(b, ResultHeader{item.frame, item.stripe, static_cast<std::int32_t>(item.pass), 0, stats.rays, stats.steps,
+                      stats.gave_up});
+  auto append = [&](const float* p, std::size_t n) {
+    const char* c = reinterpret_cast<const char*>(p);
+    b.insert(b.end(), c, c + n * sizeof(float));
+  };
+  for (int j : rows) {
+    append(canvas.rgb.data() + 3 * w * j, 3 * w);
+    for (const auto& layer : canvas.layers) append(layer.values.data() + w * j, w);
+  }
+  return b;
+}
+
+WorkItem result_item(std::span<const char> b) {
+  std::size_t at = 0;
+  const auto h = get<ResultHeader>(b, at);
+  return {h.frame, h.stripe, h.pass == 0 ? Pass::preview : Pass::full};
+}
+
+RenderStats unpack_result(std::span<const char> b, FrameImage& canvas, const std::vector<int>& rows) {
+  std::size_t at = 0;
+  const auto h = get<ResultHeader>(b, at);
+  const std::size_t w = static_cast<std::size_t>(canvas.width);
+  const std::size_t floats = rows.size() * w * (3 + canvas.layers.size());
+  if (b.size() != sizeof(ResultHeader) + floats * sizeof(float))
+    throw std::runtime_error(fmt::format("farm message: stripe {} of frame {} has {} bytes, expected {}", h.stripe,
+                                         h.frame, b.size(), sizeof(ResultHeader) + floats * sizeof(float)));
+  auto take = [&](float* p, std::size_t n) {
+    std::memcpy(p, b.data() + at, n * sizeof(float));
+    at += n * sizeof(float);
+  };
+  for (int j : rows) {
+    take(canvas.rgb.data() + 3 * w * j, 3 * w);
+    for (auto& layer : canvas.layers) take(layer.values.data() + w * j, w);
+  }
+  return {h.rays, h.steps, h.gave_up};
+}
+
+}  // namespace lc::farm

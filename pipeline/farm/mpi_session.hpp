@@ -1,0 +1,33 @@
+#pragma once
+// MPI for the farm: initialised only when an MPI launcher started this
+// process (mpirun, mpiexec, srun), recognised by the environment it sets.
+// A plain run skips MPI_Init altogether: that is what an MPI singleton
+// would be (one rank, threads only) without the ~0.3 s Open MPI spends
+// starting one.  Only the thread that made the session calls MPI
+// (MPI_THREAD_FUNNELED).
+
+namespace lc::farm {
+
+class MpiSession {
+ public:
+  MpiSession();
+  ~MpiSession();  // MPI_Finalize
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  bool active() const { return active_; }
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  // Workers sharing this node (the master, rank 0, does not count: it
+  // sleeps while it waits), at least 1.
+  int workers_on_node() const { return workers_on_node_; }
+
+  // Whether the environment says an MPI launcher started us.
+  static bool launched();
+
+ private:
+  bool active_ = false;
+  int rank_ = 0, size_ = 1, workers_on_node_ = 1;
+};
+
+}  // namespace lc::farm

@@ -1,0 +1,88 @@
+#include "farm/resume_plan.hpp"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace lc::farm {
+
+std::string format_frame_list(std::vector<int> frames) {
+  std::sort(frames.begin(), frames.end());
+  std::string out;
+  for (std::size_t i = 0; i < frames.size();) {
+    std::size_t j = i;
+    while (j + 1 < frames.size() && frames[j + 1] == frames[j] + 1) ++j;
+    if (!out.empty()) out += ", ";
+    out += j == i ? fmt::format("{}", frames[i]) : fmt::format("{}-{}", frames[i], frames[j]);
+    i = j + 1;
+  }
+  return out;
+}
+
+namespace {
+
+// Why stale frames differ: settings per group, and the input files whose
+// recorded hash differs from today's.
+std::string explain_stale(const FrameStore& store, const ShotSurvey& survey, const FrameSettings& settings,
+                          const std::vector<int>& stale) {
+  std::vector<std::string> reasons;
+  std::map<std::string, std::vector<int>> by_settings;
+  std::vector<int> by_inputs;
+  for (int f : stale) {
+    const JournalFrame& jf = store.journal().frames.at(f);
+    if (!(jf.settings == settings))
+      by_settings[jf.settings.describe()].push_back(f);
+    else
+      by_inputs.push_back(f);
+  }
+  for (const auto& [desc, frames] : by_settings)
+    reasons.push_back(fmt::format("frames {} were rendered at {}, this render asks for {}", format_frame_list(frames),
+                                  desc, settings.describe()));
+  if (!by_inputs.empty()) {
+    std::vector<std::string> changed;
+    for (const auto& [path, hash] : survey.files) {
+      auto it = store.journal().inputs.find(path);
+      if (it != store.journal().inputs.end() && it->second != hash) changed.push_back(path);
+    }
+    reasons.push_back(fmt::format("frames {} were rendered from {}", format_frame_list(by_inputs),
+                                  changed.empty() ? std::string("other inputs (the script, its modules or sky images)")
+                                                  : fmt::format("other versions of: {}", fmt::join(changed, ", "))));
+  }
+  return fmt::format("{}", fmt::join(reasons, "; "));
+}
+
+}  // namespace
+
+ResumePlan plan_resume(const FrameStore& store, const ShotSurvey& survey, const FrameSettings& settings,
+                       const std::vector<int>& frames, bool force, const std::string& shot_name) {
+  ResumePlan plan;
+  for (int f : frames) {
+    switch (store.state(f, settings, survey.frames.at(f).inputs)) {
+      case FrameState::done:
+        plan.done.push_back(f);
+        break;
+      case FrameState::todo:
+        plan.todo.push_back(f);
+        break;
+      case FrameState::damaged:
+        plan.damaged.push_back(f);
+        plan.todo.push_back(f);
+        break;
+      case FrameState::stale:
+        plan.stale.push_back(f);
+        plan.todo.push_back(f);
+        break;
+    }
+  }
+  if (!plan.stale.empty() && !force)
+    throw std::runtime_error(fmt::format(
+        "--out {}: refusing to resume '{}': it holds finished frames made differently — {}. Rendering on would mix "
+        "old and new frames; use another --out, or pass --force to render those frames again (frames that match "
+        "are kept)",
+        store.dir().string(), shot_name, explain_stale(store, survey, settings, plan.stale)));
+  return plan;
+}
+
+}  // namespace lc::farm

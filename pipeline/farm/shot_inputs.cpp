@@ -1,0 +1,77 @@
+#include "farm/shot_inputs.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "farm/content_hash.hpp"
+
+namespace lc::farm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The file a sky image name refers to, searched like ShotResources does:
+// an absolute path as is, else the shot's asset folders in order.
+fs::path resolve_sky_image(const fs::path& file, const std::vector<fs::path>& dirs, const std::string& where) {
+  if (file.is_absolute()) return file;
+  for (const auto& dir : dirs)
+    if (fs::exists(dir / file)) return dir / file;
+  std::string tried;
+  for (const auto& dir : dirs) tried += "\n  " + (dir / file).string();
+  throw std::invalid_argument(fmt::format("{}: sky image '{}' not found; looked in:{}", where, file.string(), tried));
+}
+
+}  // namespace
+
+ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
+  ShotSurvey out;
+  const auto dirs = shot.asset_dirs();
+  std::map<int, std::string> texture_of;  // frame -> resolved sky image path
+  for (int f : frames) {
+    const FrameScene fs = shot.frame(f);
+    out.frames[f].spacetime = describe(fs.spacetime);
+    if (fs.sky.kind == SkyKind::image) {
+      const std::string where = fmt::format("{}: frame {}", shot.file().string(), f);
+      const fs::path p = resolve_sky_image(fs.sky.image, dirs, where);
+      std::error_code ec;
+      const fs::path canon = fs::weakly_canonical(p, ec);
+      texture_of[f] = (ec ? p : canon).string();
+    }
+  }
+  // Script and modules: after evaluating, so modules required inside
+  // frame() are included.
+  std::vector<std::uint64_t> script_hashes;
+  for (const auto& p : shot.loaded_files()) {
+    const std::uint64_t h = hash_file(p);
+    out.files[p.string()] = to_hex(h);
+    script_hashes.push_back(h);
+  }
+  std::sort(script_hashes.begin(), script_hashes.end());
+  ContentHash base;
+  for (auto h : script_hashes) base.add(h);
+  for (auto& [f, facts] : out.frames) {
+    ContentHash h = base;
+    if (auto it = texture_of.find(f); it != texture_of.end()) {
+      auto known = out.files.find(it->second);
+      if (known == out.files.end()) known = out.files.emplace(it->second, to_hex(hash_file(it->second))).first;
+      h.add("sky image ").add(known->second);
+    }
+    facts.inputs = h.hex();
+  }
+  return out;
+}
+
+std::uint64_t job_digest(const Shot& shot, const RenderSettings& rs, int stripes, int preview_every) {
+  const ShotInfo& i = shot.info();
+  ContentHash h;
+  h.add(i.name).add(std::uint64_t(i.frames)).add(fmt::format("{}", i.fps));
+  h.add(std::uint64_t(rs.width)).add(std::uint64_t(rs.height)).add(std::uint64_t(rs.supersample));
+  h.add(std::uint64_t(rs.layers)).add(std::uint64_t(stripes)).add(std::uint64_t(preview_every));
+  for (const auto& p : shot.loaded_files()) h.add(hash_file(p));
+  return h.value();
+}
+
+}  // namespace lc::farm

@@ -1,0 +1,43 @@
+#pragma once
+// What the frames of a shot are made from, for the frame store's resume
+// check: the script, every module it required and the sky image of each
+// frame, each hashed by content.  A frame's input hash combines the hashes
+// of the script and modules (any of them may shape any frame) with that of
+// its own sky image, so rendering a sub-range and later the whole shot
+// agree on the frames they share.  Engine changes are not covered: a
+// rebuilt lightcone resumes an old render as it stands.
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/renderer.hpp"
+#include "scene/shot.hpp"
+
+namespace lc::farm {
+
+struct FrameFacts {
+  std::string spacetime;  // describe(spacetime), for the EXR header
+  std::string inputs;     // 16 hex digits
+};
+
+struct ShotSurvey {
+  std::map<int, FrameFacts> frames;
+  std::map<std::string, std::string> files;  // path -> 16 hex digits
+};
+
+// Evaluates the scene of every listed frame (script only: no worldlines are
+// integrated, no textures decoded), so a script error anywhere stops the
+// render before it starts.  Throws the script's error, or
+// std::invalid_argument for a sky image that cannot be found (naming the
+// shot, frame and the folders searched).
+ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames);
+
+// What every MPI rank must agree on before working together: the shot's
+// settings, the render settings, the stripe layout and the content of the
+// script and modules loaded so far.  Ranks whose digests differ run
+// different scripts or flags (a stale copy on one node).
+std::uint64_t job_digest(const Shot& shot, const RenderSettings& rs, int stripes, int preview_every);
+
+}  // namespace lc::farm

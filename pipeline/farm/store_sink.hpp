@@ -1,0 +1,30 @@
+#pragma once
+// Completed frames into the frame store: a full frame as EXR + PNG with its
+// journal line, a preview as DIR/preview/<shot>.<NNNN>.png.
+
+#include "farm/farm_run.hpp"
+#include "farm/frame_store.hpp"
+#include "farm/shot_inputs.hpp"
+
+namespace lc::farm {
+
+class StoreSink final : public FrameSink {
+ public:
+  // `survey` gives each frame's input hash and spacetime; `preview_rows`
+  // the rows a preview frame has (sorted).
+  StoreSink(FrameStore& store, const ShotSurvey& survey, const std::string& shot_name, const RenderSettings& rs,
+            std::vector<int> preview_rows);
+  void store(const CompletedFrame& frame) override;
+
+ private:
+  FrameStore& store_;
+  const ShotSurvey& survey_;
+  std::string shot_name_;
+  RenderSettings rs_;
+  std::vector<int> preview_rows_;
+};
+
+// The journal's spelling of the settings.
+FrameSettings frame_settings(const RenderSettings& rs);
+
+}  // namespace lc::farm

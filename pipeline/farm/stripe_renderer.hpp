@@ -1,0 +1,37 @@
+#pragma once
+// What a worker does with a working set: render its rows into a full-size
+// canvas.  The real one traces rays through the frame's scene; the farm
+// benchmark's does nothing, to time the farm alone.
+
+#include "farm/scene_cache.hpp"
+#include "farm/work_queue.hpp"
+
+namespace lc::farm {
+
+class StripeRenderer {
+ public:
+  virtual ~StripeRenderer() = default;
+  // Fills the set's rows of `canvas` (make_frame-sized); thread-safe for
+  // sets with disjoint rows.  Throws for a scene that cannot be built.
+  virtual RenderStats render(const WorkItem& item, FrameImage& canvas) = 0;
+};
+
+class SceneStripeRenderer final : public StripeRenderer {
+ public:
+  SceneStripeRenderer(SceneCache& scenes, const RenderSettings& rs, const StripeLayout& layout)
+      : scenes_(scenes), rs_(rs), layout_(layout) {}
+  RenderStats render(const WorkItem& item, FrameImage& canvas) override;
+
+ private:
+  SceneCache& scenes_;
+  RenderSettings rs_;
+  StripeLayout layout_;
+};
+
+// Leaves the rows as they are (zero): a working set that costs nothing.
+class NullStripeRenderer final : public StripeRenderer {
+ public:
+  RenderStats render(const WorkItem&, FrameImage&) override { return {}; }
+};
+
+}  // namespace lc::farm

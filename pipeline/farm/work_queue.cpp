@@ -1,0 +1,154 @@
+#include "farm/work_queue.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace lc::farm {
+
+WorkQueue::WorkQueue(RenderSettings rs, StripeLayout layout, std::vector<int> frames, Options options)
+    : rs_(rs), layout_(layout), frames_(std::move(frames)), options_(options) {
+  if (options_.max_open_frames < 1) options_.max_open_frames = 1;
+  for (int s = 0; s < layout_.stripes(); ++s) {
+    all_stripes_.push_back(s);
+    if (options_.preview_every >= 2 && StripeLayout::in_preview(s, options_.preview_every)) preview_stripes_.push_back(s);
+  }
+  if (preview_stripes_.empty()) cur_pass_ = 1;  // no preview pass
+  const long n = static_cast<long>(frames_.size());
+  progress_.frames_total = static_cast<int>(n);
+  progress_.rows_total = n * layout_.height();
+  if (!preview_stripes_.empty()) {
+    progress_.previews_total = static_cast<int>(n);
+    for (int s : preview_stripes_) progress_.rows_total += n * layout_.row_count(s);
+  }
+}
+
+// Hands out the set under the cursor, opening its frame if needed, and
+// moves the cursor on (to the next pass after a pass's last frame, so
+// drained() is true as soon as the last set is out); nullopt at the end,
+// when stopped, or when opening a frame would exceed the limit.
+std::optional<WorkItem> WorkQueue::take_locked() {
+  if (stopped_ || cur_pass_ > 1 || frames_.empty()) return std::nullopt;
+  const auto& stripes = cur_pass_ == 0 ? preview_stripes_ : all_stripes_;
+  const Pass pass = cur_pass_ == 0 ? Pass::preview : Pass::full;
+  const int frame = frames_[cur_frame_];
+  if (cur_stripe_ == 0) {
+    // First set of a frame: it needs a canvas and a slot.
+    if (static_cast<int>(open_.size()) >= options_.max_open_frames) return std::nullopt;
+    OpenFrame& of = open_[key(pass, frame)];
+    of.canvas = std::make_unique<FrameImage>(make_frame(rs_));
+    of.done.assign(stripes.size(), 0);
+    of.remaining = static_cast<int>(stripes.size());
+  }
+  WorkItem item{frame, stripes[cur_stripe_], pass};
+  if (++cur_stripe_ == stripes.size()) {
+    cur_stripe_ = 0;
+    if (++cur_frame_ == frames_.size()) {
+      cur_frame_ = 0;
+      ++cur_pass_;
+    }
+  }
+  return item;
+}
+
+std::optional<WorkItem> WorkQueue::take() {
+  std::lock_guard lock(mutex_);
+  return take_locked();
+}
+
+std::optional<WorkItem> WorkQueue::take_wait() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    if (auto item = take_locked()) return item;
+    if (stopped_ || cur_pass_ > 1 || frames_.empty()) return std::nullopt;
+    slot_freed_.wait(lock);
+  }
+}
+
+bool WorkQueue::drained() const {
+  std::lock_guard lock(mutex_);
+  return cur_pass_ > 1 || frames_.empty();
+}
+
+FrameImage& WorkQueue::canvas(const WorkItem& item) {
+  std::lock_guard lock(mutex_);
+  auto it = open_.find(key(item.pass, item.frame));
+  if (it == open_.end() || !it->second.canvas)
+    throw std::logic_error(fmt::format("work queue: frame {} has no canvas", item.frame));
+  return *it->second.canvas;
+}
+
+// Index of `stripe` in the pass's stripe list (preview stripes are every
+// k-th, so the index is stripe / k).
+std::optional<CompletedFrame> WorkQueue::finish(const WorkItem& item, const RenderStats& stats) {
+  std::lock_guard lock(mutex_);
+  auto it = open_.find(key(item.pass, item.frame));
+  const int index = item.pass == Pass::preview ? item.stripe / std::max(1, options_.preview_every) : item.stripe;
+  const auto& stripes = stripes_of(item.pass);
+  if (it == open_.end() || !it->second.canvas || index < 0 || index >= static_cast<int>(stripes.size()) ||
+      stripes[index] != item.stripe || it->second.done[index])
+    throw std::logic_error(
+        fmt::format("work queue: stripe {} of frame {} was not handed out (or came back twice)", item.stripe, item.frame));
+  OpenFrame& of = it->second;
+  of.done[index] = 1;
+  of.stats += stats;
+  progress_.stats += stats;
+  progress_.rows_done += layout_.row_count(item.stripe);
+  if (--of.remaining > 0) return std::nullopt;
+  CompletedFrame done{item.pass, item.frame, std::move(*of.canvas), of.stats};
+  of.canvas.reset();  // the slot stays taken until stored()
+  return done;
+}
+
+void WorkQueue::stored(Pass pass, int frame) {
+  {
+    std::lock_guard lock(mutex_);
+    auto it = open_.find(key(pass, frame));
+    if (it == open_.end() || it->second.remaining != 0)
+      throw std::logic_error(fmt::format("work queue: frame {} stored before it was complete", frame));
+    open_.erase(it);
+    if (pass == Pass::full)
+      ++progress_.frames_stored;
+    else
+      ++progress_.previews_stored;
+  }
+  slot_freed_.notify_all();
+}
+
+bool WorkQueue::all_stored() const {
+  std::lock_guard lock(mutex_);
+  return (cur_pass_ > 1 || frames_.empty()) && open_.empty();
+}
+
+void WorkQueue::set_max_open_frames(int n) {
+  {
+    std::lock_guard lock(mutex_);
+    options_.max_open_frames = std::max(1, n);
+  }
+  slot_freed_.notify_all();
+}
+
+void WorkQueue::stop() {
+  {
+    std::lock_guard lock(mutex_);
+    stopped_ = true;
+  }
+  slot_freed_.notify_all();
+}
+
+bool WorkQueue::stopped() const {
+  std::lock_guard lock(mutex_);
+  return stopped_;
+}
+
+QueueProgress WorkQueue::progress() const {
+  std::lock_guard lock(mutex_);
+  return progress_;
+}
+
+int open_frames_for(int threads, int stripes) {
+  stripes = std::max(1, stripes);
+  return std::max(4, 2 * ((2 * threads + stripes - 1) / stripes) + 2);
+}
+
+}  // namespace lc::farm

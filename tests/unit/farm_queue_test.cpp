@@ -1,0 +1,229 @@
+// The farm's work queue and stripe layout: interleaved rows cover the image
+// exactly once, every working set is handed out exactly once, frames
+// complete when their last stripe arrives, previews come first, the number
+// of open frames is bounded, and threads sharing the queue agree.
+
+#include <algorithm>
+#include <set>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "farm/farm_run.hpp"
+#include "farm/frame_store.hpp"
+#include "farm/mpi_messages.hpp"
+#include "farm/work_queue.hpp"
+
+namespace lc::farm {
+namespace {
+
+RenderSettings settings(int w, int h) {
+  RenderSettings rs;
+  rs.width = w;
+  rs.height = h;
+  return rs;
+}
+
+TEST(FarmStripes, InterleavedRowsCoverTheImageOnce) {
+  for (int height : {1, 7, 32, 720})
+    for (int stripes : {1, 3, 32, 512, 1000}) {
+      const StripeLayout layout(height, stripes);
+      EXPECT_LE(layout.stripes(), height);
+      std::vector<int> seen(height, 0);
+      for (int s = 0; s < layout.stripes(); ++s) {
+        const auto rows = layout.rows(s);
+        EXPECT_FALSE(rows.empty());
+        EXPECT_EQ(static_cast<int>(rows.size()), layout.row_count(s));
+        EXPECT_TRUE(std::is_sorted(rows.begin(), rows.end()));
+        for (int j : rows) {
+          ++seen[j];
+          EXPECT_EQ(layout.stripe_of(j), s);
+        }
+      }
+      EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }))
+          << height << " rows, " << stripes << " stripes";
+    }
+}
+
+TEST(FarmStripes, PaperLayout) {
+  const StripeLayout layout(720, 512);  // 1280x720 in 512 stripes
+  EXPECT_EQ(layout.rows(0), (std::vector<int>{0, 512}));
+  EXPECT_EQ(layout.rows(207), (std::vector<int>{207, 719}));
+  EXPECT_EQ(layout.rows(208), (std::vector<int>{208}));
+}
+
+// Hands out everything single-threaded and checks each set appears once.
+TEST(FarmQueue, EverySetOnceInFrameOrder) {
+  WorkQueue q(settings(4, 10), StripeLayout(10, 5), {3, 7, 9}, {.preview_every = 0, .max_open_frames = 100});
+  std::vector<WorkItem> items;
+  while (auto i = q.take()) items.push_back(*i);
+  EXPECT_TRUE(q.drained());
+  ASSERT_EQ(items.size(), 15u);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    EXPECT_EQ(items[k].frame, std::vector<int>({3, 7, 9})[k / 5]);
+    EXPECT_EQ(items[k].stripe, static_cast<int>(k % 5));
+    EXPECT_EQ(items[k].pass, Pass::full);
+  }
+}
+
+TEST(FarmQueue, FrameCompletesWithItsLastStripeAndHoldsItsRows) {
+  WorkQueue q(settings(3, 4), StripeLayout(4, 2), {0}, {});
+  const auto a = *q.take(), b = *q.take();
+  // Write each stripe's row numbers into its rows, in reverse order of hand-out.
+  for (const auto& item : {b, a})
+    for (int j : q.layout().rows(item.stripe))
+      for (int i = 0; i < 3; ++i) q.canvas(item).rgb[3 * (j * 3 + i)] = static_cast<float>(j);
+  EXPECT_FALSE(q.finish(b, {10, 0, 0}).has_value());
+  const auto done = q.finish(a, {5, 0, 0});
+  ASSERT_TRUE(done.has_value());
+  EXPECT_EQ(done->frame, 0);
+  EXPECT_EQ(done->stats.rays, 15);
+  for (int j = 0; j < 4; ++j) EXPECT_EQ(done->image.rgb[3 * (j * 3)], static_cast<float>(j));
+  EXPECT_FALSE(q.all_stored());
+  q.stored(Pass::full, 0);
+  EXPECT_TRUE(q.all_stored());
+  EXPECT_EQ(q.progress().frames_stored, 1);
+}
+
+TEST(FarmQueue, DuplicateOrUnknownSetIsRefused) {
+  WorkQueue q(settings(2, 4), StripeLayout(4, 2), {0}, {});
+  const auto a = *q.take();
+  q.finish(a, {});
+  EXPECT_THROW(q.finish(a, {}), std::logic_error);
+  EXPECT_THROW(q.finish({5, 0, Pass::full}, {}), std::logic_error);
+}
+
+TEST(FarmQueue, PreviewStripesOfEveryFrameComeFirst) {
+  WorkQueue q(settings(2, 8), StripeLayout(8, 8), {0, 1}, {.preview_every = 4, .max_open_frames = 100});
+  EXPECT_EQ(q.stripes_of(Pass::preview), (std::vector<int>{0, 4}));
+  std::vector<WorkItem> items;
+  while (auto i = q.take()) items.push_back(*i);
+  ASSERT_EQ(items.size(), 2u * 2 + 2u * 8);
+  EXPECT_EQ(items[0], (WorkItem{0, 0, Pass::preview}));
+  EXPECT_EQ(items[1], (WorkItem{0, 4, Pass::preview}));
+  EXPECT_EQ(items[2], (WorkItem{1, 0, Pass::preview}));
+  EXPECT_EQ(items[3], (WorkItem{1, 4, Pass::preview}));
+  EXPECT_EQ(items[4], (WorkItem{0, 0, Pass::full}));
+  const QueueProgress p = q.progress();
+  EXPECT_EQ(p.rows_total, 2 * 2 + 2 * 8);
+  EXPECT_EQ(p.previews_total, 2);
+}
+
+TEST(FarmQueue, OpenFramesAreBounded) {
+  WorkQueue q(settings(2, 2), StripeLayout(2, 2), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 2});
+  std::vector<WorkItem> items;
+  while (auto i = q.take()) items.push_back(*i);
+  EXPECT_EQ(items.size(), 4u);  // frames 0 and 1; frame 2 waits for a slot
+  EXPECT_FALSE(q.drained());
+  q.finish(items[0], {});
+  q.finish(items[1], {});
+  EXPECT_FALSE(q.take().has_value());  // complete is not enough: stored frees the slot
+  q.stored(Pass::full, 0);
+  EXPECT_EQ(q.take()->frame, 2);
+}
+
+TEST(FarmQueue, StopEndsTakeWait) {
+  WorkQueue q(settings(2, 2), StripeLayout(2, 1), {0, 1}, {.preview_every = 0, .max_open_frames = 1});
+  ASSERT_TRUE(q.take().has_value());
+  std::thread waiter([&] { EXPECT_FALSE(q.take_wait().has_value()); });
+  q.stop();
+  waiter.join();
+}
+
+// Completed frames go to a sink that records them.
+class RecordingSink final : public FrameSink {
+ public:
+  void store(const CompletedFrame& f) override {
+    std::lock_guard lock(mutex);
+    frames.push_back(f.frame);
+    images.push_back(f.image);
+  }
+  std::mutex mutex;
+  std::vector<int> frames;
+  std::vector<FrameImage> images;
+};
+
+// Four threads drain a queue through a FarmRun; every pixel is written by
+// exactly one set, every frame stored once.
+TEST(FarmQueue, ThreadsShareTheQueue) {
+  const int W = 5, H = 23;
+  WorkQueue q(settings(W, H), StripeLayout(H, 6), {0, 1, 2, 3, 4, 5, 6, 7}, {.preview_every = 3, .max_open_frames = 3});
+  RecordingSink sink;
+  {
+    FarmRun run(q, sink);
+    std::vector<std::thread> pool;
+    for (int t = 0; t < 4; ++t)
+      pool.emplace_back([&] {
+        while (auto item = q.take_wait()) {
+          FrameImage& c = q.canvas(*item);
+          for (int j : q.layout().rows(item->stripe))
+            for (int i = 0; i < W; ++i) c.rgb[3 * (j * W + i)] += 1.0f;
+          run.finish(*item, {1, 0, 0});
+        }
+      });
+    for (auto& t : pool) t.join();
+    while (!run.over()) run.wait(std::chrono::milliseconds(10));
+    run.close();
+    EXPECT_FALSE(run.error().has_value());
+  }
+  EXPECT_EQ(sink.frames.size(), 16u);  // 8 previews + 8 frames
+  std::multiset<int> frames(sink.frames.begin(), sink.frames.end());
+  for (int f = 0; f < 8; ++f) EXPECT_EQ(frames.count(f), 2u);
+  for (const auto& img : sink.images) {
+    bool preview = false;
+    for (int j = 0; j < H; ++j) {
+      const float v = img.rgb[3 * (j * W)];
+      EXPECT_TRUE(v == 0.0f || v == 1.0f);
+      preview |= v == 0.0f;
+    }
+    if (!preview) {
+      for (int p = 0; p < W * H; ++p) EXPECT_EQ(img.rgb[3 * p], 1.0f);
+    }
+  }
+  EXPECT_EQ(q.progress().stats.rays, 8 * 2 + 8 * 6);
+}
+
+TEST(FarmMessages, ResultRoundTripsRowsAndLayers) {
+  RenderSettings rs = settings(3, 5);
+  rs.layers = true;
+  FrameImage src = make_frame(rs), dst = make_frame(rs);
+  for (std::size_t i = 0; i < src.rgb.size(); ++i) src.rgb[i] = static_cast<float>(i) + 0.5f;
+  for (auto& l : src.layers)
+    for (std::size_t i = 0; i < l.values.size(); ++i) l.values[i] = -static_cast<float>(i);
+  const StripeLayout layout(5, 2);
+  const WorkItem item{4, 1, Pass::full};
+  const Bytes b = pack_result(item, {7, 8, 9}, src, layout.rows(1));
+  EXPECT_EQ(result_item(b), item);
+  const RenderStats st = unpack_result(b, dst, layout.rows(1));
+  EXPECT_EQ(st.rays, 7);
+  EXPECT_EQ(st.gave_up, 9);
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j * 3 + i);
+      EXPECT_EQ(dst.rgb[3 * p], j % 2 == 1 ? src.rgb[3 * p] : 0.0f);
+      EXPECT_EQ(dst.layers[4].values[p], j % 2 == 1 ? src.layers[4].values[p] : 0.0f);
+    }
+  EXPECT_THROW(unpack_result(b, dst, layout.rows(0)), std::runtime_error);  // 3 rows, not 2
+  EXPECT_EQ(unpack_items(pack_items({{1, 2, Pass::preview}, {3, 4, Pass::full}})),
+            (std::vector<WorkItem>{{1, 2, Pass::preview}, {3, 4, Pass::full}}));
+}
+
+TEST(FarmPreview, MissingRowsComeFromTheNearestRenderedRow) {
+  FrameImage img;
+  img.width = 1;
+  img.height = 9;
+  img.rgb.assign(27, 0.0f);
+  for (int j : {0, 4, 8}) img.rgb[3 * j] = static_cast<float>(j);
+  fill_missing_rows(img, {0, 4, 8});
+  std::vector<float> r;
+  for (int j = 0; j < 9; ++j) r.push_back(img.rgb[3 * j]);
+  EXPECT_EQ(r, (std::vector<float>{0, 0, 0, 4, 4, 4, 4, 8, 8}));  // ties go to the row above
+  FrameImage one = img;
+  one.rgb.assign(27, 0.0f);
+  one.rgb[3 * 5] = 5;
+  fill_missing_rows(one, {5});
+  for (int j = 0; j < 9; ++j) EXPECT_EQ(one.rgb[3 * j], 5.0f);
+}
+
+}  // namespace
+}  // namespace lc::farm

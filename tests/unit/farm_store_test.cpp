@@ -1,0 +1,115 @@
+// The frame store: one render per directory (the lock names its holder),
+// what resume trusts (journal line + files of the recorded sizes), and the
+// cleanup of temporaries a killed render left behind.
+
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "farm/frame_store.hpp"
+#include "farm/resume_plan.hpp"
+#include "frame_files.hpp"
+#include "render/renderer.hpp"
+#include "scratch_dir.hpp"
+
+namespace lc::farm {
+namespace {
+
+FrameImage tiny() {
+  RenderSettings rs;
+  rs.width = 4;
+  rs.height = 2;
+  FrameImage img = make_frame(rs);
+  img.rgb[0] = 0.5f;
+  return img;
+}
+
+TEST(FarmStore, SecondStoreOnTheDirectoryIsRefusedNamingThePid) {
+  test::ScratchDir dir;
+  FrameStore first(dir / "out", "s");
+  try {
+    FrameStore second(dir / "out", "s");
+    FAIL() << "second store took the lock";
+  } catch (const std::runtime_error& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("another lightcone render is writing there"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("pid " + std::to_string(::getpid())), std::string::npos) << msg;
+  }
+}
+
+TEST(FarmStore, LockIsReleasedAndRemoved) {
+  test::ScratchDir dir;
+  { FrameStore first(dir / "out", "s"); }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / DirLock::file_name));
+  EXPECT_NO_THROW(FrameStore again(dir / "out", "s"));
+}
+
+TEST(FarmStore, ResumeTrustsJournalAndFileSizes) {
+  test::ScratchDir dir;
+  const FrameSettings st{4, 2, 1, false};
+  {
+    FrameStore store(dir.path(), "s");
+    store.write_frame(0, tiny(), {}, st, "00000000000000aa", 8);
+    store.write_frame(1, tiny(), {}, st, "00000000000000aa", 8);
+    store.write_frame(2, tiny(), {}, st, "00000000000000aa", 8);
+  }
+  // A frame file without a journal line, and a damaged frame.
+  write_frame_files(dir.path(), "s", 3, tiny(), {});
+  std::filesystem::resize_file(frame_path(dir.path(), "s", 1, "exr"), 10);
+  std::filesystem::remove(frame_path(dir.path(), "s", 2, "png"));
+  FrameStore store(dir.path(), "s");
+  EXPECT_EQ(store.state(0, st, "00000000000000aa"), FrameState::done);
+  EXPECT_EQ(store.state(1, st, "00000000000000aa"), FrameState::damaged);
+  EXPECT_EQ(store.state(2, st, "00000000000000aa"), FrameState::damaged);
+  EXPECT_EQ(store.state(3, st, "00000000000000aa"), FrameState::todo);
+  EXPECT_EQ(store.state(0, st, "00000000000000bb"), FrameState::stale);
+  EXPECT_EQ(store.state(0, {8, 4, 1, false}, "00000000000000aa"), FrameState::stale);
+}
+
+TEST(FarmStore, RefusalNamesTheChangedInputAndForceRendersOnlyThose) {
+  test::ScratchDir dir;
+  const FrameSettings st{4, 2, 1, false};
+  {
+    FrameStore store(dir.path(), "s");
+    store.note_inputs({{"/x/shot.lua", "00000000000000aa"}});
+    store.write_frame(0, tiny(), {}, st, "00000000000000aa", 8);
+    store.write_frame(1, tiny(), {}, st, "00000000000000cc", 8);
+  }
+  FrameStore store(dir.path(), "s");
+  ShotSurvey survey;
+  survey.files["/x/shot.lua"] = "00000000000000bb";
+  survey.frames[0].inputs = "00000000000000bb";
+  survey.frames[1].inputs = "00000000000000cc";
+  survey.frames[2].inputs = "00000000000000bb";
+  try {
+    plan_resume(store, survey, st, {0, 1, 2}, false, "s");
+    FAIL() << "changed inputs accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("other versions of: /x/shot.lua"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--force"), std::string::npos) << e.what();
+  }
+  const ResumePlan plan = plan_resume(store, survey, st, {0, 1, 2}, true, "s");
+  EXPECT_EQ(plan.todo, (std::vector<int>{0, 2}));
+  EXPECT_EQ(plan.stale, (std::vector<int>{0}));
+  EXPECT_EQ(plan.done, (std::vector<int>{1}));
+}
+
+TEST(FarmStore, TemporariesOfAKilledRenderAreRemoved) {
+  test::ScratchDir dir;
+  std::ofstream(dir / "s.0003.exr.tmp-12345") << "half";
+  std::ofstream(dir / "other.0003.exr.tmp-12345") << "not ours";
+  std::ofstream(dir / "s.notes.txt") << "not a temporary";
+  FrameStore store(dir.path(), "s");
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.0003.exr.tmp-12345"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "other.0003.exr.tmp-12345"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "s.notes.txt"));
+}
+
+TEST(FarmStore, FrameListsAreCompact) {
+  EXPECT_EQ(format_frame_list({4, 0, 1, 2, 7, 9, 10}), "0-2, 4, 7, 9-10");
+  EXPECT_EQ(format_frame_list({}), "");
+}
+
+}  // namespace
+}  // namespace lc::farm
