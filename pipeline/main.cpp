@@ -10,6 +10,7 @@
 #include "bench_command.hpp"
 #include "contact_sheet_command.hpp"
 #include "encode_command.hpp"
+#include "farm_bench_command.hpp"
 #include "geodesic_command.hpp"
 #include "inspect_command.hpp"
 #include "render_command.hpp"
@@ -44,6 +45,15 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("--force", render.force, "Resume even if the shot or settings changed: re-render the frames that differ");
   render_cmd->add_option("--progress", render.progress,
                          "Seconds between progress lines when stderr is not a terminal (default 5; 0: none)");
+
+  lc::FarmBenchCommand farm_bench;
+  auto* farm_bench_cmd = app.add_subcommand(
+      "farm-bench", "Time the render farm alone (working sets that cost nothing; run under mpirun for the master)");
+  farm_bench_cmd->add_option("--size", farm_bench.size, "Image size WxH (default 1280x720)");
+  farm_bench_cmd->add_option("--stripes", farm_bench.stripes, "Working sets per frame (default 512)")->check(CLI::Range(1, 16384));
+  farm_bench_cmd->add_option("--frames", farm_bench.frames, "Frames (default 16)")->check(CLI::Range(1, 100000));
+  farm_bench_cmd->add_flag("--layers", farm_bench.layers, "Send the five data layers too");
+  farm_bench_cmd->add_option("--threads", farm_bench.threads, "Worker threads per process")->check(CLI::Range(1, 1024));
 
   lc::InspectCommand inspect;
   auto* inspect_cmd = app.add_subcommand("inspect", "Print the evaluated scene of each frame as JSON, without rendering");
@@ -113,6 +123,7 @@ int main(int argc, char** argv) {
   try {
     if (*geodesic) return lc::run_geodesic(geo);
     if (*render_cmd) return lc::run_render(render);
+    if (*farm_bench_cmd) return lc::run_farm_bench(farm_bench);
     if (*inspect_cmd) return lc::run_inspect(inspect);
     if (*trace_cmd) return lc::run_trace(trace);
     if (*starfield_cmd) return lc::run_starfield(starfield);

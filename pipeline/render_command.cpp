@@ -1,16 +1,25 @@
 #include "render_command.hpp"
 
-#include <chrono>
+#include <csignal>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
-#include <thread>
 
 #include <fmt/format.h>
 
-#include "frame_files.hpp"
+#include "farm/content_hash.hpp"
+#include "farm/farm_run.hpp"
+#include "farm/frame_store.hpp"
+#include "farm/local_farm.hpp"
+#include "farm/mpi_master.hpp"
+#include "farm/mpi_session.hpp"
+#include "farm/mpi_worker.hpp"
+#include "farm/progress.hpp"
+#include "farm/resume_plan.hpp"
+#include "farm/shot_inputs.hpp"
+#include "farm/store_sink.hpp"
+#include "farm/threads.hpp"
 #include "frame_range.hpp"
-#include "render/renderer.hpp"
-#include "render/scene_builder.hpp"
 #include "scene/shot.hpp"
 
 namespace lc {
@@ -34,61 +43,178 @@ std::pair<int, int> output_size(int width, int height, const std::optional<std::
   return {width, height};
 }
 
-int run_render(const RenderCommand& cmd) {
-  Shot shot(cmd.shot);
-  const ShotInfo& info = shot.info();
-  const FrameRange range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
+namespace {
+
+using farm::StripeLayout;
+
+// What every rank derives alike from the flags and the shot script.
+struct Job {
+  std::unique_ptr<Shot> shot;
   RenderSettings rs;
-  std::tie(rs.width, rs.height) = output_size(info.width, info.height, cmd.size, cmd.scale);
-  rs.supersample = cmd.supersample.value_or(info.supersample);
-  if (rs.supersample < 1 || rs.supersample > 16)
-    throw std::invalid_argument(fmt::format("--supersample {}: must be between 1 and 16", rs.supersample));
-  rs.layers = cmd.layers;
-  const int threads = cmd.threads > 0 ? cmd.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<int> frames;
+  StripeLayout layout{1, 1};
+  int preview = 0;
+  std::uint64_t digest = 0;
+};
 
-  std::error_code ec;
-  std::filesystem::create_directories(cmd.out, ec);
-  if (ec || !std::filesystem::is_directory(cmd.out))
-    throw std::runtime_error(fmt::format("--out {}: cannot create the output directory: {}", cmd.out.string(),
-                                         ec ? ec.message() : "a file of that name exists"));
+// Loads the shot and checks the flags.  Throws std::invalid_argument naming
+// the flag, or the script's own error.
+Job load_job(const RenderCommand& cmd) {
+  Job job;
+  if (cmd.stripes && (*cmd.stripes < 1 || *cmd.stripes > 16384))
+    throw std::invalid_argument(fmt::format("--stripes {}: must be between 1 and 16384", *cmd.stripes));
+  if (!(cmd.progress >= 0) || !std::isfinite(cmd.progress))
+    throw std::invalid_argument(fmt::format("--progress {}: must be 0 (off) or a number of seconds", cmd.progress));
+  job.shot = std::make_unique<Shot>(cmd.shot);
+  const ShotInfo& info = job.shot->info();
+  const FrameRange range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
+  job.frames = range.frames();
+  std::tie(job.rs.width, job.rs.height) = output_size(info.width, info.height, cmd.size, cmd.scale);
+  job.rs.supersample = cmd.supersample.value_or(info.supersample);
+  if (job.rs.supersample < 1 || job.rs.supersample > 16)
+    throw std::invalid_argument(fmt::format("--supersample {}: must be between 1 and 16", job.rs.supersample));
+  job.rs.layers = cmd.layers;
+  job.layout = StripeLayout(job.rs.height, cmd.stripes.value_or(farm::default_stripes));
+  job.preview = cmd.preview;
+  if (job.preview != 0 && (job.preview < 2 || job.preview > job.layout.stripes()))
+    throw std::invalid_argument(fmt::format(
+        "--preview {}: must be between 2 and the number of stripes ({}; see --stripes)", cmd.preview, job.layout.stripes()));
+  job.digest = farm::job_digest(*job.shot, job.rs, job.layout.stripes(), job.preview);
+  return job;
+}
 
-  ShotResources resources(shot.asset_dirs());
-  const auto frames = range.frames();
-  fmt::print(stderr, "render: {} frame{} of '{}' at {}x{}, {}x{} samples per pixel, {} thread{} -> {}\n",
-             frames.size(), frames.size() == 1 ? "" : "s", info.name, rs.width, rs.height, rs.supersample,
-             rs.supersample, threads, threads == 1 ? "" : "s", cmd.out.string());
-  const auto t_start = std::chrono::steady_clock::now();
-  RenderStats total;
-  int done = 0;
-  for (int f : frames) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const FrameScene fs = shot.frame(f);
-    const Scene scene = [&] {
-      try {
-        return build_scene(fs, rs.width, rs.height, resources);
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(fmt::format("{}: frame {}: {}", cmd.shot.string(), f, e.what()));
-      }
-    }();
-    RenderStats stats;
-    const FrameImage img = render_frame(scene, rs, threads, &stats);
-    write_frame_files(cmd.out, info.name, f, img,
-                      {{"lightcone/shot", info.name},
-                       {"lightcone/frame", std::to_string(f)},
-                       {"lightcone/spacetime", describe(fs.spacetime)},
-                       {"lightcone/supersample", std::to_string(rs.supersample)},
-                       {"lightcone/version", LIGHTCONE_VERSION}});
-    total += stats;
-    ++done;
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    fmt::print(stderr, "render: frame {} ({}/{}) in {:.2f} s, {} rays, {:.0f} rays/s{}\n", f, done, frames.size(), s,
-               stats.rays, stats.rays / s,
-               stats.gave_up ? fmt::format(", {} rays gave up (black)", stats.gave_up) : "");
+// The rows a preview frame holds, top to bottom.
+std::vector<int> preview_rows(const farm::WorkQueue& queue) {
+  std::vector<int> rows;
+  for (int s : queue.stripes_of(farm::Pass::preview))
+    for (int j : queue.layout().rows(s)) rows.push_back(j);
+  std::sort(rows.begin(), rows.end());
+  return rows;
+}
+
+// Says what resuming keeps and redoes.
+void report_plan(const farm::ResumePlan& plan, std::size_t asked, const RenderCommand& cmd) {
+  if (!plan.done.empty())
+    fmt::print(stderr, "render: resuming: {} of {} frames already finished in {} ({})\n", plan.done.size(), asked,
+               cmd.out.string(), farm::format_frame_list(plan.done));
+  if (!plan.damaged.empty())
+    fmt::print(stderr, "render: frames {}: in the journal but their files are missing or changed; rendering them again\n",
+               farm::format_frame_list(plan.damaged));
+  if (!plan.stale.empty())
+    fmt::print(stderr, "render: --force: frames {} were made from other settings or inputs; rendering them again\n",
+               farm::format_frame_list(plan.stale));
+}
+
+// Stops the MPI workers once, on whichever way the master leaves (they
+// wait for its word however it fails).
+class WorkerStop {
+ public:
+  explicit WorkerStop(const farm::MpiSession* mpi) : mpi_(mpi) {}
+  ~WorkerStop() { now(); }
+  WorkerStop(const WorkerStop&) = delete;
+  WorkerStop& operator=(const WorkerStop&) = delete;
+  void now() {
+    if (mpi_ && !done_) farm::stop_mpi_workers(*mpi_);
+    done_ = true;
   }
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-  fmt::print(stderr, "render: done: {} frames in {:.2f} s, {} rays, {:.0f} rays per core-second\n", done, s, total.rays,
-             total.rays / s / threads);
+
+ private:
+  const farm::MpiSession* mpi_;
+  bool done_ = false;
+};
+
+// The local farm, or the master of an MPI farm (mpi non-null): everything
+// but the rendering itself.
+int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
+  WorkerStop stop_workers(mpi);
+  Job job = load_job(cmd);
+  const ShotInfo& info = job.shot->info();
+  const farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
+  farm::FrameStore store(cmd.out, info.name);
+  const farm::FrameSettings settings = farm::frame_settings(job.rs);
+  const farm::ResumePlan plan = farm::plan_resume(store, survey, settings, job.frames, cmd.force, info.name);
+
+  const int threads = mpi ? 0 : (cmd.threads > 0 ? cmd.threads : farm::usable_cpus());
+  const std::string who = mpi ? fmt::format("{} ranks (a master and {} workers)", mpi->size(), mpi->size() - 1)
+                              : fmt::format("{} thread{}", threads, threads == 1 ? "" : "s");
+  fmt::print(stderr, "render: {} frame{} of '{}' at {}x{}, {}x{} samples per pixel, {} stripes, {} -> {}\n",
+             job.frames.size(), job.frames.size() == 1 ? "" : "s", info.name, job.rs.width, job.rs.height,
+             job.rs.supersample, job.rs.supersample, job.layout.stripes(), who, cmd.out.string());
+  report_plan(plan, job.frames.size(), cmd);
+  if (plan.todo.empty()) {
+    fmt::print(stderr, "render: done: nothing to render, all {} frames are finished\n", job.frames.size());
+    return 0;
+  }
+  store.note_inputs(survey.files);
+
+  farm::WorkQueue queue(job.rs, job.layout, plan.todo,
+                        {.preview_every = job.preview, .max_open_frames = farm::open_frames_for(std::max(threads, 1), job.layout.stripes())});
+  farm::StoreSink sink(store, survey, info.name, job.rs, preview_rows(queue));
+  farm::Progress progress(farm::progress_style_for(stderr, cmd.progress), cmd.progress);
+  int cores = threads;
+  std::optional<std::string> error;
+  {
+    farm::FarmRun run(queue, sink);
+    if (mpi) {
+      cores = farm::run_mpi_master(*mpi, queue, run, progress, job.digest).worker_threads;
+      stop_workers.now();
+    } else {
+      farm::SceneCache scenes(*job.shot, job.rs.width, job.rs.height);
+      farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout);
+      farm::run_local_farm(queue, run, renderer, threads, progress);
+    }
+    run.close();
+    error = run.error();
+  }
+  progress.finish();
+  const farm::QueueProgress p = queue.progress();
+  if (error) {
+    if (p.frames_stored > 0 || !plan.done.empty())
+      fmt::print(stderr, "render: stopped after {} new frame{}; finished frames are kept, the same command resumes\n",
+                 p.frames_stored, p.frames_stored == 1 ? "" : "s");
+    throw std::runtime_error(*error);
+  }
+  const double s = progress.elapsed();
+  fmt::print(stderr, "render: done: {} frames in {:.2f} s, {} rays, {:.0f} rays/s, {:.0f} rays per core-second ({} core{}){}\n",
+             p.frames_stored, s, p.stats.rays, p.stats.rays / s, p.stats.rays / s / std::max(1, cores), cores,
+             cores == 1 ? "" : "s",
+             plan.done.empty() ? "" : fmt::format("; {} more were finished before", plan.done.size()));
+  if (p.stats.gave_up)
+    fmt::print(stderr, "render: {} rays gave up (drawn black)\n", p.stats.gave_up);
   return 0;
+}
+
+// A worker rank: loads the same job, renders what the master hands out.
+// Prints nothing: the master reports, errors included.
+int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
+  std::optional<std::string> setup_error;
+  Job job;
+  try {
+    job = load_job(cmd);
+  } catch (const std::exception& e) {
+    setup_error = e.what();
+  }
+  const int threads = cmd.threads > 0 ? cmd.threads : farm::default_threads(mpi.workers_on_node());
+  std::unique_ptr<farm::SceneCache> scenes;
+  std::unique_ptr<farm::SceneStripeRenderer> renderer;
+  if (!setup_error) {
+    scenes = std::make_unique<farm::SceneCache>(*job.shot, job.rs.width, job.rs.height);
+    renderer = std::make_unique<farm::SceneStripeRenderer>(*scenes, job.rs, job.layout);
+  }
+  farm::run_mpi_worker(mpi, renderer.get(), job.rs, job.layout, threads, job.digest, setup_error);
+  return 0;
+}
+
+}  // namespace
+
+int run_render(const RenderCommand& cmd) {
+  // A file-size limit (ulimit -f) must fail the write with EFBIG and a
+  // message, not kill the process with SIGXFSZ.
+  std::signal(SIGXFSZ, SIG_IGN);
+  farm::MpiSession mpi;
+  if (mpi.size() <= 1) return render_as_master(cmd, nullptr);
+  if (mpi.rank() != 0) return render_as_worker(cmd, mpi);
+  return render_as_master(cmd, &mpi);
 }
 
 }  // namespace lc

@@ -1,6 +1,7 @@
 #pragma once
 // `lightcone render SHOT.lua --out DIR [...]`: renders frames of a shot with
-// every core and writes them (docs/cli.md).
+// the farm — threads on every core, or master and workers under mpirun —
+// into a resumable frame store (docs/cli.md, docs/cluster.md).
 
 #include <filesystem>
 #include <optional>
@@ -16,7 +17,11 @@ struct RenderCommand {
   double scale = 1.0;
   std::optional<int> supersample;
   bool layers = false;
-  int threads = 0;
+  int threads = 0;                    // 0: every core (under MPI: the node's share)
+  std::optional<int> stripes;         // working sets per frame (default: farm::default_stripes)
+  int preview = 0;                    // k >= 2: every k-th stripe of every frame first
+  bool force = false;                 // re-render frames made from other settings or inputs
+  double progress = 5.0;              // seconds between plain progress lines (0: none)
 };
 
 int run_render(const RenderCommand& cmd);
