@@ -11,6 +11,7 @@
 
 #include "farm/content_hash.hpp"
 #include "farm/farm_run.hpp"
+#include "farm/frame_writer.hpp"
 #include "farm/local_farm.hpp"
 #include "farm/mpi_master.hpp"
 #include "farm/mpi_session.hpp"
@@ -48,7 +49,8 @@ double time_frame_write(const RenderSettings& rs) {
   try {
     for (int k = 0; k < 3; ++k) {
       const auto t0 = std::chrono::steady_clock::now();
-      write_frame_files(dir, "bench", k, img, {{"lightcone/shot", "bench"}});
+      farm::write_verified(frame_path(dir, "bench", k, "exr"), farm::FrameFormat::exr, img, {{"lightcone/shot", "bench"}});
+      farm::write_verified(frame_path(dir, "bench", k, "png"), farm::FrameFormat::png, img);
       best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
   } catch (...) {
@@ -121,7 +123,7 @@ int run_farm_bench(const FarmBenchCommand& cmd) {
   if (mpi.size() > 1)
     fmt::print("  master CPU: {:.2f} s for {:.2f} s of wall time ({:.0f}% of one core)\n", cpu, wall, 100 * cpu / wall);
   const double write = time_frame_write(rs);
-  fmt::print("  writing one frame (EXR + PNG, fsynced): {:.3f} s, so at most {:.1f} frames/s from one master\n", write,
+  fmt::print("  writing one frame (EXR + PNG, verified, fsynced): {:.3f} s, so at most {:.1f} frames/s from one master\n", write,
              1.0 / write);
   return 0;
 }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <sys/resource.h>
 
 #include "farm/content_hash.hpp"
 #include "farm/farm_run.hpp"
@@ -105,6 +106,13 @@ void report_plan(const farm::ResumePlan& plan, std::size_t asked, const RenderCo
                farm::format_frame_list(plan.stale));
 }
 
+// CPU time of this process so far (user + system), all threads.
+double master_cpu_seconds() {
+  rusage u{};
+  ::getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 // Stops the MPI workers once, on whichever way the master leaves (they
 // wait for its word however it fails).
 class WorkerStop {
@@ -135,7 +143,8 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   const farm::ResumePlan plan = farm::plan_resume(store, survey, settings, job.frames, cmd.force, info.name);
 
   const int threads = mpi ? 0 : (cmd.threads > 0 ? cmd.threads : farm::usable_cpus());
-  const std::string who = mpi ? fmt::format("{} ranks (a master and {} workers)", mpi->size(), mpi->size() - 1)
+  const std::string who = mpi ? fmt::format("{} ranks (a master and {} worker{})", mpi->size(), mpi->size() - 1,
+                                            mpi->size() == 2 ? "" : "s")
                               : fmt::format("{} thread{}", threads, threads == 1 ? "" : "s");
   fmt::print(stderr, "render: {} frame{} of '{}' at {}x{}, {}x{} samples per pixel, {} stripes, {} -> {}\n",
              job.frames.size(), job.frames.size() == 1 ? "" : "s", info.name, job.rs.width, job.rs.height,
@@ -152,6 +161,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   farm::StoreSink sink(store, survey, info.name, job.rs, preview_rows(queue));
   farm::Progress progress(farm::progress_style_for(stderr, cmd.progress), cmd.progress);
   int cores = threads;
+  const double cpu_at_start = master_cpu_seconds();
   std::optional<std::string> error;
   {
     farm::FarmRun run(queue, sink);
@@ -179,6 +189,9 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
              p.frames_stored, s, p.stats.rays, p.stats.rays / s, p.stats.rays / s / std::max(1, cores), cores,
              cores == 1 ? "" : "s",
              plan.done.empty() ? "" : fmt::format("; {} more were finished before", plan.done.size()));
+  if (mpi)
+    fmt::print(stderr, "render: the master used {:.2f} s of CPU in {:.2f} s ({:.0f}% of one core) while {} worker threads rendered\n",
+               master_cpu_seconds() - cpu_at_start, s, 100 * (master_cpu_seconds() - cpu_at_start) / s, cores);
   if (p.stats.gave_up)
     fmt::print(stderr, "render: {} rays gave up (drawn black)\n", p.stats.gave_up);
   return 0;

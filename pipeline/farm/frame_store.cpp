@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "farm/frame_writer.hpp"
 #include "frame_files.hpp"
 
 namespace lc::farm {
@@ -118,7 +119,10 @@ void FrameStore::note_inputs(const std::map<std::string, std::string>& files) {
 
 void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata,
                              const FrameSettings& settings, const std::string& inputs, long rays) {
-  with_space_hint(dir_, [&] { write_frame_files(dir_, shot_, frame, image, metadata); });
+  with_space_hint(dir_, [&] {
+    write_verified(frame_path(dir_, shot_, frame, "exr"), FrameFormat::exr, image, metadata);
+    write_verified(frame_path(dir_, shot_, frame, "png"), FrameFormat::png, image);
+  });
   sync_dir(dir_);
   JournalFrame jf;
   jf.frame = frame;
@@ -167,23 +171,7 @@ void FrameStore::write_preview(int frame, FrameImage image, const std::vector<in
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw std::runtime_error(fmt::format("cannot create {}: {}", dir.string(), ec.message()));
-  const fs::path final = frame_path(dir, shot_, frame, "png");
-  fs::path temp = final;
-  temp += fmt::format(".tmp-{}", ::getpid());
-  try {
-    with_space_hint(dir, [&] { write_png(temp, image); });
-    const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0 || ::fsync(fd) != 0) {
-      const int err = errno;
-      if (fd >= 0) ::close(fd);
-      throw std::runtime_error(fmt::format("cannot sync {}: {}", temp.string(), std::strerror(err)));
-    }
-    ::close(fd);
-    fs::rename(temp, final);
-  } catch (...) {
-    fs::remove(temp, ec);
-    throw;
-  }
+  with_space_hint(dir, [&] { write_verified(frame_path(dir, shot_, frame, "png"), FrameFormat::png, image); });
 }
 
 }  // namespace lc::farm

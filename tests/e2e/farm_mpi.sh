@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The farm gives the same bytes however it is run: one thread, several
+# threads with another stripe count, real mpirun with 2 and 3 ranks (and a
+# preview pass); progress lines, the live line on a terminal, the summary,
+# an idle master, and farm-bench under mpirun.
+source "$(dirname "$0")/lib.sh"
+e2e_begin "$@"
+
+# Open MPI in a test: root allowed, more ranks than cores, no ssh needed,
+# no cross-memory attach (often forbidden in containers), no core binding
+# (the master sleeps; its core is for the workers).
+export OMPI_MCA_plm_rsh_agent=
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_btl_vader_single_copy_mechanism=none
+export OMPI_MCA_rmaps_base_oversubscribe=1
+mpi() {
+  local n="$1"
+  shift
+  timeout 120 mpirun --oversubscribe --bind-to none -n "$n" "$@"
+}
+SHOT="$SRC/tests/data/farm/farm_orbit.lua"
+
+# same_frames A B: every EXR and PNG of A is byte-identical in B (EXR
+# headers carry no timestamp, so equal pixels give equal files).
+same_frames() {
+  local n=0
+  for f in "$1"/farm_orbit.*.exr "$1"/farm_orbit.*.png; do
+    n=$((n + 1))
+    cmp -s "$f" "$2/$(basename "$f")" || fail "$(basename "$f") differs between $1 and $2"
+  done
+  [ "$n" -eq 20 ] || fail "$1 holds $n frame files, expected 20"
+}
+
+"$LIGHTCONE" render "$SHOT" --out ref --layers --threads 1 2>ref.log || fail "1-thread render: $(cat ref.log)"
+grep -q "render: done: 10 frames" ref.log || fail "no summary: $(cat ref.log)"
+grep -q "rays per core-second (1 core)" ref.log || fail "summary lacks rays per core-second: $(cat ref.log)"
+
+"$LIGHTCONE" render "$SHOT" --out t2 --layers --threads 2 --stripes 7 --progress 0.05 2>t2.log || fail "2 threads: $(cat t2.log)"
+same_frames ref t2
+# Not a terminal: plain progress lines.
+grep -Eq "^render: [0-9]+/10 frames, [0-9]+%, .* rays/s" t2.log || fail "no plain progress line: $(cat t2.log)"
+
+mpi 2 "$LIGHTCONE" render "$SHOT" --out m2 --layers 2>m2.log || fail "mpirun -n 2: $(cat m2.log)"
+grep -q "2 ranks (a master and 1 worker)" m2.log || fail "not a 2-rank farm: $(cat m2.log)"
+same_frames ref m2
+
+mpi 3 "$LIGHTCONE" render "$SHOT" --out m3 --layers --stripes 5 --preview 2 2>m3.log || fail "mpirun -n 3: $(cat m3.log)"
+grep -q "3 ranks (a master and 2 workers)" m3.log || fail "not a 3-rank farm: $(cat m3.log)"
+same_frames ref m3
+[ "$(ls m3/preview/farm_orbit.*.png | wc -l)" -eq 10 ] || fail "previews: $(ls m3/preview)"
+# The master sleeps while it waits: far less than a core.
+pct=$(sed -n 's/.*of CPU in .* (\([0-9]*\)% of one core).*/\1/p' m3.log)
+[ -n "$pct" ] && [ "$pct" -lt 50 ] || fail "master CPU: $(grep master m3.log)"
+# The same preview pass without MPI gives the same previews.
+"$LIGHTCONE" render "$SHOT" --out p1 --layers --stripes 5 --preview 2 --threads 2 2>p1.log || fail "local preview: $(cat p1.log)"
+for f in m3/preview/*.png; do cmp -s "$f" "p1/preview/$(basename "$f")" || fail "preview $(basename "$f") differs"; done
+
+# On a terminal: one live line redrawn in place (carriage return, clear to
+# end of line), then the summary on a fresh line.
+if command -v script >/dev/null; then
+  script -qec "'$LIGHTCONE' render '$SHOT' --out tty --threads 1 --supersample 2" /dev/null >tty.log 2>&1 </dev/null \
+    || fail "render on a pty: $(cat tty.log)"
+  grep -q $'\r''render: [0-9]*/10 frames' tty.log || fail "no live line on a terminal: $(cat -v tty.log)"
+  grep -q $'\x1b\[K' tty.log || fail "live line is not cleared to the end: $(cat -v tty.log)"
+  grep -q "render: done: 10 frames" tty.log || fail "no summary on a terminal: $(cat -v tty.log)"
+fi
+
+# farm-bench under mpirun: the master's rate of handing out and assembling.
+mpi 2 "$LIGHTCONE" farm-bench --size 128x72 --stripes 16 --frames 4 >bench.log 2>&1 || fail "farm-bench: $(cat bench.log)"
+grep -Eq "handed out and assembled: [0-9]+ working sets/s" bench.log || fail "farm-bench output: $(cat bench.log)"
+grep -q "master CPU" bench.log || fail "farm-bench lacks the master's CPU: $(cat bench.log)"
+
+if ls ref m2 m3 | grep -q tmp; then fail "temporary files left behind"; fi
+e2e_end
