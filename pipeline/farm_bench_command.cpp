@@ -1,6 +1,8 @@
 #include "farm_bench_command.hpp"
 
+#include <atomic>
 #include <chrono>
+#include <thread>
 #include <filesystem>
 #include <numeric>
 #include <stdexcept>
@@ -36,31 +38,56 @@ double cpu_seconds() {
   return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
-// Seconds to write one frame of these settings as EXR + PNG (best of 3),
+struct WriteTiming {
+  double one = 0;       // seconds for one frame, alone (best of 3)
+  double parallel = 0;  // frames per second with `writers` threads at once
+};
+
+// Times writing frames of these settings as EXR + PNG the way the frame
+// store does (verified, synced), alone and with `writers` threads at once,
 // into a scratch folder that is removed afterwards.
-double time_frame_write(const RenderSettings& rs) {
+WriteTiming time_frame_writes(const RenderSettings& rs, int writers) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / fmt::format("lightcone-farm-bench-{}", ::getpid());
   fs::create_directories(dir);
   FrameImage img = make_frame(rs);
-  // A gradient rather than zeros, so compression has something to do.
+  // A pattern rather than zeros, so compression has something to do.
   for (std::size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = static_cast<float>((i * 2654435761u) % 1000) / 1000.0f;
-  double best = 1e30;
+  auto write = [&](int k) {
+    farm::write_verified(frame_path(dir, "bench", k, "exr"), farm::FrameFormat::exr, img, {{"lightcone/shot", "bench"}});
+    farm::write_verified(frame_path(dir, "bench", k, "png"), farm::FrameFormat::png, img);
+  };
+  auto since = [](auto t0) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  WriteTiming t;
+  t.one = 1e30;
+  std::exception_ptr failure;
   try {
     for (int k = 0; k < 3; ++k) {
       const auto t0 = std::chrono::steady_clock::now();
-      farm::write_verified(frame_path(dir, "bench", k, "exr"), farm::FrameFormat::exr, img, {{"lightcone/shot", "bench"}});
-      farm::write_verified(frame_path(dir, "bench", k, "png"), farm::FrameFormat::png, img);
-      best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      write(k);
+      t.one = std::min(t.one, since(t0));
     }
+    const int frames = 3 * writers;
+    std::atomic<int> next{0};
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::thread> pool;
+    for (int w = 0; w < writers; ++w)
+      pool.emplace_back([&] {
+        for (int k; (k = next.fetch_add(1)) < frames;) try {
+            write(100 + k);
+          } catch (...) {
+            failure = std::current_exception();
+          }
+      });
+    for (auto& th : pool) th.join();
+    t.parallel = frames / since(t0);
   } catch (...) {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-    throw;
+    failure = std::current_exception();
   }
   std::error_code ec;
   fs::remove_all(dir, ec);
-  return best;
+  if (failure) std::rethrow_exception(failure);
+  return t;
 }
 
 }  // namespace
@@ -122,9 +149,10 @@ int run_farm_bench(const FarmBenchCommand& cmd) {
              sets / wall, cmd.frames / wall, sets * bytes_per_set / wall / 1e6, bytes_per_set / 1e3, wall);
   if (mpi.size() > 1)
     fmt::print("  master CPU: {:.2f} s for {:.2f} s of wall time ({:.0f}% of one core)\n", cpu, wall, 100 * cpu / wall);
-  const double write = time_frame_write(rs);
-  fmt::print("  writing one frame (EXR + PNG, verified, fsynced): {:.3f} s, so at most {:.1f} frames/s from one master\n", write,
-             1.0 / write);
+  const WriteTiming write = time_frame_writes(rs, farm::master_writer_threads);
+  fmt::print("  writing frames (EXR + PNG, read back, fsynced): {:.3f} s for one alone; {:.1f} frames/s with the "
+             "master's {} writer threads\n",
+             write.one, write.parallel, farm::master_writer_threads);
   return 0;
 }
 

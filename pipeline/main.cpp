@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("--layers", render.layers, "Add data layers (hit.kind, hit.r, hit.phi, hit.t, hit.order) to the EXR");
   render_cmd->add_option("--threads", render.threads, "Render threads per process (default: every core; under mpirun the node's share)")
       ->check(CLI::Range(1, 1024));
-  render_cmd->add_option("--stripes", render.stripes, "Working sets per frame: interleaved row stripes (default 64)");
+  render_cmd->add_option("--stripes", render.stripes, "Working sets per frame: interleaved row stripes (default 512, at most the image height)");
   render_cmd->add_option("--preview", render.preview, "Render every K-th stripe of every frame first, as DIR/preview/*.png");
   render_cmd->add_flag("--force", render.force, "Resume even if the shot or settings changed: re-render the frames that differ");
   render_cmd->add_option("--progress", render.progress,

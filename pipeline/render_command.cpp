@@ -164,7 +164,9 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   const double cpu_at_start = master_cpu_seconds();
   std::optional<std::string> error;
   {
-    farm::FarmRun run(queue, sink);
+    // The MPI master has its cores to itself but for a worker's share:
+    // writing frames in parallel keeps up with many workers.
+    farm::FarmRun run(queue, sink, mpi ? farm::master_writer_threads : 1);
     if (mpi) {
       cores = farm::run_mpi_master(*mpi, queue, run, progress, job.digest).worker_threads;
       stop_workers.now();

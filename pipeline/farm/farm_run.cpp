@@ -2,7 +2,9 @@
 
 namespace lc::farm {
 
-FarmRun::FarmRun(WorkQueue& queue, FrameSink& sink) : queue_(queue), sink_(sink), writer_([this] { writer_loop(); }) {}
+FarmRun::FarmRun(WorkQueue& queue, FrameSink& sink, int writers) : queue_(queue), sink_(sink) {
+  for (int k = 0; k < std::max(1, writers); ++k) writers_.emplace_back([this] { writer_loop(); });
+}
 
 FarmRun::~FarmRun() { close(); }
 
@@ -43,7 +45,7 @@ void FarmRun::wait(std::chrono::milliseconds timeout) {
   changed_.wait_for(lock, timeout);
 }
 
-// Stores frames in completion order until closed and empty.  After its own
+// Each writer thread stores frames in completion order until closed and empty.  After its own
 // failure (a full disk) it stores nothing more: the next write would fail
 // alike, and the frames are rendered again on resume.
 void FarmRun::writer_loop() {
@@ -80,7 +82,8 @@ void FarmRun::close() {
     closing_ = true;
   }
   changed_.notify_all();
-  if (writer_.joinable()) writer_.join();
+  for (auto& w : writers_)
+    if (w.joinable()) w.join();
 }
 
 }  // namespace lc::farm

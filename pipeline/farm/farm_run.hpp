@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "farm/work_queue.hpp"
 
@@ -19,13 +20,21 @@ namespace lc::farm {
 class FrameSink {
  public:
   virtual ~FrameSink() = default;
-  // Called on the writer thread, one frame at a time; throws on failure.
+  // Called on the writer threads, each with a different frame (so
+  // concurrently when there are several); throws on failure.
   virtual void store(const CompletedFrame& frame) = 0;
 };
 
+// Writer threads of an MPI master (docs/cluster.md: one writes ~4 frames/s
+// of 1280x720, which feeds a few hundred cores at today's ray speed).
+inline constexpr int master_writer_threads = 4;
+
 class FarmRun {
  public:
-  FarmRun(WorkQueue& queue, FrameSink& sink);
+  // `writers` threads store frames in parallel (encoding and syncing a
+  // frame takes a quarter of a second at 1280x720: a master feeding many
+  // workers needs more than one).
+  FarmRun(WorkQueue& queue, FrameSink& sink, int writers = 1);
   ~FarmRun();  // close()s
   FarmRun(const FarmRun&) = delete;
   FarmRun& operator=(const FarmRun&) = delete;
@@ -54,7 +63,7 @@ class FarmRun {
   std::deque<CompletedFrame> pending_;
   std::optional<std::string> error_;
   bool closing_ = false, writer_failed_ = false;
-  std::thread writer_;
+  std::vector<std::thread> writers_;
 };
 
 }  // namespace lc::farm

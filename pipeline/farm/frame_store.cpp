@@ -109,6 +109,7 @@ FrameState FrameStore::state(int frame, const FrameSettings& settings, const std
 }
 
 void FrameStore::note_inputs(const std::map<std::string, std::string>& files) {
+  std::lock_guard lock(journal_mutex_);
   for (const auto& [path, hash] : files) {
     auto it = journal_.inputs.find(path);
     if (it != journal_.inputs.end() && it->second == hash) continue;
@@ -135,6 +136,7 @@ void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMeta
     throw std::runtime_error(fmt::format("frame {} vanished from {} right after it was written", frame, dir_.string()));
   jf.exr_bytes = *exr;
   jf.png_bytes = *png;
+  std::lock_guard lock(journal_mutex_);
   with_space_hint(dir_, [&] {
     while (!pending_input_lines_.empty()) {
       writer_->append(pending_input_lines_.front());

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,7 +54,8 @@ class FrameStore {
 
   // Writes a finished frame's EXR and PNG atomically, makes the renames
   // durable, then appends its journal line.  Throws std::runtime_error
-  // naming the file (a full disk, a vanished directory).
+  // naming the file (a full disk, a vanished directory).  Thread-safe for
+  // different frames (the journal appends are serialised).
   void write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata, const FrameSettings& settings,
                    const std::string& inputs, long rays);
 
@@ -70,6 +72,7 @@ class FrameStore {
   std::unique_ptr<DirLock> lock_;
   JournalContents journal_;
   std::unique_ptr<JournalWriter> writer_;
+  std::mutex journal_mutex_;  // writer_, journal_ and pending_input_lines_ after construction
   std::vector<std::string> pending_input_lines_;
 };
 

@@ -11,7 +11,7 @@ namespace lc::farm {
 
 // Stripes per frame when the user does not choose (docs/performance.md,
 // "Farm", has the measurement behind it).
-inline constexpr int default_stripes = 64;
+inline constexpr int default_stripes = 512;
 
 class StripeLayout {
  public:
