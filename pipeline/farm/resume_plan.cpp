@@ -23,6 +23,12 @@ std::string format_frame_list(std::vector<int> frames) {
 
 namespace {
 
+// "frame 3 was" / "frames 0-4 were".
+std::string frames_were(const std::vector<int>& frames) {
+  return frames.size() == 1 ? fmt::format("frame {} was", frames[0])
+                            : fmt::format("frames {} were", format_frame_list(frames));
+}
+
 // Why stale frames differ: settings per group, and the input files whose
 // recorded hash differs from today's.
 std::string explain_stale(const FrameStore& store, const ShotSurvey& survey, const FrameSettings& settings,
@@ -38,15 +44,15 @@ std::string explain_stale(const FrameStore& store, const ShotSurvey& survey, con
       by_inputs.push_back(f);
   }
   for (const auto& [desc, frames] : by_settings)
-    reasons.push_back(fmt::format("frames {} were rendered at {}, this render asks for {}", format_frame_list(frames),
-                                  desc, settings.describe()));
+    reasons.push_back(fmt::format("{} rendered at {}, this render asks for {}", frames_were(frames), desc,
+                                  settings.describe()));
   if (!by_inputs.empty()) {
     std::vector<std::string> changed;
     for (const auto& [path, hash] : survey.files) {
       auto it = store.journal().inputs.find(path);
       if (it != store.journal().inputs.end() && it->second != hash) changed.push_back(path);
     }
-    reasons.push_back(fmt::format("frames {} were rendered from {}", format_frame_list(by_inputs),
+    reasons.push_back(fmt::format("{} rendered from {}", frames_were(by_inputs),
                                   changed.empty() ? std::string("other inputs (the script, its modules or sky images)")
                                                   : fmt::format("other versions of: {}", fmt::join(changed, ", "))));
   }

@@ -12,7 +12,7 @@ class StoreSink final : public FrameSink {
  public:
   // `survey` gives each frame's input hash and spacetime; `preview_rows`
   // the rows a preview frame has (sorted).
-  StoreSink(FrameStore& store, const ShotSurvey& survey, const std::string& shot_name, const RenderSettings& rs,
+  StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
             std::vector<int> preview_rows);
   void store(const CompletedFrame& frame) override;
 
@@ -20,6 +20,7 @@ class StoreSink final : public FrameSink {
   FrameStore& store_;
   const ShotSurvey& survey_;
   std::string shot_name_;
+  double fps_;
   RenderSettings rs_;
   std::vector<int> preview_rows_;
 };

@@ -130,6 +130,12 @@ timeout 120 mpirun --oversubscribe --bind-to none -n 2 "$LIGHTCONE" render ergo.
   2>ergo_fixed.log || fail "resume after fixing the shot: $(cat ergo_fixed.log)"
 [ "$(grep -c '^frame=' ergo/ergo.journal)" -ge 3 ] || fail "ergo: $(cat ergo/ergo.journal)"
 
+# --- Ranks that loaded different jobs (here: other flags; on a cluster, a
+# stale copy of the shot on one node) refuse to work together.
+expect_error digest "rank 1 loaded a different job" -- timeout 120 mpirun --oversubscribe --bind-to none \
+  -n 1 "$LIGHTCONE" render "$SHOT" --out digest --progress 0 : -n 1 "$LIGHTCONE" render "$SHOT" --out digest --size 32x20
+if ls digest 2>/dev/null | grep -q '\.exr'; then fail "ranks that disagree rendered frames: $(ls digest)"; fi
+
 # --- A torn last journal line and a damaged frame: resume cuts the one and
 # re-renders the other.
 "$LIGHTCONE" render "$SHOT" --out torn --frames 0:4 --progress 0 2>torn1.log || fail "torn: $(cat torn1.log)"
