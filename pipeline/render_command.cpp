@@ -171,7 +171,9 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
       cores = farm::run_mpi_master(*mpi, queue, run, progress, job.digest).worker_threads;
       stop_workers.now();
     } else {
-      farm::SceneCache scenes(*job.shot, job.rs.width, job.rs.height);
+      // Enough scenes for every frame that can be open at once.
+      farm::SceneCache scenes(*job.shot, job.rs.width, job.rs.height,
+                              farm::open_frames_for(threads, job.layout.stripes()) + 2);
       farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout);
       farm::run_local_farm(queue, run, renderer, threads, progress);
     }
@@ -213,7 +215,9 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
   std::unique_ptr<farm::SceneCache> scenes;
   std::unique_ptr<farm::SceneStripeRenderer> renderer;
   if (!setup_error) {
-    scenes = std::make_unique<farm::SceneCache>(*job.shot, job.rs.width, job.rs.height);
+    // Enough scenes for the frames the sets in hand (two per thread) span.
+    scenes = std::make_unique<farm::SceneCache>(*job.shot, job.rs.width, job.rs.height,
+                                                farm::open_frames_for(threads, job.layout.stripes()) + 2);
     renderer = std::make_unique<farm::SceneStripeRenderer>(*scenes, job.rs, job.layout);
   }
   farm::run_mpi_worker(mpi, renderer.get(), job.rs, job.layout, threads, job.digest, setup_error);
