@@ -6,6 +6,7 @@
 # damaged frame.  Each: a clear message, a non-zero exit, nothing corrupt,
 # and a resume that works afterwards.
 source "$(dirname "$0")/lib.sh"
+umount "$3/disk" 2>/dev/null || true  # a tmpfs left by an interrupted earlier run
 e2e_begin "$@"
 
 export OMPI_MCA_plm_rsh_agent=

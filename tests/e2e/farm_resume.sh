@@ -36,11 +36,25 @@ same_frames() {
   if ls "$1" | grep -q tmp; then fail "$1: temporary files left: $(ls "$1")"; fi
 }
 
-# Local: four kills at random moments (0.3 to 1.8 s into a ~3 s render).
+# Local: four kills.  The first at a random moment of the first 1.5 s
+# (maybe before any frame is done); the others at a random moment within
+# 0.4 s after the next frame is journalled, so every round makes progress
+# however slow the machine is.
+frames_done() { grep -c '^frame=' "$1/farm_orbit.journal" 2>/dev/null || true; }
 for round in 1 2 3 4; do
+  before=$(frames_done local)
   "$LIGHTCONE" render "$SHOT" --out local --threads 2 "${ARGS[@]}" 2>>local.log &
   pid=$!
-  sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 0.3 + 1.5 * r / 32768 }')"
+  if [ "$round" -gt 1 ]; then
+    for _ in $(seq 1 600); do
+      [ "$(frames_done local)" -gt "${before:-0}" ] && break
+      kill -0 "$pid" 2>/dev/null || break
+      sleep 0.05
+    done
+    sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 0.4 * r / 32768 }')"
+  else
+    sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 1.5 * r / 32768 }')"
+  fi
   kill -9 "$pid" 2>/dev/null || true
   wait "$pid" 2>/dev/null || true
   check_store local
