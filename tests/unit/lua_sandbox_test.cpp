@@ -523,9 +523,11 @@ TEST(LuaSandbox, CallErrorsAndLimitsArePerCall) {
     return seconds_since(t0);
   };
   const double n = 1e6 * 0.4 / std::max(work(1e6), 1e-6);
+  // Call until together the calls have run well past the limit (the machine
+  // may speed up or slow down between calls); none of them may be stopped.
   double total = 0;
-  for (int i = 0; i < 3; ++i) total += work(n);
-  EXPECT_GT(total, 1.0);
+  for (int i = 0; i < 20 && total < 1.5; ++i) total += work(n);
+  EXPECT_GT(total, 1.5);
   EXPECT_EQ(lua_gettop(P), 1);
   EXPECT_EQ(lua_gettop(L), 1);
 }
