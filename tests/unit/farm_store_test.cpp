@@ -10,6 +10,7 @@
 #include "farm/frame_store.hpp"
 #include "farm/resume_plan.hpp"
 #include "frame_files.hpp"
+#include "image/image_io.hpp"
 #include "render/renderer.hpp"
 #include "scratch_dir.hpp"
 
@@ -55,7 +56,8 @@ TEST(FarmStore, ResumeTrustsJournalAndFileSizes) {
     store.write_frame(2, tiny(), {}, st, "00000000000000aa", 8);
   }
   // A frame file without a journal line, and a damaged frame.
-  write_frame_files(dir.path(), "s", 3, tiny(), {});
+  write_exr(frame_path(dir.path(), "s", 3, "exr"), tiny());
+  write_png(frame_path(dir.path(), "s", 3, "png"), tiny());
   std::filesystem::resize_file(frame_path(dir.path(), "s", 1, "exr"), 10);
   std::filesystem::remove(frame_path(dir.path(), "s", 2, "png"));
   FrameStore store(dir.path(), "s");
