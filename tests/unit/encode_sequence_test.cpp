@@ -4,6 +4,8 @@
 // compactly.
 
 #include <gtest/gtest.h>
+
+#include "scratch_dir.hpp"
 #include <unistd.h>
 
 #include <filesystem>
@@ -18,20 +20,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// An empty directory for one test, removed afterwards.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() /
-           ("lightcone_encode_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
+// An empty directory for one test, removed afterwards (the shared ScratchDir,
+// with the path as a member as these tests use it).
+struct TempDir : lc::test::ScratchDir {
+  const fs::path path{ScratchDir::path()};
   void touch(const std::string& name) const { std::ofstream(path / name) << "x"; }
 };
 

@@ -5,6 +5,8 @@
 // stream itself is checked with ffprobe in tests/e2e/encode.sh.)
 
 #include <gtest/gtest.h>
+
+#include "scratch_dir.hpp"
 #include <unistd.h>
 
 #include <filesystem>
@@ -19,20 +21,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// An empty directory for one test, removed afterwards.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() /
-           ("lightcone_encode_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
+// An empty directory for one test, removed afterwards (the shared ScratchDir,
+// with the path as a member as these tests use it).
+struct TempDir : lc::test::ScratchDir {
+  const fs::path path{ScratchDir::path()};
   std::size_t entries() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(path), {})); }
 };
 
