@@ -16,6 +16,7 @@
 #include "video/encode_sequence.hpp"
 #include "video/frame_sequence.hpp"
 #include "video/interrupt.hpp"
+#include "video/progress_printer.hpp"
 #include "video/title_card.hpp"
 
 namespace lc {
@@ -25,22 +26,6 @@ namespace fs = std::filesystem;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// A ProgressFn for the command line: a line on stderr about once a second
-// ("encode: 120/900 frames, 21.5 frames/s"), and the place where a Ctrl-C
-// turns into an exception between frames.
-ProgressFn progress_printer(const InterruptGuard& guard, const char* unit) {
-  const Clock::time_point start = Clock::now();
-  auto last = std::make_shared<Clock::time_point>(start);
-  return [&guard, unit, start, last](int done, int total) {
-    guard.check();
-    const Clock::time_point now = Clock::now();
-    if (now - *last < std::chrono::seconds(1) || done == total) return;
-    *last = now;
-    const double s = std::chrono::duration<double>(now - start).count();
-    fmt::print(stderr, "encode: {}/{} {}, {:.1f} {}/s\n", done, total, unit, done / s, unit);
-  };
-}
 
 // "1.2 MB" etc. for the summary.
 std::string size_text(const fs::path& p) {
@@ -108,7 +93,7 @@ int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
              seq.frames.front(), seq.frames.back(), step == 1 ? "" : fmt::format(" every {}", step), fps, fps_source,
              settings_text(o), cmd.output.string());
   const Clock::time_point start = Clock::now();
-  const EncodeResult r = encode_sequence(seq.files, o, cmd.output, progress_printer(guard, "frames"));
+  const EncodeResult r = encode_sequence(seq.files, o, cmd.output, progress_printer(guard, "encode", "frames"));
   const double s = std::chrono::duration<double>(Clock::now() - start).count();
   if (r.encoded_width != r.width || r.encoded_height != r.height)
     fmt::print(stderr, "encode: frames are {}x{}; padded to {}x{} by repeating the last {} ({} needs even sides)\n",
@@ -133,7 +118,7 @@ int encode_concat(const EncodeCommand& cmd, const InterruptGuard& guard) {
     if (fs::equivalent(p, cmd.output, ec))
       throw std::invalid_argument(fmt::format("-o {}: is also one of the videos to join", cmd.output.string()));
   const Clock::time_point start = Clock::now();
-  const ConcatResult r = concat_videos(cmd.inputs, cmd.output, progress_printer(guard, "videos"));
+  const ConcatResult r = concat_videos(cmd.inputs, cmd.output, progress_printer(guard, "encode", "videos"));
   const double s = std::chrono::duration<double>(Clock::now() - start).count();
   fmt::print(stderr, "encode: joined {} videos: {} frames {}x{}, {:.3f} s -> {} ({}) in {:.1f} s\n", cmd.inputs.size(),
              r.frames, r.width, r.height, r.seconds, cmd.output.string(), size_text(cmd.output), s);
@@ -159,7 +144,7 @@ int encode_title(const EncodeCommand& cmd, const InterruptGuard& guard) {
   if (!(seconds > 0) || seconds > 600)
     throw std::invalid_argument(fmt::format("--seconds {}: must be above 0 and at most 600", seconds));
   const int frames = std::max(1, static_cast<int>(std::lround(seconds * fps)));
-  const EncodeResult r = encode_title_card(cmd.title, w, h, frames, o, cmd.output, progress_printer(guard, "frames"));
+  const EncodeResult r = encode_title_card(cmd.title, w, h, frames, o, cmd.output, progress_printer(guard, "encode", "frames"));
   fmt::print(stderr, "encode: title card: {} frames {}x{}, {:.3f} s at {:g} fps, {} -> {} ({})\n", r.frames,
              r.encoded_width, r.encoded_height, r.seconds, fps, settings_text(o), cmd.output.string(),
              size_text(cmd.output));

@@ -14,6 +14,7 @@
 #include "geodesic_command.hpp"
 #include "inspect_command.hpp"
 #include "render_command.hpp"
+#include "showcase_command.hpp"
 #include "starfield_command.hpp"
 #include "trace_command.hpp"
 
@@ -114,6 +115,21 @@ int main(int argc, char** argv) {
                         "Integrator tolerance of the reference render")
       ->check(CLI::Range(1e-15, 1e-6));
 
+  lc::ShowcaseCommand showcase;
+  auto* showcase_cmd = app.add_subcommand(
+      "showcase", "Render, encode and join the paper's three sequences into showcase.mp4 (resumable; runs under mpirun)");
+  showcase_cmd->add_option("--quality", showcase.quality,
+                           "preview (256x144, 3 frames per second of story; minutes) or production (the paper's settings)");
+  showcase_cmd->add_option("--size", showcase.size, "Image size WxH instead of the quality's (preview 256x144, production the shots')");
+  showcase_cmd->add_option("--rate", showcase.rate, "Preview only: frames per second of story (default 3; the video plays at this rate)");
+  showcase_cmd->add_option("-o,--out", showcase.out, "Output directory (default out/showcase/<quality>)");
+  showcase_cmd->add_option("--shots", showcase.shots, "Folder holding the three shot scripts (default: the project's shots/)")
+      ->check(CLI::ExistingDirectory);
+  showcase_cmd->add_option("--threads", showcase.threads, "Render threads per process (as render --threads)")
+      ->check(CLI::Range(1, 1024));
+  showcase_cmd->add_flag("--force", showcase.force, "Re-render frames made from other settings or inputs (as render --force)");
+  showcase_cmd->add_option("--progress", showcase.progress, "Seconds between plain progress lines (0: none)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -130,6 +146,7 @@ int main(int argc, char** argv) {
     if (*encode_cmd) return lc::run_encode(encode);
     if (*sheet_cmd) return lc::run_contact_sheet(sheet);
     if (*bench_cmd) return lc::run_bench(bench);
+    if (*showcase_cmd) return lc::run_showcase(showcase);
   } catch (const std::exception& e) {
     fmt::print(stderr, "lightcone: error: {}\n", e.what());
     return 1;

@@ -68,8 +68,16 @@ Job load_job(const RenderCommand& cmd) {
     throw std::invalid_argument(fmt::format("--progress {}: must be 0 (off) or a number of seconds", cmd.progress));
   job.shot = std::make_unique<Shot>(cmd.shot);
   const ShotInfo& info = job.shot->info();
-  const FrameRange range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
-  job.frames = range.frames();
+  if (!cmd.frame_list.empty()) {
+    job.frames = cmd.frame_list;
+    for (std::size_t k = 0; k < job.frames.size(); ++k)
+      if (job.frames[k] < 0 || job.frames[k] >= info.frames || (k > 0 && job.frames[k] <= job.frames[k - 1]))
+        throw std::invalid_argument(fmt::format("frame list: frame {} is out of order or outside the shot's 0-{}",
+                                                job.frames[k], info.frames - 1));
+  } else {
+    const FrameRange range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
+    job.frames = range.frames();
+  }
   std::tie(job.rs.width, job.rs.height) = output_size(info.width, info.height, cmd.size, cmd.scale);
   job.rs.supersample = cmd.supersample.value_or(info.supersample);
   if (job.rs.supersample < 1 || job.rs.supersample > 16)
@@ -227,10 +235,14 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
 }  // namespace
 
 int run_render(const RenderCommand& cmd) {
+  farm::MpiSession mpi;
+  return render_in_session(cmd, mpi);
+}
+
+int render_in_session(const RenderCommand& cmd, const farm::MpiSession& mpi) {
   // A file-size limit (ulimit -f) must fail the write with EFBIG and a
   // message, not kill the process with SIGXFSZ.
   std::signal(SIGXFSZ, SIG_IGN);
-  farm::MpiSession mpi;
   if (mpi.size() <= 1) return render_as_master(cmd, nullptr);
   if (mpi.rank() != 0) return render_as_worker(cmd, mpi);
   return render_as_master(cmd, &mpi);

@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "farm/mpi_session.hpp"
 
 namespace lc {
 
@@ -13,6 +16,7 @@ struct RenderCommand {
   std::filesystem::path shot;
   std::filesystem::path out;
   std::optional<std::string> frames;  // "A", "A:B" or "A:B:STEP"
+  std::vector<int> frame_list;        // the frames themselves, ascending (the showcase's picks); overrides `frames`
   std::optional<std::string> size;    // "WxH"
   double scale = 1.0;
   std::optional<int> supersample;
@@ -25,6 +29,12 @@ struct RenderCommand {
 };
 
 int run_render(const RenderCommand& cmd);
+
+// The same within an MPI session the caller holds (the showcase renders
+// several shots in one): rank 0, or the only process, is the master and
+// returns when the frames are stored (or throws); a worker returns when the
+// master is done with it.  Every rank must call it with the same command.
+int render_in_session(const RenderCommand& cmd, const farm::MpiSession& mpi);
 
 // Image size after --size and --scale, for render and trace alike.  Throws
 // std::invalid_argument naming the flag.

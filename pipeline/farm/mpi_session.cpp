@@ -46,6 +46,13 @@ MpiSession::MpiSession() {
   if (workers_on_node_ < 1) workers_on_node_ = 1;
 }
 
+bool MpiSession::broadcast_from_master(bool value) const {
+  if (!active_) return value;
+  int v = value ? 1 : 0;
+  MPI_Bcast(&v, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  return v != 0;
+}
+
 MpiSession::~MpiSession() {
   if (active_) MPI_Finalize();
 }

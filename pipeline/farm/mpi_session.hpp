@@ -22,6 +22,10 @@ class MpiSession {
   // sleeps while it waits), at least 1.
   int workers_on_node() const { return workers_on_node_; }
 
+  // Rank 0's `value` on every rank (`value` itself without MPI): how the
+  // master tells workers whether a multi-step job (the showcase) goes on.
+  bool broadcast_from_master(bool value) const;
+
   // Whether the environment says an MPI launcher started us.
   static bool launched();
 

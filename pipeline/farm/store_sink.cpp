@@ -1,12 +1,14 @@
 #include "farm/store_sink.hpp"
 
+#include <fmt/format.h>
+
 namespace lc::farm {
 
 FrameSettings frame_settings(const RenderSettings& rs) { return {rs.width, rs.height, rs.supersample, rs.layers}; }
 
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
                      std::vector<int> preview_rows)
-    : store_(store), survey_(survey), shot_name_(shot.name), rs_(rs), preview_rows_(std::move(preview_rows)) {}
+    : store_(store), survey_(survey), shot_name_(shot.name), fps_(shot.fps), rs_(rs), preview_rows_(std::move(preview_rows)) {}
 
 void StoreSink::store(const CompletedFrame& cf) {
   if (cf.pass == Pass::preview) {
@@ -15,8 +17,10 @@ void StoreSink::store(const CompletedFrame& cf) {
   }
   const FrameFacts& facts = survey_.frames.at(cf.frame);
   // The same header in every mode (threads, ranks), so files are identical.
+  // The frame rate lets `lightcone encode` play the frames at the shot's pace.
   const ImageMetadata metadata = {{"lightcone/shot", shot_name_},
                                   {"lightcone/frame", std::to_string(cf.frame)},
+                                  {"lightcone/fps", fmt::format("{}", fps_)},
                                   {"lightcone/spacetime", facts.spacetime},
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};

@@ -20,6 +20,7 @@ class StoreSink final : public FrameSink {
   FrameStore& store_;
   const ShotSurvey& survey_;
   std::string shot_name_;
+  double fps_;
   RenderSettings rs_;
   std::vector<int> preview_rows_;
 };

@@ -8,35 +8,6 @@
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
-# ffprobe's view of a video, one key=value per line.
-probe() {
-  ffprobe -v error -count_frames -show_entries \
-    stream=codec_name,pix_fmt,nb_read_frames,avg_frame_rate,width,height:format=duration -of default=nw=1 "$1"
-}
-# check_probe FILE KEY=VALUE...: every pair must be in probe's output.
-check_probe() {
-  local file="$1" p
-  shift
-  p=$(probe "$file" 2>&1) || { fail "ffprobe $file: $p"; return; }
-  for kv in "$@"; do
-    grep -qx -- "$kv" <<<"$p" || fail "$file: want $kv; ffprobe says: $(tr '\n' ' ' <<<"$p")"
-  done
-}
-# The top-level MP4 atoms in file order ("ftyp moov free mdat").
-atoms() {
-  python3 - "$1" <<'PY'
-import struct, sys
-d = open(sys.argv[1], 'rb').read()
-i, out = 0, []
-while i + 8 <= len(d):
-    n, t = struct.unpack('>I4s', d[i:i + 8])
-    if n == 1: n = struct.unpack('>Q', d[i + 8:i + 16])[0]
-    out.append(t.decode('latin-1'))
-    if n < 8: break
-    i += n
-print(' '.join(out))
-PY
-}
 # No temporaries or partial files anywhere in the work directory.
 no_leftovers() {
   local left
@@ -63,8 +34,12 @@ check_probe tiny.mp4 codec_name=h264 pix_fmt=yuv420p width=32 height=18 nb_read_
   duration=0.500000
 [ "$(atoms tiny.mp4)" = "ftyp moov free mdat" ] || fail "not faststart (moov after mdat?): $(atoms tiny.mp4)"
 grep -q "encode: done: 12 frames 32x18, 0.500 s at 24 fps" encode.log || fail "summary: $(cat encode.log)"
-# Default 30 fps: 0.4 s.
-"$LIGHTCONE" encode frames -o tiny30.mp4 2>/dev/null || fail "encode at 30 fps"
+# Without --fps: the shot's 24 fps, which the renderer records in each EXR.
+"$LIGHTCONE" encode frames -o tiny24.mp4 2>tiny24.log || fail "encode at the shot's fps: $(cat tiny24.log)"
+check_probe tiny24.mp4 nb_read_frames=12 avg_frame_rate=24/1 duration=0.500000
+grep -q "24 fps (the shot, from tiny.0000.exr)" tiny24.log || fail "fps source not named: $(cat tiny24.log)"
+# --fps overrides it: 12 frames at 30 fps last 0.4 s.
+"$LIGHTCONE" encode frames -o tiny30.mp4 --fps 30 2>/dev/null || fail "encode at 30 fps"
 check_probe tiny30.mp4 nb_read_frames=12 avg_frame_rate=30/1 duration=0.400000
 # Colour survives: a flat orange frame decodes (as a player does, by the
 # stream's BT.709 tags) to its PNG's bytes within 2 codes.  A BT.601 matrix

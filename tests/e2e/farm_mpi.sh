@@ -6,18 +6,7 @@
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
-# Open MPI in a test: root allowed, more ranks than cores, no ssh needed,
-# no cross-memory attach (often forbidden in containers), no core binding
-# (the master sleeps; its core is for the workers).
-export OMPI_MCA_plm_rsh_agent=
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_btl_vader_single_copy_mechanism=none
-export OMPI_MCA_rmaps_base_oversubscribe=1
-mpi() {
-  local n="$1"
-  shift
-  timeout 120 mpirun --oversubscribe --bind-to none -n "$n" "$@"
-}
+use_mpirun  # lib.sh: Open MPI settings for a test, and `mpi N CMD...`
 SHOT="$SRC/tests/data/farm/farm_orbit.lua"
 
 # same_frames A B: every EXR and PNG of A is byte-identical in B (EXR

@@ -7,10 +7,7 @@
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
-export OMPI_MCA_plm_rsh_agent=
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_btl_vader_single_copy_mechanism=none
-export OMPI_MCA_rmaps_base_oversubscribe=1
+use_mpirun  # lib.sh: Open MPI settings for a test
 SHOT="$SRC/tests/data/farm/farm_orbit.lua"
 ARGS=(--supersample 2 --progress 0)
 

@@ -7,6 +7,7 @@ e2e_begin() {
   LIGHTCONE="$1"
   SRC="$2"
   WORK="$3"
+  TOOLS="${4:-}"
   rm -rf "$WORK"
   mkdir -p "$WORK"
   cd "$WORK"
@@ -34,6 +35,51 @@ expect_error() {
   elif ! grep -qF -- "$want" "$WORK/$name.err"; then
     fail "$name: stderr lacks '$want'; got: $(cat "$WORK/$name.err")"
   fi
+}
+
+# ffprobe's view of a video, one key=value per line.
+probe() {
+  ffprobe -v error -count_frames -show_entries \
+    stream=codec_name,pix_fmt,nb_read_frames,avg_frame_rate,width,height:format=duration -of default=nw=1 "$1"
+}
+# check_probe FILE KEY=VALUE...: every pair must be in probe's output.
+check_probe() {
+  local file="$1" p
+  shift
+  p=$(probe "$file" 2>&1) || { fail "ffprobe $file: $p"; return; }
+  for kv in "$@"; do
+    grep -qx -- "$kv" <<<"$p" || fail "$file: want $kv; ffprobe says: $(tr '\n' ' ' <<<"$p")"
+  done
+}
+# The top-level MP4 atoms in file order ("ftyp moov free mdat").
+atoms() {
+  python3 - "$1" <<'PY'
+import struct, sys
+d = open(sys.argv[1], 'rb').read()
+i, out = 0, []
+while i + 8 <= len(d):
+    n, t = struct.unpack('>I4s', d[i:i + 8])
+    if n == 1: n = struct.unpack('>Q', d[i + 8:i + 16])[0]
+    out.append(t.decode('latin-1'))
+    if n < 8: break
+    i += n
+print(' '.join(out))
+PY
+}
+# For tests that launch mpirun: Open MPI refuses root without these, needs
+# no rsh agent on one node, no cross-memory attach (often forbidden in
+# containers), no core binding (the master sleeps; its core is for the
+# workers).  `mpi N CMD...` runs CMD on N ranks, killed after 120 s.
+use_mpirun() {
+  export OMPI_MCA_plm_rsh_agent=
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  export OMPI_MCA_btl_vader_single_copy_mechanism=none
+  export OMPI_MCA_rmaps_base_oversubscribe=1
+  mpi() {
+    local n="$1"
+    shift
+    timeout 120 mpirun --oversubscribe --bind-to none -n "$n" "$@"
+  }
 }
 
 e2e_end() {

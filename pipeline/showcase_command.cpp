@@ -1,0 +1,191 @@
+#include "showcase_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "farm/mpi_session.hpp"
+#include "frame_files.hpp"
+#include "render_command.hpp"
+#include "script/script_paths.hpp"
+#include "showcase_plan.hpp"
+#include "video/concat_videos.hpp"
+#include "video/contact_sheet.hpp"
+#include "video/encode_sequence.hpp"
+#include "video/frame_sequence.hpp"
+#include "video/interrupt.hpp"
+#include "video/progress_printer.hpp"
+#include "video/title_card.hpp"
+
+namespace lc {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Where everything goes under the output directory.
+struct ShowcaseLayout {
+  fs::path root;
+  fs::path frames(const std::string& shot) const { return root / "frames" / shot; }
+  fs::path video(const std::string& shot) const { return root / (shot + ".mp4"); }
+  fs::path sheet(const std::string& shot) const { return root / (shot + ".sheet.png"); }
+  fs::path card(const std::string& name) const { return root / "cards" / (name + ".mp4"); }
+  fs::path film() const { return root / "showcase.mp4"; }
+};
+
+// True when `out` exists and is at least as new as every input: a resumed
+// showcase keeps what an interrupted one finished.
+bool up_to_date(const fs::path& out, const std::vector<fs::path>& inputs) {
+  std::error_code ec;
+  const auto made = fs::last_write_time(out, ec);
+  if (ec) return false;
+  for (const fs::path& in : inputs) {
+    const auto t = fs::last_write_time(in, ec);
+    if (ec || t > made) return false;
+  }
+  return true;
+}
+
+// The frames of one planned sequence, as files the renderer left.
+FrameSequence rendered_frames(const SequencePlan& s, const ShowcaseLayout& layout) {
+  FrameSequence seq;
+  seq.shot = s.name;
+  seq.frames = s.frames;
+  for (int i : s.frames) seq.files.push_back(frame_path(layout.frames(s.name), s.name, i, "png"));
+  return seq;
+}
+
+// Renders every sequence on every rank.  The master returns normally or
+// throws the first failure; a worker returns false when the master failed
+// (it has nothing more to do), true when all went well.
+bool render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const ShowcaseCommand& cmd,
+                const farm::MpiSession& mpi) {
+  const bool master = mpi.rank() == 0;
+  for (std::size_t k = 0; k < plan.sequences.size(); ++k) {
+    const SequencePlan& s = plan.sequences[k];
+    RenderCommand rc;
+    rc.shot = s.shot;
+    rc.out = layout.frames(s.name);
+    rc.frame_list = s.frames;
+    rc.size = s.size;
+    rc.supersample = s.supersample;
+    rc.layers = s.layers;
+    rc.threads = cmd.threads;
+    rc.force = cmd.force;
+    rc.progress = cmd.progress;
+    if (master)
+      fmt::print(stderr, "showcase: [{}/{}] rendering {}: {} of its {} frames\n", k + 1, plan.sequences.size(), s.name,
+                 s.frames.size(), s.shot_frames);
+    std::exception_ptr failure;
+    try {
+      render_in_session(rc, mpi);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    // Workers learn whether the master is going on to the next sequence.
+    const bool go_on = mpi.broadcast_from_master(failure == nullptr);
+    if (master && failure) std::rethrow_exception(failure);
+    if (!go_on) return false;
+    if (failure) std::rethrow_exception(failure);  // a worker's own failure after the master succeeded
+  }
+  return true;
+}
+
+// The card's lines, or as many of the first as fit a small frame (a tiny
+// test film): at worst a blank card, so the film keeps its rhythm.
+std::vector<std::string> card_lines_that_fit(const std::vector<std::string>& lines, int width, int height) {
+  for (std::size_t n = lines.size(); n > 0; --n) {
+    std::vector<std::string> first(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(n));
+    try {
+      title_card(width, height, first);
+      return first;
+    } catch (const std::invalid_argument&) {
+    }
+  }
+  return {" "};
+}
+
+// "1.2 MB" for the summary.
+std::string size_text(const fs::path& p) {
+  std::error_code ec;
+  const double b = static_cast<double>(fs::file_size(p, ec));
+  return ec ? "?" : fmt::format("{:.1f} MB", b / 1e6);
+}
+
+// Encodes the sequences, their cards and sheets, and joins the film (the
+// master only, after every frame is stored).
+void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout) {
+  InterruptGuard guard;
+  EncodeOptions o;
+  o.fps = plan.fps;
+  // At least 4 frames: H.264's B-frames make a clip's decode times start up
+  // to 2 frames before 0, and they must not reach back into the previous clip.
+  const int card_frames = std::max(4, static_cast<int>(std::lround(title_seconds * plan.fps)));
+  fs::create_directories(layout.card("x").parent_path());
+  std::vector<fs::path> film;
+  auto card = [&](const std::string& name, const std::vector<std::string>& lines) {
+    const fs::path out = layout.card(name);
+    encode_title_card(card_lines_that_fit(lines, plan.width, plan.height), plan.width, plan.height, card_frames, o, out,
+                      progress_printer(guard, "showcase", "frames"));
+    film.push_back(out);
+  };
+  card("opening", plan.opening);
+  for (const SequencePlan& s : plan.sequences) {
+    const FrameSequence seq = rendered_frames(s, layout);
+    const fs::path video = layout.video(s.name);
+    if (up_to_date(video, seq.files)) {
+      fmt::print(stderr, "showcase: {} is newer than its frames; kept\n", video.string());
+    } else {
+      fmt::print(stderr, "showcase: encoding {} frames of {} at {:g} fps -> {}\n", seq.files.size(), s.name, plan.fps,
+                 video.string());
+      encode_sequence(seq.files, o, video, progress_printer(guard, "showcase", "frames"));
+    }
+    // Thumbnails no larger than the frames.
+    const ContactSheetOptions sheet{4, 4 * std::min(plan.width, 320), 16};
+    if (!up_to_date(layout.sheet(s.name), seq.files)) write_contact_sheet(seq, sheet, layout.sheet(s.name));
+    card(s.name, s.title);
+    film.push_back(video);
+  }
+  fmt::print(stderr, "showcase: joining {} clips -> {}\n", film.size(), layout.film().string());
+  const ConcatResult r = concat_videos(film, layout.film(), progress_printer(guard, "showcase", "clips"));
+  fmt::print(stderr, "showcase: {}: {} frames {}x{}, {:.1f} s at {:g} fps ({})\n", layout.film().string(), r.frames,
+             r.width, r.height, r.seconds, plan.fps, size_text(layout.film()));
+}
+
+}  // namespace
+
+int run_showcase(const ShowcaseCommand& cmd) {
+  const Clock::time_point start = Clock::now();
+  const ShowcaseSettings settings{parse_showcase_quality(cmd.quality), cmd.size, cmd.rate};
+  const ShowcaseLayout layout{cmd.out.value_or(fs::path("out") / "showcase" / cmd.quality)};
+  const fs::path shots = cmd.shots.value_or(library_dir().parent_path() / "shots");
+  farm::MpiSession mpi;
+  const bool master = mpi.rank() == 0;
+  // Every rank plans alike from the same scripts (each needs the frames).
+  const ShowcasePlan plan = plan_showcase(settings, shots);
+  if (master) {
+    std::size_t frames = 0;
+    for (const SequencePlan& s : plan.sequences) frames += s.frames.size();
+    fmt::print(stderr, "showcase: {} quality: {} sequences, {} frames at {}, {:g} fps -> {}\n", cmd.quality,
+               plan.sequences.size(), frames, fmt::format("{}x{}", plan.width, plan.height), plan.fps,
+               layout.root.string());
+  }
+  if (!render_all(plan, layout, cmd, mpi) || !master) return 0;
+  try {
+    encode_all(plan, layout);
+  } catch (const Interrupted& e) {
+    fmt::print(stderr, "showcase: {}; the frames are kept, the same command resumes\n", e.what());
+    return 128 + e.signal;
+  }
+  const double minutes = std::chrono::duration<double>(Clock::now() - start).count() / 60;
+  fmt::print(stderr, "showcase: done in {:.1f} min: {} (and per sequence: <shot>.mp4, <shot>.sheet.png) in {}\n", minutes,
+             layout.film().filename().string(), layout.root.string());
+  return 0;
+}
+
+}  // namespace lc

@@ -1,0 +1,96 @@
+#include "showcase_plan.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "render_command.hpp"
+#include "scene/shot.hpp"
+#include "video/contact_sheet.hpp"
+
+namespace lc {
+
+namespace fs = std::filesystem;
+
+ShowcaseQuality parse_showcase_quality(const std::string& name) {
+  if (name == "preview") return ShowcaseQuality::preview;
+  if (name == "production") return ShowcaseQuality::production;
+  throw std::invalid_argument(fmt::format("--quality '{}': choose preview or production", name));
+}
+
+namespace {
+
+// The paper's sequences in the order the film shows them, with their cards
+// (the pixel font has capitals, digits and common punctuation only).
+struct Sequence {
+  const char* name;
+  std::vector<std::string> title;
+};
+const std::vector<Sequence>& paper_sequences() {
+  static const std::vector<Sequence> list = {
+      {"kerr_accrDisk", {"A SPINNING BLACK HOLE", "ITS DISK SEEN FROM ABOVE TO THE EDGE;", "THEN SPIN, THEN MASS TO ZERO"}},
+      {"kerr_passing", {"FALLING PAST IT", "A FREE-FALL ORBIT THROUGH THE DISK PLANE", "INSIDE THE INNER RIM, AND AWAY"}},
+      {"dihole", {"TWO CHARGED BLACK HOLES", "A SPHERE OSCILLATING BETWEEN", "EXTREME REISSNER-NORDSTROM HOLES"}},
+  };
+  return list;
+}
+
+}  // namespace
+
+ShowcasePlan plan_showcase(const ShowcaseSettings& settings, const fs::path& shots_dir) {
+  // Inputs: the user's choices and where the shots are; output: every
+  // clip's settings.  Assumes the shots play at one rate and size (checked).
+  const bool preview = settings.quality == ShowcaseQuality::preview;
+  if (settings.rate && !preview)
+    throw std::invalid_argument("--rate: production renders every frame; --rate goes with --quality preview");
+  const double rate = settings.rate.value_or(preview_fps);
+  if (!(rate >= 0.01 && rate <= 240))
+    throw std::invalid_argument(fmt::format("--rate {}: must be between 0.01 and 240 frames per second of story", rate));
+  std::optional<std::pair<int, int>> size;
+  if (settings.size) size = output_size(1, 1, settings.size, 1.0);
+  else if (preview) size = {preview_width, preview_height};
+  ShowcasePlan plan;
+  plan.opening = {"LIGHTCONE", "GENERAL-RELATIVISTIC BLACK HOLE VISUALIZATION",
+                  "AFTER MULLER, BOBLEST AND WEISKOPF"};
+  for (const Sequence& s : paper_sequences()) {
+    const fs::path file = shots_dir / (std::string(s.name) + ".lua");
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec))
+      throw std::runtime_error(fmt::format("showcase: {} not found (the paper's sequences live in shots/; see --shots)",
+                                           file.string()));
+    const Shot shot(file);
+    const ShotInfo& info = shot.info();
+    SequencePlan p;
+    p.name = info.name;
+    p.shot = file;
+    p.title = s.title;
+    p.shot_frames = info.frames;
+    const int width = size ? size->first : info.width, height = size ? size->second : info.height;
+    if (size) p.size = fmt::format("{}x{}", width, height);
+    if (preview) {
+      // At least 4 frames (the first, the last and two between), as a clip
+      // must have to be joined (see encode_all).
+      const double seconds = info.frames / info.fps;
+      const auto count = static_cast<std::size_t>(std::max(4L, std::lround(seconds * rate)));
+      for (std::size_t k : pick_evenly(static_cast<std::size_t>(info.frames), count)) p.frames.push_back(static_cast<int>(k));
+      p.supersample = 1;
+      p.layers = true;  // small frames: the layers cost little and let a test read what each pixel saw
+      p.fps = rate;
+    } else {
+      for (int i = 0; i < info.frames; ++i) p.frames.push_back(i);
+      p.fps = info.fps;
+    }
+    if (!plan.sequences.empty() && (p.fps != plan.fps || width != plan.width || height != plan.height))
+      throw std::runtime_error(fmt::format(
+          "showcase: {} is {}x{} at {:g} fps but {} is {}x{} at {:g} fps; the clips could not be joined", file.string(),
+          width, height, p.fps, plan.sequences.front().shot.string(), plan.width, plan.height, plan.fps));
+    plan.fps = p.fps;
+    plan.width = width;
+    plan.height = height;
+    plan.sequences.push_back(std::move(p));
+  }
+  return plan;
+}
+
+}  // namespace lc

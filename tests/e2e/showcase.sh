@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# The showcase through the real binary, at a tiny preview (128x72, a frame
+# every 4 s of story): the three sequences rendered, encoded and joined
+# behind title cards, checked with ffprobe (codec, pixel format, frame
+# counts, durations exactly frames/fps, faststart); the frames checked
+# against the storyboard (the dihole's first frame has no shadow, later ones
+# do; the disk's last frame, M = 0, is an undistorted projection while a
+# lensed one is not); a second run resumes without redoing anything; under
+# mpirun the frames come out byte-identical; bad flags are refused.
+source "$(dirname "$0")/lib.sh"
+e2e_begin "$@"
+use_mpirun
+CHECK="$TOOLS/storyboard_check"
+ARGS=(--size 128x72 --rate 0.25 --progress 0)
+
+"$LIGHTCONE" showcase "${ARGS[@]}" --out sc 2>sc.log || fail "showcase: $(cat sc.log)"
+grep -q "showcase: done" sc.log || fail "no summary: $(cat sc.log)"
+
+# --- videos: 8 + 14 + 18 frames (4 per 16 s of story, first and last
+# included) and four 4-frame title cards, all at 0.25 fps ----------------
+check_probe sc/showcase.mp4 codec_name=h264 pix_fmt=yuv420p width=128 height=72 nb_read_frames=56 \
+  avg_frame_rate=1/4 duration=224.000000
+[ "$(atoms sc/showcase.mp4)" = "ftyp moov free mdat" ] || fail "showcase.mp4 not faststart: $(atoms sc/showcase.mp4)"
+check_probe sc/kerr_accrDisk.mp4 nb_read_frames=8 duration=32.000000
+check_probe sc/kerr_passing.mp4 nb_read_frames=14 duration=56.000000
+check_probe sc/dihole.mp4 nb_read_frames=18 duration=72.000000
+for c in opening kerr_accrDisk kerr_passing dihole; do
+  check_probe "sc/cards/$c.mp4" nb_read_frames=4 width=128 height=72
+done
+for s in kerr_accrDisk kerr_passing dihole; do
+  [ -s "sc/$s.sheet.png" ] || fail "no contact sheet for $s"
+done
+[ -z "$(find sc -name '*.tmp-*')" ] || fail "temporaries left: $(find sc -name '*.tmp-*')"
+
+# --- the storyboard ---------------------------------------------------------
+F=sc/frames
+"$CHECK" no-shadow $F/dihole/dihole.0000.exr || fail "dihole frame 0 (masses 0) should show no shadow"
+"$CHECK" shadow $F/dihole/dihole.0247.exr || fail "dihole frame 247 (masses 0.4) should show the holes' shadows"
+"$CHECK" flat-disk $F/kerr_accrDisk/kerr_accrDisk.0899.exr || fail "kerr_accrDisk's last frame (M = 0) is not undistorted"
+# The check can fail: at frame 385 (edge on, M = 1) the disk is lensed.
+if "$CHECK" flat-disk $F/kerr_accrDisk/kerr_accrDisk.0385.exr >/dev/null 2>&1; then
+  fail "flat-disk passed a lensed frame"
+fi
+
+# --- resume: nothing is redone ---------------------------------------------
+"$LIGHTCONE" showcase "${ARGS[@]}" --out sc 2>again.log || fail "second run: $(cat again.log)"
+[ "$(grep -c 'nothing to render' again.log)" -eq 3 ] || fail "second run rendered again: $(cat again.log)"
+[ "$(grep -c 'newer than its frames; kept' again.log)" -eq 3 ] || fail "second run re-encoded: $(cat again.log)"
+check_probe sc/showcase.mp4 nb_read_frames=56
+
+# --- under mpirun (a master and two workers): the same frames ----------------
+mpi 3 "$LIGHTCONE" showcase "${ARGS[@]}" --out mpi 2>mpi.log || fail "mpirun showcase: $(cat mpi.log)"
+n=0
+for f in sc/frames/*/*.exr sc/frames/*/*.png; do
+  n=$((n + 1))
+  cmp -s "$f" "mpi/${f#sc/}" || fail "$f differs under mpirun"
+done
+[ "$n" -eq 80 ] || fail "expected 80 frame files, found $n"
+check_probe mpi/showcase.mp4 nb_read_frames=56
+
+# --- bad flags -----------------------------------------------------------------
+expect_error quality "--quality 'draft': choose preview or production" -- "$LIGHTCONE" showcase --quality draft --out bad
+expect_error rate "--rate goes with --quality preview" -- "$LIGHTCONE" showcase --quality production --rate 2 --out bad
+expect_error size "--size '12': expected WxH" -- "$LIGHTCONE" showcase --size 12 --out bad
+mkdir empty
+expect_error shots "empty/kerr_accrDisk.lua not found" -- "$LIGHTCONE" showcase --shots empty --out bad
+[ ! -e bad ] || fail "a refused showcase left bad/ behind"
+
+e2e_end
