@@ -71,6 +71,9 @@ struct Sphere {
     if (worldline) return worldline->bounds(t0, t1, lo, hi);
     lo = hi = {rest_position[1], rest_position[2], rest_position[3]};
   }
+  // Spatial box the centre stays in at all times (set by the scene builder
+  // from the worldline, or the rest position).
+  Vec3 life_lo{}, life_hi{};
   // Colour at local direction xi (on the frame's legs): checker in the
   // sphere's own polar angles, pole along the third leg.
   Color color(const Vec3& xi) const {

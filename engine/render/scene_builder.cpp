@@ -95,8 +95,10 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
       const WorldlineEvent ev = w->at_proper_time(ob.proper_time);
       sc.observer = ev.x;
       sc.frame = ev.frame;
+      sc.observer_scene = st.scene_from_trace(ev.x);
     } else {
       sc.observer = st.trace_from_scene(ob.position);
+      sc.observer_scene = ob.position;
       sc.frame = ob.kind == ObserverKind::zamo ? zamo_polar_tetrad(st, ob.position)
                                                : static_polar_tetrad(st, ob.position);
     }
@@ -125,6 +127,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
         throw std::invalid_argument(fmt::format("sphere at rest: {}", e.what()));
       }
     }
+    sp.bounds(-1e300, 1e300, sp.life_lo, sp.life_hi);
     sc.spheres.push_back(std::move(sp));
   }
   return sc;
