@@ -1,16 +1,22 @@
 #include "bench_command.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <thread>
 
 #include <fmt/format.h>
 
 #include "script/script_paths.hpp"
+#include "geodesic/null_ray.hpp"
 #include "shot_bench.hpp"
 
 namespace lc {
 
 int run_bench(const BenchCommand& cmd) {
+  KerrChart chart = KerrChart::boyer_lindquist_mino;
+  if (cmd.kerr_chart == "kerr-schild") chart = KerrChart::kerr_schild;
+  else if (cmd.kerr_chart != "bl-mino")
+    throw std::invalid_argument(fmt::format("--kerr-chart '{}': choose bl-mino or kerr-schild", cmd.kerr_chart));
   const int all = cmd.threads > 0 ? cmd.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<std::filesystem::path> shots = cmd.shots;
   if (shots.empty()) {
@@ -20,9 +26,10 @@ int run_bench(const BenchCommand& cmd) {
   fmt::print("lightcone bench: one ray per pixel centre, best of {}; accuracy against tolerance {:g}\n",
              cmd.repeats, cmd.reference_tolerance);
   for (const auto& file : shots) {
-    const ShotBenchResult r = bench_shot(file, all, cmd.repeats, cmd.tolerance, cmd.reference_tolerance);
+    const ShotBenchResult r = bench_shot(file, all, cmd.repeats, cmd.tolerance, cmd.reference_tolerance, chart);
     const AccuracyReport& a = r.accuracy;
-    fmt::print("\n{} ({}x{}, tolerance {:g})\n", r.name, r.width, r.height, r.tolerance);
+    fmt::print("\n{} ({}x{}, tolerance {:g}{})\n", r.name, r.width, r.height, r.tolerance,
+               chart == KerrChart::kerr_schild ? ", Kerr rays in Kerr-Schild" : "");
     fmt::print("  speed:    {:.0f} rays per core-second on 1 thread, {:.1f} steps per ray, {:.0f} steps/s\n",
                r.rays / r.seconds_one, double(r.steps) / r.rays, r.steps / r.seconds_one);
     if (all > 1)

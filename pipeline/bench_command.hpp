@@ -4,6 +4,7 @@
 // shots/bench/.  Numbers go into issue notes and docs/performance.md.
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace lc {
@@ -14,6 +15,7 @@ struct BenchCommand {
   int repeats = 3;                           // best of N (the machines are shared and noisy)
   double reference_tolerance = 1e-13;
   double tolerance = 0.0;  // 0: the production default (constants.hpp)
+  std::string kerr_chart = "bl-mino";  // how Kerr rays are integrated in the timed run: bl-mino or kerr-schild
 };
 
 int run_bench(const BenchCommand& cmd);

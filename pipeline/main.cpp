@@ -111,6 +111,8 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--repeats", bench.repeats, "Best of this many runs")->check(CLI::Range(1, 100));
   bench_cmd->add_option("--tolerance", bench.tolerance, "Integrator tolerance to measure (default: production)")
       ->check(CLI::Range(1e-15, 1e-2));
+  bench_cmd->add_option("--kerr-chart", bench.kerr_chart,
+                        "How Kerr rays are integrated: bl-mino (default; Boyer-Lindquist, Mino time) or kerr-schild");
   bench_cmd->add_option("--reference-tolerance", bench.reference_tolerance,
                         "Integrator tolerance of the reference render")
       ->check(CLI::Range(1e-15, 1e-6));

@@ -13,10 +13,6 @@ namespace lc {
 
 namespace {
 
-struct NoPath {
-  void operator()(const RayStep&) const {}
-};
-
 // Pixel-centre samples of the whole image, rows handed out to `threads`.
 std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int threads, long* steps) {
   std::vector<RaySample> out(static_cast<std::size_t>(width) * height);
@@ -53,7 +49,7 @@ double seconds_of(const std::function<void()>& f) {
 }  // namespace
 
 ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, int repeats, double tolerance,
-                           double reference_tolerance) {
+                           double reference_tolerance, KerrChart chart) {
   Shot shot(file);
   const ShotInfo& info = shot.info();
   const FrameScene fs = shot.frame(0);
@@ -66,6 +62,7 @@ ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, int r
   r.threads = threads;
   RayOptions defaults;
   if (tolerance > 0.0) defaults.control.rtol = defaults.control.atol = tolerance;
+  defaults.kerr_chart = chart;
   r.tolerance = defaults.control.rtol;
   r.reference_tolerance = reference_tolerance;
   const Scene scene = build_scene(fs, info.width, info.height, resources, defaults);

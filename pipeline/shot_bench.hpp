@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "geodesic/null_ray.hpp"
 #include "render/accuracy.hpp"
 
 namespace lc {
@@ -23,8 +24,10 @@ struct ShotBenchResult {
 // Renders frame 0 of `shot` (one ray through each pixel centre, at the shot's
 // size) `repeats` times with one thread and with `threads`, then once at
 // `reference_tolerance`, and compares.
-// `tolerance` 0 means the production default.
+// `tolerance` 0 means the production default; `chart` is how the timed run
+// integrates Kerr rays (the reference always takes the Boyer–Lindquist–Mino
+// path, which converges faster: docs/performance.md).
 ShotBenchResult bench_shot(const std::filesystem::path& shot, int threads, int repeats, double tolerance,
-                           double reference_tolerance);
+                           double reference_tolerance, KerrChart chart = KerrChart::boyer_lindquist_mino);
 
 }  // namespace lc

@@ -59,7 +59,7 @@ int run_trace(const TraceCommand& cmd) {
           path.samples.push_back(g);
         };
         RaySample r = trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5),
-                                   [&](const RayStep& step) { record(step.start(), step.t0); });
+                                   [&](const RayState& y, double sigma) { record(y, sigma); });
         record(r.end, r.lambda_end);
         return r;
       },

@@ -29,10 +29,17 @@ inline constexpr double dihole_capture_potential = 11.0;
 inline constexpr double kerr_capture_fraction = 0.5;
 
 // Default step-control tolerance (relative and absolute) of the production
-// Dormand–Prince integrator.  At 1e-10 the constants of motion of Kerr rays
-// that wind round the photon sphere drift by < 3e-9 (1e-9 gave 3e-8); see
-// docs/performance.md for the measured cost and image error.
-inline constexpr double default_ray_tolerance = 1e-10;
+// Dormand–Prince integrator, chosen by measured image error
+// (docs/performance.md, change 6): at 5e-8 no pixel of the benchmark shots
+// changes its hit kind against a 1e-13 reference and the 99th percentile of
+// the disk-hit radius error is 7e-6 M (issue 6 asks for 1e-5).  Work that
+// needs more — conserving constants of motion to 1e-8 on rays that wind
+// round the photon sphere, reference renders — sets its own
+// (conservation_ray_tolerance, `bench --reference-tolerance`).
+inline constexpr double default_ray_tolerance = 5e-8;
+// What keeps E, L_z and Q of Kerr rays within 1e-8 along rays that wind
+// round the photon sphere in the Kerr–Schild integrator (1e-9 gave 3e-8).
+inline constexpr double conservation_ray_tolerance = 1e-10;
 
 // Default safety bound on the number of accepted steps of one ray.
 inline constexpr long default_max_steps = 100000;

@@ -17,8 +17,14 @@ namespace lc {
 using RayState = std::array<double, 8>;  // x^0..x^3, p_0..p_3
 using RayStep = DenseStep<8>;
 
+// How Kerr rays are integrated: in Boyer–Lindquist coordinates with Mino
+// time (geodesic/kerr_mino.hpp; the fast path, used when a scene has no
+// moving objects) or always with the Kerr–Schild Hamiltonian.
+enum class KerrChart { boyer_lindquist_mino, kerr_schild };
+
 struct RayOptions {
   StepControl control{default_ray_tolerance, default_ray_tolerance, 1e-12, 1e30};
+  KerrChart kerr_chart = KerrChart::boyer_lindquist_mino;
   double escape_radius = default_escape_radius;
   long max_steps = default_max_steps;
 };

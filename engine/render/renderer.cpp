@@ -19,10 +19,6 @@ FrameImage make_frame(const RenderSettings& rs) {
 
 namespace {
 
-struct NoPath {
-  void operator()(const RayStep&) const {}
-};
-
 template <class S>
 RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::span<const int> rows,
                            FrameImage& img) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "geodesic/crossing.hpp"
+#include "geodesic/kerr_mino.hpp"
 #include "geodesic/null_ray.hpp"
 #include "observer/ray_direction.hpp"
 #include "render/camera.hpp"
@@ -32,6 +33,12 @@ struct SceneOf {
   Sky sky;
   std::vector<Sphere> spheres;
   RayOptions rays;
+  Vec4 observer_scene{};  // the observer's event in scene coordinates, exact where the shot gave it (on the axis)
+};
+
+// For trace_sample: a path recorder that records nothing (rendering).
+struct NoPath {
+  void operator()(const RayState&, double) const {}
 };
 
 using Scene = std::variant<SceneOf<Minkowski>, SceneOf<Kerr>, SceneOf<Dihole>>;
@@ -71,15 +78,25 @@ std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayS
   const double l0 = step.t0, l1 = step.t0 + step.h;
   const RayState& a = step.start();
   const RayState b = step.at(l1);
-  const RayState m = step.at(0.5 * (l0 + l1));
-  Vec3 rlo, rhi;
   double chord2 = 0.0;
+  for (int k = 0; k < 3; ++k) chord2 += (b[k + 1] - a[k + 1]) * (b[k + 1] - a[k + 1]);
+  // First against the box the centre never leaves, grown by half the chord
+  // (a step strays from its chord by less than that): most steps are far
+  // from the sphere at all times, and this needs no lookup on the worldline.
+  Vec3 rlo, rhi, clo, chi;
+  const double far = 2.0 * sphere.spec.radius + 0.5 * std::sqrt(chord2);
   for (int k = 0; k < 3; ++k) {
-    rlo[k] = std::min({a[k + 1], b[k + 1], m[k + 1]});
-    rhi[k] = std::max({a[k + 1], b[k + 1], m[k + 1]});
-    chord2 += (b[k + 1] - a[k + 1]) * (b[k + 1] - a[k + 1]);
+    rlo[k] = std::min(a[k + 1], b[k + 1]);
+    rhi[k] = std::max(a[k + 1], b[k + 1]);
+    clo[k] = sphere.life_lo[k] - far;
+    chi[k] = sphere.life_hi[k] + far;
   }
-  Vec3 clo, chi;
+  if (!boxes_overlap(rlo, rhi, clo, chi)) return std::nullopt;
+  const RayState m = step.at(0.5 * (l0 + l1));
+  for (int k = 0; k < 3; ++k) {
+    rlo[k] = std::min(rlo[k], m[k + 1]);
+    rhi[k] = std::max(rhi[k], m[k + 1]);
+  }
   sphere.bounds(a[0], b[0], clo, chi);
   const double grow = 2.0 * sphere.spec.radius + 0.1 * std::sqrt(chord2);
   for (int k = 0; k < 3; ++k) {
@@ -167,10 +184,49 @@ std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayS
 
 }  // namespace detail
 
-// Traces the camera ray along local direction n (on the observer's legs).
-// OnStep(const RayStep&) sees every accepted step (for `lightcone trace`).
+namespace detail {
+
+// The sky seen by a ray that escaped at the trace-coordinate event x with
+// momentum p: fills out.kind and out.color.
+template <class S>
+void sky_sample(const SceneOf<S>& sc, const Vec4& x, const Vec4& p, RaySample& out) {
+  const S& st = sc.spacetime;
+  // Escape direction: the spatial tangent, bent by the weak-field deflection
+  // still to come between here and infinity, (2M/r) tan(psi/2) towards the
+  // centre (psi: angle between position and direction) — without it the sky
+  // would sit ~2M/R radians off at the escape radius R.
+  Vec4 dx, dp;
+  st.hamiltonian_rhs(x, p, dx, dp);
+  Vec3 d = {dx[1], dx[2], dx[3]};
+  const double dn = norm3(d);
+  for (auto& c : d) c /= dn;
+  const double M = st.asymptotic_mass();
+  if (M > 0.0) {
+    const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    const Vec3 rh = {x[1] / rho, x[2] / rho, x[3] / rho};
+    const double c = std::clamp(rh[0] * d[0] + rh[1] * d[1] + rh[2] * d[2], -1.0, 1.0);
+    const double psi = std::acos(c);
+    if (psi > 1e-9) {
+      const double delta = 2.0 * M / rho * std::tan(0.5 * psi);
+      // Unit vector in the plane, perpendicular to d, pointing away from the centre side.
+      Vec3 w = {rh[0] - c * d[0], rh[1] - c * d[1], rh[2] - c * d[2]};
+      const double wn = norm3(w);
+      for (auto& q : w) q /= wn;
+      const double cd = std::cos(delta), sd = std::sin(delta);
+      d = {cd * d[0] - sd * w[0], cd * d[1] - sd * w[1], cd * d[2] - sd * w[2]};
+    }
+  }
+  out.kind = HitKind::sky;
+  const double theta = std::acos(std::clamp(d[2], -1.0, 1.0));
+  double sphi = std::atan2(d[1], d[0]);
+  if (sphi < 0) sphi += two_pi;
+  out.color = sc.sky.color(theta, sphi);
+}
+
+
+// The general path: the Hamiltonian in the trace chart (Kerr–Schild for Kerr).
 template <class S, class OnStep>
-RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
+RaySample trace_sample_hamiltonian(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
   const S& st = sc.spacetime;
   const Vec4 p = backward_ray_momentum(sc.metric, sc.frame, n);
   RaySample out;
@@ -191,7 +247,7 @@ RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
     return true;
   };
   auto visit = [&](const RayStep& step, RayResult& res) {
-    on_step(step);
+    on_step(step.start(), step.t0);
     const double l1 = step.t0 + step.h;
     double best = l1 + 1.0;
     int hit_sphere = -1;
@@ -237,37 +293,142 @@ RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
     return out;
   }
   if (res.reason != StopReason::escaped) return out;  // gave up: black, kind 4
-  // Escape direction: the spatial tangent, bent by the weak-field deflection
-  // still to come between here and infinity, (2M/r) tan(psi/2) towards the
-  // centre (psi: angle between position and direction) — without it the sky
-  // would sit ~2M/R radians off at the escape radius R.
-  Vec4 dx, dp;
-  st.hamiltonian_rhs(x, {res.y[4], res.y[5], res.y[6], res.y[7]}, dx, dp);
-  Vec3 d = {dx[1], dx[2], dx[3]};
-  const double dn = norm3(d);
-  for (auto& c : d) c /= dn;
-  const double M = st.asymptotic_mass();
-  if (M > 0.0) {
-    const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
-    const Vec3 rh = {x[1] / rho, x[2] / rho, x[3] / rho};
-    const double c = std::clamp(rh[0] * d[0] + rh[1] * d[1] + rh[2] * d[2], -1.0, 1.0);
-    const double psi = std::acos(c);
-    if (psi > 1e-9) {
-      const double delta = 2.0 * M / rho * std::tan(0.5 * psi);
-      // Unit vector in the plane, perpendicular to d, pointing away from the centre side.
-      Vec3 w = {rh[0] - c * d[0], rh[1] - c * d[1], rh[2] - c * d[2]};
-      const double wn = norm3(w);
-      for (auto& q : w) q /= wn;
-      const double cd = std::cos(delta), sd = std::sin(delta);
-      d = {cd * d[0] - sd * w[0], cd * d[1] - sd * w[1], cd * d[2] - sd * w[2]};
-    }
+  sky_sample(sc, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out);
+  return out;
+}
+
+// The Kerr fast path (geodesic/kerr_mino.hpp): Boyer–Lindquist and Mino
+// time, for Kerr scenes without spheres.  The same results as the general
+// path to the integration tolerance; the start, the end and what `lightcone
+// trace` records are converted to Kerr–Schild.
+template <class OnStep>
+RaySample trace_sample_mino(const SceneOf<Kerr>& sc, const Vec3& n, OnStep&& on_step) {
+  const Kerr& st = sc.spacetime;
+  const Vec4 p_ks = backward_ray_momentum(sc.metric, sc.frame, n);
+  auto bl_momentum = [&](const Vec4& s) {
+    const Mat4 J = st.trace_jacobian(s);
+    Vec4 p{};
+    for (int nu = 0; nu < 4; ++nu)
+      for (int mu = 0; mu < 4; ++mu) p[nu] += p_ks[mu] * J[mu][nu];
+    return p;
+  };
+  Vec4 s0 = sc.observer_scene;
+  Vec4 p_bl = bl_momentum(s0);
+  if (std::sin(s0[2]) == 0.0) {
+    // On the axis every phi names the observer's point, and the ray leaves it
+    // along one meridian: p_theta at phi is A cos(phi) + B sin(phi) from the
+    // meridians phi = 0 and pi/2, largest (the ray's own) at atan2(B, A).
+    // (At theta = pi that sends theta beyond pi: sin theta < 0 stands for
+    // the same point, see kerr_mino.hpp.)
+    const Vec4 pa = bl_momentum({s0[0], s0[1], s0[2], 0.0});
+    const Vec4 pb = bl_momentum({s0[0], s0[1], s0[2], 0.5 * pi});
+    s0[3] = std::atan2(pb[2], pa[2]);
+    p_bl[2] = std::hypot(pa[2], pb[2]);
+    p_bl[3] = 0.0;
   }
+  const KerrMinoStart start = kerr_mino_start(st.mass(), st.spin(), s0, p_bl, sc.rays.escape_radius);
+  // A Mino state as a trace-coordinate state (x^mu, p_mu), for the path
+  // recorder and the layers' end event.
+  auto trace_state = [&](const MinoState& y) {
+    Vec4 s, p;
+    kerr_mino_event(start.rhs, y, s, p);
+    const Mat4 Ji = inverse(st.trace_jacobian(s));
+    const Vec4 x = st.trace_from_scene(s);
+    Vec4 pk{};
+    for (int mu = 0; mu < 4; ++mu)
+      for (int nu = 0; nu < 4; ++nu) pk[mu] += p[nu] * Ji[nu][mu];
+    return RayState{x[0], x[1], x[2], x[3], pk[0], pk[1], pk[2], pk[3]};
+  };
+  RaySample out;
+  int crossings = 0;
+  auto fill_event = [&](const MinoState& y) {
+    Vec4 s, p;
+    kerr_mino_event(start.rhs, y, s, p);
+    out.r = s[1];
+    out.phi = s[3];
+    out.t = s[0] - sc.observer_time;
+    out.order = crossings;
+  };
+  const double u_escape = 1.0 / sc.rays.escape_radius;
+  MinoState at_escape = start.y0;  // where r passed the escape radius (the layers' end event)
+  double at_escape_lambda = 0.0;
+  Vec3 direction{};                // at infinity, in the Kerr–Schild Cartesian frame
+  auto visit = [&](const MinoStep& step, MinoResult& res) {
+    if constexpr (!std::is_same_v<std::decay_t<OnStep>, NoPath>) on_step(trace_state(step.start()), step.start()[7]);
+    const double u0 = step.start()[1];
+    // The step ends at infinity if u reaches 0 in it; nothing beyond counts.
+    double l1 = step.t0 + step.h, u1 = step.component(1, l1);
+    if (u1 <= 0.0) {
+      l1 = locate_crossing(step, [](const MinoState& y) { return y[1]; }, u0, u1);
+      u1 = 0.0;
+    }
+    const double c0 = step.start()[2], c1 = step.component(2, l1);
+    if ((c0 > 0.0) != (c1 > 0.0) && c0 != 0.0) {
+      const double lz = locate_crossing(step, [](const MinoState& y) { return y[2]; }, step.t0, l1, c0, c1);
+      const MinoState y = step.at(lz);
+      fill_event(y);
+      if (sc.disk && out.r >= sc.disk->spec.inner && out.r <= sc.disk->spec.outer) {
+        out.kind = HitKind::disk;
+        out.color = sc.disk->color(out.r, out.phi);
+        res.reason = StopReason::hit;
+        res.y = y;
+        res.lambda = lz;
+        return true;
+      }
+      if (y[1] > u_escape) ++crossings;  // as the Kerr–Schild path counts: up to the escape radius
+    }
+    if (u0 > u_escape && u1 <= u_escape) {
+      at_escape_lambda = locate_crossing(
+          step, [u_escape](const MinoState& y) { return y[1] - u_escape; }, step.t0, l1, u0 - u_escape, u1 - u_escape);
+      at_escape = step.at(at_escape_lambda);
+    }
+    if (res.reason == StopReason::escaped) {
+      // At infinity phi_shift vanishes: the Kerr–Schild direction is the BL
+      // angular position (sin th < 0 included: the same point).
+      const MinoState y = step.at(l1);
+      direction = {y[3] * std::cos(y[4]), y[3] * std::sin(y[4]), y[2]};
+    }
+    return false;
+  };
+  const MinoResult res = trace_kerr_mino(start, st.mass() > 0.0 ? st.capture_radius() : 0.0, sc.rays, visit);
+  out.steps = res.steps;
+  out.reason = res.reason;
+  if (res.reason == StopReason::hit) {
+    out.end = trace_state(res.y);
+    out.lambda_end = res.y[7];
+    return out;
+  }
+  const MinoState& last = res.reason == StopReason::escaped ? at_escape : res.y;
+  out.end = trace_state(last);
+  out.lambda_end = last[7];
+  fill_event(last);
+  if (res.reason == StopReason::horizon) {
+    out.kind = HitKind::horizon;
+    return out;
+  }
+  if (res.reason != StopReason::escaped) return out;  // gave up: black, kind 4
   out.kind = HitKind::sky;
-  const double theta = std::acos(std::clamp(d[2], -1.0, 1.0));
-  double sphi = std::atan2(d[1], d[0]);
+  const double n2 = norm3(direction);
+  const double theta = std::acos(std::clamp(direction[2] / n2, -1.0, 1.0));
+  double sphi = std::atan2(direction[1], direction[0]);
   if (sphi < 0) sphi += two_pi;
   out.color = sc.sky.color(theta, sphi);
   return out;
+}
+
+}  // namespace detail
+
+// Traces the camera ray along local direction n (on the observer's legs).
+// OnStep(const RayState& y, double sigma) sees the start of every accepted
+// step in trace coordinates with its affine parameter (for `lightcone
+// trace`; NoPath when rendering).  Kerr scenes without spheres take the
+// Boyer–Lindquist–Mino path unless sc.rays.kerr_chart says otherwise.
+template <class S, class OnStep>
+RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
+  if constexpr (std::is_same_v<S, Kerr>)
+    if (sc.spheres.empty() && sc.rays.kerr_chart == KerrChart::boyer_lindquist_mino)
+      return detail::trace_sample_mino(sc, n, on_step);
+  return detail::trace_sample_hamiltonian(sc, n, on_step);
 }
 
 }  // namespace lc

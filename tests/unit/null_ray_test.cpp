@@ -84,7 +84,10 @@ TEST(NullRay, KerrConstantsOfMotionAreConserved) {
         worst_Q = std::max(worst_Q, std::abs(c.Q - c0.Q) / std::max(std::abs(c0.Q), c0.E * c0.E));
         return false;
       };
-      const RayResult r = trace_null_ray(k, x, p, RayOptions{}, check);
+      RayOptions o;
+      o.kerr_chart = KerrChart::kerr_schild;
+      o.control.rtol = o.control.atol = conservation_ray_tolerance;
+      const RayResult r = trace_null_ray(k, x, p, o, check);
       (r.reason == StopReason::horizon ? captured : escaped)++;
       EXPECT_LT(std::abs(r.hamiltonian), 1e-8 * c0.E * c0.E);  // the null condition holds
       EXPECT_TRUE(r.reason == StopReason::horizon || r.reason == StopReason::escaped);
@@ -163,8 +166,12 @@ TEST(NullRay, AgreesWithGslReference) {
   const GeodesicPath ref = solve_geodesic(pb);
   ASSERT_EQ(ref.reason, StopReason::reached);
   const Vec4 xr = ref.samples.back().x;
-  const Vec4 xd = dp5_position_at(k, x, p, 45.0, default_ray_tolerance);
+  // At 1e-10 the two agree to 1e-7 M after 45 M of path; at the production
+  // tolerance (chosen by image error) to ~1e-5 M.
+  const Vec4 xd = dp5_position_at(k, x, p, 45.0, conservation_ray_tolerance);
   for (int m = 1; m < 4; ++m) EXPECT_NEAR(xd[m], xr[m], 1e-7) << m;
+  const Vec4 xp = dp5_position_at(k, x, p, 45.0, default_ray_tolerance);
+  for (int m = 1; m < 4; ++m) EXPECT_NEAR(xp[m], xr[m], 1e-5) << m;
 }
 
 TEST(NullRay, EquatorialCrossingIsLocatedFromDenseOutput) {

@@ -8,15 +8,12 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "render/accuracy.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
 
 namespace lc {
 namespace {
-
-struct NoPath {
-  void operator()(const RayStep&) const {}
-};
 
 FrameScene kerr_scene(double M, double a, double r, double theta_deg, double fov, bool disk) {
   FrameScene fs;
@@ -30,6 +27,51 @@ FrameScene kerr_scene(double M, double a, double r, double theta_deg, double fov
 
 RaySample sample_at(const Scene& scene, double px, double py) {
   return std::visit([&](const auto& sc) { return trace_sample(sc, sc.camera.direction(px, py), NoPath{}); }, scene);
+}
+
+// Every pixel-centre sample of a W x H image of `fs`, traced with `chart`
+// at `tolerance`.
+std::vector<RaySample> samples(const FrameScene& fs, int W, int H, KerrChart chart, double tolerance) {
+  ShotResources res;
+  RayOptions o;
+  o.kerr_chart = chart;
+  o.control.rtol = o.control.atol = tolerance;
+  o.control.h_min = 1e-14;
+  const Scene scene = build_scene(fs, W, H, res, o);
+  std::vector<RaySample> out;
+  for (int j = 0; j < H; ++j)
+    for (int i = 0; i < W; ++i) out.push_back(sample_at(scene, i + 0.5, j + 0.5));
+  return out;
+}
+
+TEST(Render, KerrFastPathAgreesWithKerrSchild) {
+  // The Boyer–Lindquist–Mino integrator at tolerance 1e-12 against the
+  // Kerr–Schild Hamiltonian at 1e-14, on the bench camera (a = 0.9 from
+  // r = 30 at 80 deg: rays that graze the photon orbit, cross the disk plane
+  // several times or fall in) and from on the spin axis (where the BL path
+  // starts L = 0 rays along their own meridian).  Two independent
+  // formulations.  Measured convergence (docs/performance.md): a
+  // second-order image (one that crossed the plane twice) converges in
+  // Kerr–Schild to ~1e-7 M at 1e-14 and in BL to ~1e-9 at 1e-12, direct
+  // and first-order images far better; the bounds leave a factor ~5.
+  for (const double theta : {80.0, 0.0}) {
+    const FrameScene fs = kerr_scene(1, 0.9, 30, theta, 40, true);
+    const auto ks = samples(fs, 40, 40, KerrChart::kerr_schild, 1e-14);
+    const auto bl = samples(fs, 40, 40, KerrChart::boyer_lindquist_mino, 1e-12);
+    const AccuracyReport a = compare_samples(ks, bl, fs);
+    EXPECT_EQ(a.kind_mismatches, 0) << "theta " << theta;
+    EXPECT_EQ(a.cell_mismatches, 0) << "theta " << theta;
+    EXPECT_GT(a.disk_pixels, 100) << "theta " << theta;
+    EXPECT_LT(a.dr_p99, 1e-7) << "theta " << theta;
+    EXPECT_LT(a.dr_max, 5e-7) << "theta " << theta;
+    EXPECT_LT(a.dphi_max, 5e-7) << "theta " << theta;
+    RecordProperty(theta == 0 ? "axis_dr_max" : "inclined_dr_max", std::to_string(a.dr_max));
+    for (std::size_t k = 0; k < ks.size(); ++k) {
+      EXPECT_EQ(ks[k].order, bl[k].order) << "pixel " << k;
+      if (ks[k].kind == HitKind::sky)
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(ks[k].color[c], bl[k].color[c], 1e-6) << "pixel " << k;
+    }
+  }
 }
 
 TEST(Render, SchwarzschildShadowAngularRadius) {
@@ -58,43 +100,49 @@ TEST(Render, SchwarzschildShadowAngularRadius) {
 
 TEST(Render, FlatSpaceDiskIsTheExactProjection) {
   // M = 0: each pixel's disk hit is where the straight line from the camera
-  // meets z = 0.
+  // meets z = 0.  At tolerance 1e-10 to 1e-7 relative (the formulation is
+  // exact); at the production tolerance, chosen by image error, to 1e-4 M
+  // at worst (the bench's standard is a 99th percentile of 1e-5 M).
   const int W = 48, H = 48;
-  ShotResources res;
-  const FrameScene fs = kerr_scene(0, 0, 30, 70, 50, true);
-  const Scene scene = build_scene(fs, W, H, res);
-  const Vec3 cam = {30 * std::sin(70 * degree), 0, 30 * std::cos(70 * degree)};
-  const PinholeCamera camera(fs.camera, W, H);
-  int disk_pixels = 0;
-  for (int j = 0; j < H; ++j)
-    for (int i = 0; i < W; ++i) {
-      const Vec3 n = camera.direction(i + 0.5, j + 0.5);
-      // Legs of the static frame at (theta, phi = 0) in flat space: e_r, e_theta, e_phi.
-      const double th = 70 * degree;
-      const Vec3 er = {std::sin(th), 0, std::cos(th)}, et = {std::cos(th), 0, -std::sin(th)}, ep = {0, 1, 0};
-      const Vec3 d = {n[0] * er[0] + n[1] * et[0] + n[2] * ep[0], n[0] * er[1] + n[1] * et[1] + n[2] * ep[1],
-                      n[0] * er[2] + n[1] * et[2] + n[2] * ep[2]};
-      const RaySample s = sample_at(scene, i + 0.5, j + 0.5);
-      if (d[2] >= 0) {
-        EXPECT_EQ(s.kind, HitKind::sky);
-        continue;
+  for (const auto [tolerance, bound] : {std::pair{1e-10, 1e-7}, std::pair{default_ray_tolerance, 1e-5}}) {
+    ShotResources res;
+    const FrameScene fs = kerr_scene(0, 0, 30, 70, 50, true);
+    RayOptions o;
+    o.control.rtol = o.control.atol = tolerance;
+    const Scene scene = build_scene(fs, W, H, res, o);
+    const Vec3 cam = {30 * std::sin(70 * degree), 0, 30 * std::cos(70 * degree)};
+    const PinholeCamera camera(fs.camera, W, H);
+    int disk_pixels = 0;
+    for (int j = 0; j < H; ++j)
+      for (int i = 0; i < W; ++i) {
+        const Vec3 n = camera.direction(i + 0.5, j + 0.5);
+        // Legs of the static frame at (theta, phi = 0) in flat space: e_r, e_theta, e_phi.
+        const double th = 70 * degree;
+        const Vec3 er = {std::sin(th), 0, std::cos(th)}, et = {std::cos(th), 0, -std::sin(th)}, ep = {0, 1, 0};
+        const Vec3 d = {n[0] * er[0] + n[1] * et[0] + n[2] * ep[0], n[0] * er[1] + n[1] * et[1] + n[2] * ep[1],
+                        n[0] * er[2] + n[1] * et[2] + n[2] * ep[2]};
+        const RaySample s = sample_at(scene, i + 0.5, j + 0.5);
+        if (d[2] >= 0) {
+          EXPECT_EQ(s.kind, HitKind::sky);
+          continue;
+        }
+        const double k = -cam[2] / d[2];
+        const double x = cam[0] + k * d[0], y = cam[1] + k * d[1];
+        const double r = std::hypot(x, y);
+        if (r < 6 || r > 15) {
+          EXPECT_EQ(s.kind, HitKind::sky) << i << "," << j;
+          continue;
+        }
+        ++disk_pixels;
+        ASSERT_EQ(s.kind, HitKind::disk) << i << "," << j;
+        EXPECT_NEAR(s.r, r, bound * r) << "tolerance " << tolerance;
+        double phi = std::atan2(y, x);
+        if (phi < 0) phi += two_pi;
+        EXPECT_NEAR(std::remainder(s.phi - phi, two_pi), 0.0, bound) << "tolerance " << tolerance;
+        EXPECT_EQ(s.order, 0);
       }
-      const double k = -cam[2] / d[2];
-      const double x = cam[0] + k * d[0], y = cam[1] + k * d[1];
-      const double r = std::hypot(x, y);
-      if (r < 6 || r > 15) {
-        EXPECT_EQ(s.kind, HitKind::sky) << i << "," << j;
-        continue;
-      }
-      ++disk_pixels;
-      ASSERT_EQ(s.kind, HitKind::disk) << i << "," << j;
-      EXPECT_NEAR(s.r, r, 1e-7 * r);
-      double phi = std::atan2(y, x);
-      if (phi < 0) phi += two_pi;
-      EXPECT_NEAR(std::remainder(s.phi - phi, two_pi), 0.0, 1e-7);
-      EXPECT_EQ(s.order, 0);
-    }
-  EXPECT_GT(disk_pixels, 200);
+    EXPECT_GT(disk_pixels, 200);
+  }
 }
 
 TEST(Render, DiskSeenAlongTheAxisIsRotationallySymmetric) {
