@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sets lightcone up on a Debian 12 machine and runs one job:
-#   ./bootstrap.sh demo   install what is missing, build, run the main job
+#   ./bootstrap.sh demo   install what is missing, build, render and encode the preview showcase
 #   ./bootstrap.sh test   install what is missing, build, run every test (ctest)
 #   ./bootstrap.sh build  install what is missing and build only
 # Installs Debian packages with apt-get (as root, or through sudo) only when
@@ -38,25 +38,20 @@ fi
 
 jobs=$(nproc)
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j "$jobs"
-
 case "$job" in
   test)
+    cmake --build build -j "$jobs"
     # Open MPI refuses root and needs an rsh agent even on one node; the
     # tests that launch mpirun set what they need themselves.
     ctest --test-dir build --output-on-failure -j "$jobs"
     ;;
+  build)
+    cmake --build build -j "$jobs"
+    ;;
   demo)
-    for shot in shots/bench/kerr_disk.lua shots/bench/dihole_sphere.lua; do
-      ./build/pipeline/lightcone render "$shot" --out out/bench
-    done
-    ./build/pipeline/lightcone render shots/orbit_example.lua --out out/orbit_example --frames 0:95:8
-    mkdir -p out/geodesics
-    for spec in shots/geodesics/*.lua; do
-      name=$(basename "$spec" .lua)
-      ./build/pipeline/lightcone geodesic "$spec" -o "out/geodesics/$name.csv"
-    done
-    ./build/pipeline/lightcone bench --repeats 1
-    echo "bootstrap: frames in out/bench/ and out/orbit_example/ (EXR + PNG), geodesics in out/geodesics/ (CSV)"
+    # The binary alone (the tests are not needed to make the film).
+    cmake --build build -j "$jobs" --target lightcone
+    ./build/pipeline/lightcone showcase --quality preview --progress 30
+    echo "bootstrap: the film is out/showcase/preview/showcase.mp4; per sequence: out/showcase/preview/<shot>.mp4 and <shot>.sheet.png"
     ;;
 esac
