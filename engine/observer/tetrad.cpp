@@ -4,7 +4,7 @@
 
 namespace lc {
 
-Tetrad orthonormalize(const Mat4& g, const std::array<Vec4, 4>& basis, const std::string& who) {
+Tetrad orthonormalize(const Mat4& g, const std::array<Vec4, 4>& basis, const char* who) {
   Tetrad t{};
   const double n0 = contract(g, basis[0], basis[0]);
   if (!(n0 < 0.0)) throw ObserverError(fmt::format("{}: the time direction is not timelike here", who));

@@ -25,7 +25,7 @@ class ObserverError : public std::runtime_error {
 // Gram–Schmidt in the metric g: the first vector must be timelike, the rest
 // are made orthonormal to it and each other in order.  Throws ObserverError
 // (naming `who`) when the first vector is not timelike or the set degenerates.
-Tetrad orthonormalize(const Mat4& g, const std::array<Vec4, 4>& basis, const std::string& who);
+Tetrad orthonormalize(const Mat4& g, const std::array<Vec4, 4>& basis, const char* who);
 
 // Frame of an observer with 4-velocity u (normalised, future-directed) made
 // by a pure Lorentz boost of `rest` (whose time leg need not be u): spatial

@@ -92,23 +92,40 @@ std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayS
     chi[k] = sphere.life_hi[k] + far;
   }
   if (!boxes_overlap(rlo, rhi, clo, chi)) return std::nullopt;
-  const RayState m = step.at(0.5 * (l0 + l1));
-  for (int k = 0; k < 3; ++k) {
-    rlo[k] = std::min(rlo[k], m[k + 1]);
-    rhi[k] = std::max(rhi[k], m[k + 1]);
+  // How far the step strays from its chord: the largest distance of the
+  // points at 1/4, 1/2 and 3/4 from the chord's (a step is a smooth,
+  // nearly polynomial arc), doubled for safety.  Long straight steps (far
+  // from the holes) then keep a tight tube instead of one grown by a
+  // fraction of their length.
+  double bulge = 0.0, quarter = 0.0;  // quarter: the longest chord of a quarter of the step
+  RayState prev = a;
+  for (const double q : {0.25, 0.5, 0.75, 1.0}) {
+    const RayState m = q == 1.0 ? b : step.at(l0 + q * (l1 - l0));
+    double d2 = 0.0, seg2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      rlo[k] = std::min(rlo[k], m[k + 1]);
+      rhi[k] = std::max(rhi[k], m[k + 1]);
+      const double off = m[k + 1] - (a[k + 1] + q * (b[k + 1] - a[k + 1]));
+      d2 += off * off;
+      seg2 += (m[k + 1] - prev[k + 1]) * (m[k + 1] - prev[k + 1]);
+    }
+    bulge = std::max(bulge, std::sqrt(d2));
+    quarter = std::max(quarter, std::sqrt(seg2));
+    prev = m;
   }
+  const double margin = 2.0 * bulge + 1e-9 * std::sqrt(chord2);
   sphere.bounds(a[0], b[0], clo, chi);
-  const double grow = 2.0 * sphere.spec.radius + 0.1 * std::sqrt(chord2);
+  const double grow = 2.0 * sphere.spec.radius + margin;
   for (int k = 0; k < 3; ++k) {
     clo[k] -= grow;
     chi[k] += grow;
   }
   if (!boxes_overlap(rlo, rhi, clo, chi)) return std::nullopt;
 
-  // Clip the step to the tube with the straight chord (a step is nearly
-  // straight; the interval is widened by 5% of the step each side for the
-  // bulge), then sample F = |xi|^2 - R^2 at spacing R/4 along what is left,
-  // so no sphere slips between samples however long the step.
+  // Clip the step to the tube with the straight chord (widened each side by
+  // the margin, for the bulge), then sample F = |xi|^2 - R^2 at spacing R/4
+  // along what is left, so no sphere slips between samples however long
+  // the step.
   const double R = sphere.spec.radius, R2 = R * R;
   double s0 = 0.0, s1 = 1.0;
   for (int k = 0; k < 3; ++k) {
@@ -119,20 +136,45 @@ std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayS
     s0 = std::max(s0, e0);
     s1 = std::min(s1, e1);
   }
-  s0 = std::max(0.0, s0 - 0.05);
-  s1 = std::min(1.0, s1 + 0.05);
+  const double widen = chord2 > 0.0 ? margin / std::sqrt(chord2) : 1.0;
+  s0 = std::max(0.0, s0 - widen);
+  s1 = std::min(1.0, s1 + widen);
   if (s0 >= s1) return std::nullopt;
+  // Sample F = |xi|^2 - R^2 along what is left, sphere-tracing style (Hart
+  // 1996): xi is linear in the ray point (with the metric at the sphere's
+  // centre), so from a sample at distance |xi| the ray cannot reach the
+  // sphere within (|xi| - R) / lip of coordinate length, lip bounding how
+  // fast |xi| can change: Gershgorin on the metric, times (1 + dt/dx along
+  // the step) for the sphere's motion at up to the speed of light, doubled
+  // for the metric's variation.  Far samples skip ahead; near the
+  // sphere the spacing is R/4, so no sphere slips between samples however
+  // long the step.
   const double chord = std::sqrt(chord2);
-  const int n = std::clamp(static_cast<int>(std::ceil((s1 - s0) * chord / (0.25 * R))), 4, 100000);
+  // Coordinate length per unit of s (the step's parameter fraction), at
+  // most: the ray's coordinate speed varies along a step (it slows deep in
+  // a potential well), so twice the fastest quarter's, not the chord.
+  const double len = 8.0 * quarter + 2.0 * margin;
+  const double spacing = 0.25 * R;
+  const Mat4 gc = st.metric(sphere.at(0.5 * (a[0] + b[0])).centre);
+  double row = 0.0;
+  for (int i = 1; i < 4; ++i) row = std::max(row, std::abs(gc[i][0]) + std::abs(gc[i][1]) + std::abs(gc[i][2]) + std::abs(gc[i][3]));
+  // The sphere moves (slower than light) while the ray's coordinate time
+  // runs on by |dt| per |dx| — deep in a potential well far more than 1.
+  const double time_rate = std::abs(b[0] - a[0]) / std::max(chord, 1e-300);
+  const double lip = 2.0 * std::sqrt(row) * (1.0 + time_rate);
   auto F = [&](const RayState& y) {
     const Vec3 xi = sphere_local(st, sphere, {y[0], y[1], y[2], y[3]});
     return xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2] - R2;
   };
-  double prev_l = l0 + s0 * (l1 - l0);
+  auto lambda_at = [&](double q) { return l0 + q * (l1 - l0); };
+  double prev_s = s0, prev_l = lambda_at(s0);
   double prev_f = F(step.at(prev_l));
   double min_f = prev_f, min_l = prev_l, min_lo = prev_l, min_hi = prev_l;
-  for (int i = 1; i <= n; ++i) {
-    const double l = l0 + (s0 + (s1 - s0) * i / n) * (l1 - l0);
+  while (prev_s < s1) {
+    const double dist = std::sqrt(std::max(prev_f + R2, 0.0));
+    const double skip = std::max(spacing, (dist - R) / lip);
+    const double q = std::min(s1, prev_s + skip / len);
+    const double l = lambda_at(q);
     const double f = F(step.at(l));
     if (prev_f > 0.0 && f <= 0.0)
       return locate_crossing(step, F, prev_l, l, prev_f, f, 1e-12 * std::max(1.0, R2));
@@ -144,6 +186,7 @@ std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayS
     } else if (min_hi == min_l) {
       min_hi = l;
     }
+    prev_s = q;
     prev_l = l;
     prev_f = f;
   }
@@ -151,7 +194,6 @@ std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayS
   // nearly straight segment F is nearly a parabola, so the sample nearest
   // the closest approach has F < spacing^2 / 4 when the ray enters; refine
   // the minimum there by golden-section search and take the entry before it.
-  const double spacing = (s1 - s0) * chord / n;
   if (min_f < 0.5 * spacing * spacing && min_f > 0.0) {
     double a = min_lo, b = min_hi;
     constexpr double g = 0.6180339887498949;
