@@ -11,10 +11,40 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 namespace lc {
+
+namespace detail {
+
+// log2 and exp2 to ~1e-5 relative, for the step-size controller only: its
+// factors are heuristics clamped to [0.1, 5], so libm's full precision
+// (two pow calls, ~9% of a step) buys nothing.  Pure arithmetic, so the
+// step sequence is the same on every machine.
+// log2(x), x > 0 and finite: exponent from the bits, ln of the mantissa m
+// in [1, 2) by the series 2 atanh((m - 1)/(m + 1)) to the 9th power.
+inline double controller_log2(double x) {
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+  const int e = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
+  const double m = std::bit_cast<double>((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);
+  const double t = (m - 1.0) / (m + 1.0), t2 = t * t;
+  const double ln_m = 2.0 * t * (1.0 + t2 * (1.0 / 3.0 + t2 * (1.0 / 5.0 + t2 * (1.0 / 7.0 + t2 * (1.0 / 9.0)))));
+  return e + ln_m * 1.4426950408889634;
+}
+// 2^y for |y| < 1000: 2^floor(y) in the exponent bits, 2^f by Taylor to f^7.
+inline double controller_exp2(double y) {
+  const double n = std::floor(y);
+  const double f = (y - n) * 0.6931471805599453;
+  const double p =
+      1.0 + f * (1.0 + f * (0.5 + f * (1.0 / 6 + f * (1.0 / 24 + f * (1.0 / 120 + f * (1.0 / 720 + f * (1.0 / 5040)))))));
+  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(p) + (static_cast<std::uint64_t>(static_cast<std::int64_t>(n)) << 52));
+}
+
+}  // namespace detail
+
 
 struct StepControl {
   double rtol = 1e-9;
@@ -57,7 +87,7 @@ class DormandPrince5 {
     t_ = t;
     y_ = y;
     h_ = h;
-    err_old_ = 1e-4;
+    log2_err_old_ = detail::controller_log2(1e-4);
     rhs_(t_, y_, k1_);
     rejected_last_ = false;
   }
@@ -121,14 +151,17 @@ class DormandPrince5 {
       err = std::sqrt(err / static_cast<double>(N));
       if (!std::isfinite(err)) err = 1e10;  // a stage left the domain: shrink hard
 
-      const double fac11 = std::pow(err, expo1);
+      // err^expo1 and err_old^beta (HNW's PI controller) through one log2
+      // each; err is at least 1e-10 here so the logarithms are finite.
+      const double log_err = detail::controller_log2(std::max(err, 1e-10));
+      const double fac11 = detail::controller_exp2(expo1 * log_err);
       if (err <= 1.0) {
-        double fac = fac11 / std::pow(err_old_, beta) / safe;
+        double fac = detail::controller_exp2(expo1 * log_err - beta * log2_err_old_) / safe;
         fac = std::clamp(fac, 1.0 / fac_max, 1.0 / fac_min);
         double h_new = h / fac;
         if (std::abs(h_new) > c_.h_max) h_new = std::copysign(c_.h_max, h);
         if (rejected_last_) h_new = std::copysign(std::min(std::abs(h_new), std::abs(h)), h);
-        err_old_ = std::max(err, 1e-4);
+        log2_err_old_ = detail::controller_log2(std::max(err, 1e-4));
         rejected_last_ = false;
 
         dense.t0 = t_;
@@ -158,7 +191,7 @@ class DormandPrince5 {
   Rhs rhs_;
   StepControl c_;
   State w_;
-  double t_ = 0.0, h_ = 0.0, err_old_ = 1e-4;
+  double t_ = 0.0, h_ = 0.0, log2_err_old_ = -13.287712379549449;  // log2(1e-4)
   State y_{}, k1_{};
   bool rejected_last_ = false;
   long rejected_ = 0;

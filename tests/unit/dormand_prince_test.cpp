@@ -80,3 +80,18 @@ TEST(DormandPrince, GivesUpWhenTheStepUnderflows) {
 
 }  // namespace
 }  // namespace lc
+
+namespace lc {
+namespace {
+
+TEST(DormandPrince, ControllerLog2AndExp2AreAccurateEnough) {
+  // The step-size controller's own log2/exp2: 1e-5 relative over the range
+  // the controller sees (errors 1e-10 .. 1e10, exponents -5 .. 5).
+  for (double x = 1e-10; x < 1e10; x *= 1.37)
+    EXPECT_NEAR(detail::controller_log2(x), std::log2(x), 1e-5) << x;
+  for (double y = -40; y < 40; y += 0.173)
+    EXPECT_NEAR(detail::controller_exp2(y) / std::exp2(y), 1.0, 1e-5) << y;
+}
+
+}  // namespace
+}  // namespace lc
