@@ -83,6 +83,7 @@ Job load_job(const RenderCommand& cmd) {
   if (job.rs.supersample < 1 || job.rs.supersample > 16)
     throw std::invalid_argument(fmt::format("--supersample {}: must be between 1 and 16", job.rs.supersample));
   job.rs.layers = cmd.layers;
+  job.rs.adaptive = !cmd.full_supersample;
   job.layout = StripeLayout(job.rs.height, cmd.stripes.value_or(farm::default_stripes));
   job.preview = cmd.preview;
   if (job.preview != 0 && (job.preview < 2 || job.preview > job.layout.stripes()))

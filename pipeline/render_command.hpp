@@ -21,6 +21,7 @@ struct RenderCommand {
   double scale = 1.0;
   std::optional<int> supersample;
   bool layers = false;
+  bool full_supersample = false;      // every sample of the N x N grid, not adaptively
   int threads = 0;                    // 0: every core (under MPI: the node's share)
   std::optional<int> stripes;         // working sets per frame (default: farm::default_stripes)
   int preview = 0;                    // k >= 2: every k-th stripe of every frame first

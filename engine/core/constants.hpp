@@ -41,6 +41,12 @@ inline constexpr double default_ray_tolerance = 5e-8;
 // round the photon sphere in the Kerr–Schild integrator (1e-9 gave 3e-8).
 inline constexpr double conservation_ray_tolerance = 1e-10;
 
+// Adaptive supersampling: a pixel whose first samples agree in hit kind and
+// in every colour channel to within this (linear RGB; 1/256 is under half
+// an 8-bit sRGB step everywhere above the darkest ~1%) is not refined.
+// docs/performance.md, change 9, measures what it saves and costs.
+inline constexpr double adaptive_sample_threshold = 1.0 / 256.0;
+
 // Default safety bound on the number of accepted steps of one ray.
 inline constexpr long default_max_steps = 100000;
 

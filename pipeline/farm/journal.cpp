@@ -72,6 +72,11 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
     return std::nullopt;
   if (*layers != "0" && *layers != "1") return std::nullopt;
   jf.settings.layers = *layers == "1";
+  // Written since adaptive supersampling; older lines sampled the full grid.
+  if (const std::string* sampling = get("sampling")) {
+    if (*sampling != "adaptive" && *sampling != "full") return std::nullopt;
+    jf.settings.adaptive = *sampling == "adaptive";
+  }
   if (inputs->size() != 16) return std::nullopt;
   jf.inputs = *inputs;
   return jf;
@@ -80,16 +85,17 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
 }  // namespace
 
 std::string FrameSettings::describe() const {
-  return fmt::format("{}x{}, {}x{} samples per pixel, {}", width, height, supersample, supersample,
-                     layers ? "with data layers" : "no data layers");
+  return fmt::format("{}x{}, {}x{} samples per pixel{}, {}", width, height, supersample, supersample,
+                     adaptive && supersample > 1 ? " (adaptive)" : "", layers ? "with data layers" : "no data layers");
 }
 
 std::string journal_header_line() { return with_check(header); }
 
 std::string journal_frame_line(const JournalFrame& f) {
-  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} inputs={} exr={} png={} rays={}", f.frame,
-                                f.settings.width, f.settings.height, f.settings.supersample, f.settings.layers ? 1 : 0,
-                                f.inputs, f.exr_bytes, f.png_bytes, f.rays));
+  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={} inputs={} exr={} png={} rays={}",
+                                f.frame, f.settings.width, f.settings.height, f.settings.supersample,
+                                f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", f.inputs,
+                                f.exr_bytes, f.png_bytes, f.rays));
 }
 
 std::string journal_input_line(const std::string& hash, const std::string& path) {

@@ -22,6 +22,7 @@ namespace lc::farm {
 struct FrameSettings {
   int width = 0, height = 0, supersample = 1;
   bool layers = false;
+  bool adaptive = false;  // adaptive supersampling (journal lines without the field: full N x N)
   bool operator==(const FrameSettings&) const = default;
   // "48x32, 1x1 samples per pixel, no data layers": for messages.
   std::string describe() const;

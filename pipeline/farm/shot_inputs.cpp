@@ -70,6 +70,7 @@ std::uint64_t job_digest(const Shot& shot, const RenderSettings& rs, int stripes
   h.add(i.name).add(std::uint64_t(i.frames)).add(fmt::format("{}", i.fps));
   h.add(std::uint64_t(rs.width)).add(std::uint64_t(rs.height)).add(std::uint64_t(rs.supersample));
   h.add(std::uint64_t(rs.layers)).add(std::uint64_t(stripes)).add(std::uint64_t(preview_every));
+  h.add(std::uint64_t(rs.adaptive && rs.supersample > 1));
   for (const auto& p : shot.loaded_files()) h.add(hash_file(p));
   return h.value();
 }

@@ -4,7 +4,10 @@
 
 namespace lc::farm {
 
-FrameSettings frame_settings(const RenderSettings& rs) { return {rs.width, rs.height, rs.supersample, rs.layers}; }
+FrameSettings frame_settings(const RenderSettings& rs) {
+  // Adaptive sampling only means something with more than one sample.
+  return {rs.width, rs.height, rs.supersample, rs.layers, rs.adaptive && rs.supersample > 1};
+}
 
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
                      std::vector<int> preview_rows)

@@ -17,7 +17,7 @@ namespace {
 JournalFrame frame(int n) {
   JournalFrame f;
   f.frame = n;
-  f.settings = {48, 32, 2, true};
+  f.settings = {48, 32, 2, true, n % 2 == 0};  // adaptive sampling on even frames
   f.inputs = "0123456789abcdef";
   f.exr_bytes = 1000 + n;
   f.png_bytes = 200 + n;
@@ -42,7 +42,8 @@ TEST(Journal, LinesRoundTrip) {
   const JournalContents j = parse_journal(journal_text(3), "j");
   ASSERT_EQ(j.frames.size(), 3u);
   const JournalFrame& f = j.frames.at(2);
-  EXPECT_EQ(f.settings, (FrameSettings{48, 32, 2, true}));
+  EXPECT_EQ(f.settings, (FrameSettings{48, 32, 2, true, true}));
+  EXPECT_EQ(j.frames.at(1).settings, (FrameSettings{48, 32, 2, true, false}));
   EXPECT_EQ(f.inputs, "0123456789abcdef");
   EXPECT_EQ(f.exr_bytes, 1002u);
   EXPECT_EQ(f.png_bytes, 202u);

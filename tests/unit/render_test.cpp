@@ -318,6 +318,32 @@ TEST(Render, ThreadCountDoesNotChangeTheImage) {
   for (std::size_t k = 0; k < one.layers.size(); ++k) EXPECT_EQ(one.layers[k].values, three.layers[k].values);
 }
 
+TEST(Render, AdaptiveSupersamplingRefinesWhereSamplesDiffer) {
+  // 2x2 adaptive against the full grid on the disk scene: fewer rays; the
+  // same value wherever the first samples agree to the threshold (the pixel
+  // is then flat to it); full samples at the disk's and shadow's edges.
+  const int W = 160, H = 120;
+  ShotResources res;
+  const Scene scene = build_scene(kerr_scene(1, 0.9, 30, 80, 40, true), W, H, res);
+  RenderSettings full{W, H, 2, false, false}, adaptive{W, H, 2, false, true};
+  RenderStats sf, sa;
+  const FrameImage a = render_frame(scene, adaptive, 2, &sa);
+  const FrameImage f = render_frame(scene, full, 2, &sf);
+  EXPECT_EQ(sf.rays, 4L * W * H);
+  EXPECT_LT(sa.rays, 3L * W * H);  // most pixels are flat
+  EXPECT_GT(sa.rays, 2L * W * H);  // edges are refined
+  double mean = 0;
+  for (std::size_t k = 0; k < a.rgb.size(); ++k) mean += std::abs(a.rgb[k] - f.rgb[k]);
+  mean /= static_cast<double>(a.rgb.size());
+  RecordProperty("adaptive_rays_per_pixel", std::to_string(double(sa.rays) / (W * H)));
+  RecordProperty("adaptive_mean_error", std::to_string(mean));
+  EXPECT_LT(mean, 2e-3);
+  // One sample per pixel has nothing to adapt: identical images.
+  const FrameImage a1 = render_frame(scene, RenderSettings{W, H, 1, false, true}, 2);
+  const FrameImage f1 = render_frame(scene, RenderSettings{W, H, 1, false, false}, 2);
+  EXPECT_EQ(a1.rgb, f1.rgb);
+}
+
 TEST(Render, RefusesObserversThatCannotExist) {
   ShotResources res;
   EXPECT_THROW(build_scene(kerr_scene(1, 0.9, 1.8, 90, 40, false), 8, 8, res), std::invalid_argument);  // ergoregion
