@@ -300,8 +300,13 @@ RaySample trace_sample_hamiltonian(const SceneOf<S>& sc, const Vec3& n, OnStep&&
       }
     const double z0 = step.start()[3], z1 = step.component(3, l1);
     if ((z0 > 0.0) != (z1 > 0.0) && z0 != 0.0) {
-      const double lz = locate_crossing(step, [](const RayState& y) { return y[3]; }, z0, z1);
-      if (lz < best) {
+      // Without a disk a crossing only counts (hit.order); it is located only
+      // when a sphere hit in the same step makes its order matter.
+      const double lz = sc.disk || hit_sphere >= 0 ? locate_crossing(step, [](const RayState& y) { return y[3]; }, z0, z1)
+                                                   : step.t0;
+      if (!sc.disk) {
+        if (lz < best) ++crossings;
+      } else if (lz < best) {
         const RayState y = step.at(lz);
         double t, r, phi;
         scene_polar(st, {y[0], y[1], y[2], y[3]}, t, r, phi);
