@@ -66,6 +66,13 @@ struct Sphere {
     c[0] = t;
     return {c, rest_frame};
   }
+  // The centre and its 4-velocity at coordinate time t, without the frame.
+  void centre(double t, Vec4& x, Vec4& u) const {
+    if (worldline) return worldline->centre_at_coordinate_time(t, x, u);
+    x = rest_position;
+    x[0] = t;
+    u = rest_frame.e[0];
+  }
   // Spatial box the centre stays in over [t0, t1].
   void bounds(double t0, double t1, Vec3& lo, Vec3& hi) const {
     if (worldline) return worldline->bounds(t0, t1, lo, hi);

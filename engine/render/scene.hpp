@@ -50,16 +50,21 @@ namespace detail {
 // whose derivative in tau is -g(u, u) = 1 (local linearisation, DESIGN.md).
 template <class S>
 Vec3 sphere_local(const S& st, const Sphere& sphere, const Vec4& X) {
-  SphereFrame f = sphere.at(X[0]);
-  Mat4 g = st.metric(f.centre);
+  // Newton on the centre and 4-velocity alone (cheap); the frame, with its
+  // metric and Gram–Schmidt, once at the event found.
+  double t = X[0];
+  Vec4 C, u;
+  sphere.centre(t, C, u);
   for (int it = 0; it < 3; ++it) {
-    const double lag = contract(g, X - f.centre, f.frame.e[0]);
+    const double lag = contract(st.metric(C), X - C, u);
     if (std::abs(lag) < 1e-12) break;
     // Moving the centre along u by -lag in proper time; in coordinate time
     // that is -lag * u^0.
-    f = sphere.at(f.centre[0] + lag * f.frame.e[0][0]);
-    g = st.metric(f.centre);
+    t = C[0] + lag * u[0];
+    sphere.centre(t, C, u);
   }
+  const SphereFrame f = sphere.at(t);
+  const Mat4 g = st.metric(f.centre);
   const Vec4 d = X - f.centre;
   return {contract(g, d, f.frame.e[1]), contract(g, d, f.frame.e[2]), contract(g, d, f.frame.e[3])};
 }

@@ -137,6 +137,28 @@ double Worldline::proper_time_at(double t) const {
   return (static_cast<double>(i) + s) * dtau_;
 }
 
+void Worldline::centre_at_coordinate_time(double t, Vec4& x, Vec4& u) const {
+  if (t < samples_.front().x[0]) {
+    x = samples_.front().x;
+    x[0] = t;
+    u = samples_.front().e.e[0];  // held at rest at the start
+    return;
+  }
+  const double f = proper_time_at(t) / dtau_;
+  const std::size_t i = std::min(static_cast<std::size_t>(f), samples_.size() - 2);
+  const double s = f - static_cast<double>(i);
+  const Sample& a = samples_[i];
+  const Sample& b = samples_[i + 1];
+  double h00, h10, h01, h11;
+  hermite(s, h00, h10, h01, h11);
+  // Derivatives of the Hermite basis in s; d/dtau = (d/ds) / dtau.
+  const double d00 = 6 * s * s - 6 * s, d10 = 3 * s * s - 4 * s + 1, d01 = -d00, d11 = 3 * s * s - 2 * s;
+  for (int m = 0; m < 4; ++m) {
+    x[m] = h00 * a.x[m] + h10 * dtau_ * a.u[m] + h01 * b.x[m] + h11 * dtau_ * b.u[m];
+    u[m] = (d00 * a.x[m] + d01 * b.x[m]) / dtau_ + d10 * a.u[m] + d11 * b.u[m];
+  }
+}
+
 WorldlineEvent Worldline::at_coordinate_time(double t) const {
   if (t < samples_.front().x[0]) {
     // Held at rest at the start before release: same place, shifted in time.

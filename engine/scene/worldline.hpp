@@ -37,6 +37,10 @@ class Worldline {
   WorldlineEvent at_coordinate_time(double t) const;
   // Proper time at trace coordinate time t (clamped to [0, duration]).
   double proper_time_at(double t) const;
+  // Only the position x and 4-velocity u at trace coordinate time t (as
+  // at_coordinate_time, without the frame's metric and Gram–Schmidt):
+  // what finding the event simultaneous with a ray point needs.
+  void centre_at_coordinate_time(double t, Vec4& x, Vec4& u) const;
 
   // Axis-aligned spatial box of the positions over the coordinate-time
   // interval [t0, t1] (any order): the tube the object's centre stays in.
