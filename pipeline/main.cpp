@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
   auto* showcase_cmd = app.add_subcommand(
       "showcase", "Render, encode and join the paper's three sequences into showcase.mp4 (resumable; runs under mpirun)");
   showcase_cmd->add_option("--quality", showcase.quality,
-                           "preview (256x144, 3 frames per second of story; minutes) or production (the paper's settings)");
+                           "preview (the default: 256x144, 3 frames per second of story; minutes) or production (the paper's settings)");
   showcase_cmd->add_option("--size", showcase.size, "Image size WxH instead of the quality's (preview 256x144, production the shots')");
   showcase_cmd->add_option("--rate", showcase.rate, "Preview only: frames per second of story (default 3; the video plays at this rate)");
   showcase_cmd->add_option("-o,--out", showcase.out, "Output directory (default out/showcase/<quality>)");

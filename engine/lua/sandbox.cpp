@@ -361,7 +361,8 @@ struct Sandbox::Impl {
           found.string()));
     }
     note_loaded(found);
-    const std::string chunkname = "@" + found.string();
+    std::string chunkname = "@";  // built in two steps: GCC 12 misreports "@" + s (-Wrestrict, PR 105329)
+    chunkname += found.string();
     int status = luaL_loadbufferx(L, source.data(), source.size(), chunkname.c_str(), "t");
     if (status == 0) {
       // stack: name, chunk
@@ -527,7 +528,8 @@ void Sandbox::run_file(const std::filesystem::path& file, int nresults) {
   const Impl::Evaluation evaluation(s);
   if (s.depth == 1) s.main_file = file.string();
   lua_rawgeti(L, LUA_REGISTRYINDEX, s.handler_ref);
-  const std::string chunkname = "@" + file.string();
+  std::string chunkname = "@";  // see above
+  chunkname += file.string();
   int status = luaL_loadbufferx(L, source.data(), source.size(), chunkname.c_str(), "t");
   if (status == 0) status = lua_pcall(L, 0, nresults, base + 1);
   if (status != 0) s.fail(status, base, file.string());

@@ -24,7 +24,9 @@ struct ResumePlan {
 ResumePlan plan_resume(const FrameStore& store, const ShotSurvey& survey, const FrameSettings& settings,
                        const std::vector<int>& frames, bool force, const std::string& shot_name);
 
-// "0-4, 7, 9-12": a sorted or unsorted list of frame numbers, compactly.
-std::string format_frame_list(std::vector<int> frames);
+// "0-4, 7, 9-12": a sorted or unsorted list of frame numbers, compactly; at
+// most `max_items` runs, then ", ... (N frames in all)" (a preview's frames
+// every 10th would otherwise fill the screen).
+std::string format_frame_list(std::vector<int> frames, int max_items = 12);
 
 }  // namespace lc::farm

@@ -111,6 +111,7 @@ TEST(FarmStore, TemporariesOfAKilledRenderAreRemoved) {
 TEST(FarmStore, FrameListsAreCompact) {
   EXPECT_EQ(format_frame_list({4, 0, 1, 2, 7, 9, 10}), "0-2, 4, 7, 9-10");
   EXPECT_EQ(format_frame_list({}), "");
+  EXPECT_EQ(format_frame_list({0, 10, 20, 30, 40}, 3), "0, 10, 20, ... (5 frames in all)");
 }
 
 }  // namespace
