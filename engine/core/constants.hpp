@@ -47,6 +47,13 @@ inline constexpr double conservation_ray_tolerance = 1e-10;
 // docs/performance.md, change 9, measures what it saves and costs.
 inline constexpr double adaptive_sample_threshold = 1.0 / 256.0;
 
+// A ray moving outwards beyond every object and photon orbit of its scene
+// (RayOptions::free_radius) can meet nothing more: the rest of its path only
+// aims the sky lookup, where an error of 1e-6 rad is a fiftieth of a pixel
+// of the paper's narrowest view.  Its tolerances are multiplied by this.
+// docs/performance.md, change 11.
+inline constexpr double free_flight_relaxation = 100.0;
+
 // Default safety bound on the number of accepted steps of one ray.
 inline constexpr long default_max_steps = 100000;
 

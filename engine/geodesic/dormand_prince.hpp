@@ -92,6 +92,9 @@ class DormandPrince5 {
     rejected_last_ = false;
   }
 
+  // New tolerances from the next step on (the state and step size are kept).
+  void set_control(const StepControl& control) { c_ = control; }
+
   double t() const { return t_; }
   const State& y() const { return y_; }
   const State& dydt() const { return k1_; }

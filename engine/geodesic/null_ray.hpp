@@ -26,6 +26,10 @@ struct RayOptions {
   StepControl control{default_ray_tolerance, default_ray_tolerance, 1e-12, 1e30};
   KerrChart kerr_chart = KerrChart::boyer_lindquist_mino;
   double escape_radius = default_escape_radius;
+  // Beyond this coordinate radius, moving outwards, a ray meets nothing more
+  // (the scene builder sets it from the objects and the holes; 0: never):
+  // its tolerances are relaxed by free_flight_relaxation.
+  double free_radius = 0.0;
   long max_steps = default_max_steps;
 };
 
@@ -67,6 +71,11 @@ RayResult trace_null_ray(const S& st, const Vec4& x0, const Vec4& p0, const RayO
   RayResult res;
   RayStep step;
   const double R2 = opt.escape_radius * opt.escape_radius;
+  const double free2 = opt.free_radius > 0.0 ? opt.free_radius * opt.free_radius : 1e300;
+  StepControl relaxed_control = opt.control;
+  relaxed_control.rtol *= free_flight_relaxation;
+  relaxed_control.atol *= free_flight_relaxation;
+  bool relaxed = false;
   while (true) {
     if (res.steps >= opt.max_steps) {
       res.reason = StopReason::step_limit;
@@ -85,6 +94,13 @@ RayResult trace_null_ray(const S& st, const Vec4& x0, const Vec4& p0, const RayO
       break;
     }
     const double rho2 = y[1] * y[1] + y[2] * y[2] + y[3] * y[3];
+    if (!relaxed && rho2 > free2) {
+      const auto& d = dp.dydt();
+      if (y[1] * d[1] + y[2] * d[2] + y[3] * d[3] > 0.0) {
+        dp.set_control(relaxed_control);
+        relaxed = true;
+      }
+    }
     if (rho2 > R2) {
       const auto& d = dp.dydt();
       if (y[1] * d[1] + y[2] * d[2] + y[3] * d[3] > 0.0) {

@@ -74,6 +74,23 @@ Tetrad rest_frame_for_object(const S& st, const Vec4& scene) {
     return static_cartesian_tetrad(st, st.trace_from_scene(scene));
 }
 
+// A coordinate radius beyond which a ray moving outwards meets nothing more:
+// twice the largest of the objects' reach and the holes' photon region
+// (Kerr: photon orbits lie within 4M; a dihole's within 4(m1 + m2) of its
+// holes at +-d).  The factor 2 keeps the relaxed integration well clear.
+template <class S>
+double free_radius(const SceneOf<S>& sc) {
+  double reach = 0.0;
+  if constexpr (std::is_same_v<S, Kerr>) reach = 4.0 * sc.spacetime.mass() + std::abs(sc.spacetime.spin());
+  if constexpr (std::is_same_v<S, Dihole>)
+    reach = 4.0 * sc.spacetime.asymptotic_mass() + sc.spacetime.separation();
+  if (sc.disk) reach = std::max(reach, sc.disk->spec.outer + std::abs(sc.spacetime.asymptotic_mass()));
+  for (const Sphere& sp : sc.spheres)
+    for (int k = 0; k < 3; ++k)
+      reach = std::max({reach, std::abs(sp.life_lo[k]) + 2.0 * sp.spec.radius, std::abs(sp.life_hi[k]) + 2.0 * sp.spec.radius});
+  return 2.0 * std::max(reach, 1.0);
+}
+
 template <class S>
 Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResources& res, const RayOptions& rays) {
   const std::string here = describe(fs.spacetime);
@@ -130,6 +147,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
     sp.bounds(-1e300, 1e300, sp.life_lo, sp.life_hi);
     sc.spheres.push_back(std::move(sp));
   }
+  sc.rays.free_radius = free_radius(sc);
   return sc;
 }
 
