@@ -58,6 +58,9 @@ class Worldline {
   double scene_time(const Vec4& x) const;
 
  private:
+  // The sample step [i, i + 1] holding trace coordinate time t.
+  std::size_t sample_index_at(double t) const;
+
   struct Sample {
     Vec4 x, u;
     Tetrad e;
