@@ -20,8 +20,10 @@ struct RaySample {
   int order = 0;  // equatorial-plane crossings before the end
   long steps = 0;
   StopReason reason = StopReason::gave_up;
-  std::array<double, 8> end{};  // trace-coordinate state (x^mu, p_mu) where the ray ended
-  double lambda_end = 0.0;      // its affine parameter
+  // Trace-coordinate state (x^mu, p_mu) where the ray ended, and its affine
+  // parameter; the Kerr fast path fills them only when a path is recorded.
+  std::array<double, 8> end{};
+  double lambda_end = 0.0;
 };
 
 }  // namespace lc

@@ -34,6 +34,7 @@ struct SceneOf {
   std::vector<Sphere> spheres;
   RayOptions rays;
   Vec4 observer_scene{};  // the observer's event in scene coordinates, exact where the shot gave it (on the axis)
+  Mat4 observer_jacobian{};  // Kerr: trace_jacobian(observer_scene), once per frame for the BL–Mino path
 };
 
 // For trace_sample: a path recorder that records nothing (rendering).
@@ -365,7 +366,9 @@ RaySample trace_sample_mino(const SceneOf<Kerr>& sc, const Vec3& n, OnStep&& on_
     return p;
   };
   Vec4 s0 = sc.observer_scene;
-  Vec4 p_bl = bl_momentum(s0);
+  Vec4 p_bl{};
+  for (int nu = 0; nu < 4; ++nu)
+    for (int mu = 0; mu < 4; ++mu) p_bl[nu] += p_ks[mu] * sc.observer_jacobian[mu][nu];
   if (std::sin(s0[2]) == 0.0) {
     // On the axis every phi names the observer's point, and the ray leaves it
     // along one meridian: p_theta at phi is A cos(phi) + B sin(phi) from the
@@ -445,14 +448,14 @@ RaySample trace_sample_mino(const SceneOf<Kerr>& sc, const Vec3& n, OnStep&& on_
   const MinoResult res = trace_kerr_mino(start, st.mass() > 0.0 ? st.capture_radius() : 0.0, sc.rays, visit);
   out.steps = res.steps;
   out.reason = res.reason;
-  if (res.reason == StopReason::hit) {
-    out.end = trace_state(res.y);
-    out.lambda_end = res.y[7];
-    return out;
+  const MinoState& last = res.reason == StopReason::hit ? res.y : res.reason == StopReason::escaped ? at_escape : res.y;
+  // The end in trace coordinates costs a Jacobian, its inverse and two
+  // logarithms: only `lightcone trace` (a path recorder) reads it.
+  if constexpr (!std::is_same_v<std::decay_t<OnStep>, NoPath>) {
+    out.end = trace_state(last);
+    out.lambda_end = last[7];
   }
-  const MinoState& last = res.reason == StopReason::escaped ? at_escape : res.y;
-  out.end = trace_state(last);
-  out.lambda_end = last[7];
+  if (res.reason == StopReason::hit) return out;
   fill_event(last);
   if (res.reason == StopReason::horizon) {
     out.kind = HitKind::horizon;

@@ -148,6 +148,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
     sc.spheres.push_back(std::move(sp));
   }
   sc.rays.free_radius = free_radius(sc);
+  if constexpr (std::is_same_v<S, Kerr>) sc.observer_jacobian = st.trace_jacobian(sc.observer_scene);
   return sc;
 }
 
