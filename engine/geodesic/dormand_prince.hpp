@@ -73,6 +73,126 @@ struct DenseStep {
   const State& start() const { return r1; }
 };
 
+// The Dormand–Prince 5(4) tableau (HNW II.5, Table 5.2), its error
+// weights, Shampine's dense-output weights (HNW II.6) and the PI controller
+// constants (HNW II.4, "beta = 0.04").
+namespace dp5 {
+inline constexpr double a21 = 1.0 / 5.0;
+inline constexpr double a31 = 3.0 / 40.0, a32 = 9.0 / 40.0;
+inline constexpr double a41 = 44.0 / 45.0, a42 = -56.0 / 15.0, a43 = 32.0 / 9.0;
+inline constexpr double a51 = 19372.0 / 6561.0, a52 = -25360.0 / 2187.0, a53 = 64448.0 / 6561.0, a54 = -212.0 / 729.0;
+inline constexpr double a61 = 9017.0 / 3168.0, a62 = -355.0 / 33.0, a63 = 46732.0 / 5247.0, a64 = 49.0 / 176.0,
+                        a65 = -5103.0 / 18656.0;
+inline constexpr double a71 = 35.0 / 384.0, a73 = 500.0 / 1113.0, a74 = 125.0 / 192.0, a75 = -2187.0 / 6784.0,
+                        a76 = 11.0 / 84.0;
+inline constexpr double c2 = 1.0 / 5.0, c3 = 3.0 / 10.0, c4 = 4.0 / 5.0, c5 = 8.0 / 9.0;
+inline constexpr double e1 = 71.0 / 57600.0, e3 = -71.0 / 16695.0, e4 = 71.0 / 1920.0, e5 = -17253.0 / 339200.0,
+                        e6 = 22.0 / 525.0, e7 = -1.0 / 40.0;
+inline constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700410799.0,
+                        d4 = -10690763975.0 / 1880347072.0, d5 = 701980252875.0 / 199316789632.0,
+                        d6 = -1453857185.0 / 822651844.0, d7 = 69997945.0 / 29380423.0;
+inline constexpr double beta = 0.04, expo1 = 0.2 - beta * 0.75, safe = 0.9, fac_min = 0.2, fac_max = 10.0;
+
+inline double abs_of(double x) { return std::abs(x); }
+inline double max_of(double x, double y) { return std::max(x, y); }
+
+// The stages of one attempt from (t, y) with slope k1 and step h: the
+// 5th-order solution y7 and the slopes k3..k7 that the error estimate and
+// dense output need.  T is double, or a vector of lanes (several
+// independent problems at once, each with its own t and h).
+template <class T, std::size_t N, class Rhs>
+void stages(Rhs& rhs, T t, const std::array<T, N>& y, const std::array<T, N>& k1, T h, std::array<T, N>& y7,
+            std::array<T, N>& k3, std::array<T, N>& k4, std::array<T, N>& k5, std::array<T, N>& k6,
+            std::array<T, N>& k7) {
+  std::array<T, N> ys, k2;
+  for (std::size_t i = 0; i < N; ++i) ys[i] = y[i] + h * a21 * k1[i];
+  rhs(t + c2 * h, ys, k2);
+  for (std::size_t i = 0; i < N; ++i) ys[i] = y[i] + h * (a31 * k1[i] + a32 * k2[i]);
+  rhs(t + c3 * h, ys, k3);
+  for (std::size_t i = 0; i < N; ++i) ys[i] = y[i] + h * (a41 * k1[i] + a42 * k2[i] + a43 * k3[i]);
+  rhs(t + c4 * h, ys, k4);
+  for (std::size_t i = 0; i < N; ++i) ys[i] = y[i] + h * (a51 * k1[i] + a52 * k2[i] + a53 * k3[i] + a54 * k4[i]);
+  rhs(t + c5 * h, ys, k5);
+  for (std::size_t i = 0; i < N; ++i)
+    ys[i] = y[i] + h * (a61 * k1[i] + a62 * k2[i] + a63 * k3[i] + a64 * k4[i] + a65 * k5[i]);
+  rhs(t + h, ys, k6);
+  for (std::size_t i = 0; i < N; ++i)
+    y7[i] = y[i] + h * (a71 * k1[i] + a73 * k3[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
+  rhs(t + h, y7, k7);
+}
+
+// Sum over components of (w e / sc)^2, the squared scaled error of the
+// attempt (the norm is the square root of this over N).
+template <class T, std::size_t N>
+T error_sum(const std::array<T, N>& y, const std::array<T, N>& y7, const std::array<T, N>& k1,
+            const std::array<T, N>& k3, const std::array<T, N>& k4, const std::array<T, N>& k5,
+            const std::array<T, N>& k6, const std::array<T, N>& k7, T h, const std::array<double, N>& w,
+            const StepControl& c) {
+  T err = h * 0.0;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (w[i] == 0.0) continue;
+    const T ei = h * (e1 * k1[i] + e3 * k3[i] + e4 * k4[i] + e5 * k5[i] + e6 * k6[i] + e7 * k7[i]);
+    const T sc = c.atol + c.rtol * max_of(abs_of(y[i]), abs_of(y7[i]));
+    const T q = w[i] * ei / sc;
+    err += q * q;
+  }
+  return err;
+}
+
+// Shampine's continuous extension of an accepted attempt, as the
+// coefficients r1..r5 of DenseStep (per component, T-wide).
+template <class T, std::size_t N>
+void dense_coefficients(const std::array<T, N>& y, const std::array<T, N>& y7, const std::array<T, N>& k1,
+                        const std::array<T, N>& k3, const std::array<T, N>& k4, const std::array<T, N>& k5,
+                        const std::array<T, N>& k6, const std::array<T, N>& k7, T h, std::array<T, N>& r1,
+                        std::array<T, N>& r2, std::array<T, N>& r3, std::array<T, N>& r4, std::array<T, N>& r5) {
+  for (std::size_t i = 0; i < N; ++i) {
+    const T dy = y7[i] - y[i];
+    const T bspl = h * k1[i] - dy;
+    r1[i] = y[i];
+    r2[i] = dy;
+    r3[i] = bspl;
+    r4[i] = dy - h * k7[i] - bspl;
+    r5[i] = h * (d1 * k1[i] + d3 * k3[i] + d4 * k4[i] + d5 * k5[i] + d6 * k6[i] + d7 * k7[i]);
+  }
+}
+
+// The PI step-size controller of one problem.
+struct Controller {
+  double log2_err_old = -13.287712379549449;  // log2(1e-4)
+  bool rejected_last = false;
+
+  void reset() {
+    log2_err_old = detail::controller_log2(1e-4);
+    rejected_last = false;
+  }
+  // Inputs: the attempt's error norm (err <= 1 accepts) and step h; output:
+  // whether it is accepted, and the next step to try.
+  bool decide(double err, double h, const StepControl& c, double& h_next) {
+    if (!std::isfinite(err)) err = 1e10;  // a stage left the domain: shrink hard
+    // err^expo1 and err_old^beta through one log2 each; err is at least
+    // 1e-10 here so the logarithms are finite.
+    const double log_err = detail::controller_log2(std::max(err, 1e-10));
+    const double fac11 = detail::controller_exp2(expo1 * log_err);
+    if (err <= 1.0) {
+      double fac = detail::controller_exp2(expo1 * log_err - beta * log2_err_old) / safe;
+      fac = std::clamp(fac, 1.0 / fac_max, 1.0 / fac_min);
+      double h_new = h / fac;
+      if (std::abs(h_new) > c.h_max) h_new = std::copysign(c.h_max, h);
+      if (rejected_last) h_new = std::copysign(std::min(std::abs(h_new), std::abs(h)), h);
+      log2_err_old = detail::controller_log2(std::max(err, 1e-4));
+      rejected_last = false;
+      h_next = h_new;
+      return true;
+    }
+    h_next = h / std::min(1.0 / fac_min, fac11 / safe);
+    rejected_last = true;
+    return false;
+  }
+};
+
+}  // namespace dp5
+
 // Rhs: void(double t, const State& y, State& dydt).  Weights: per-component
 // factor on the error estimate (0 excludes a component from step control).
 template <std::size_t N, class Rhs>
@@ -87,9 +207,8 @@ class DormandPrince5 {
     t_ = t;
     y_ = y;
     h_ = h;
-    log2_err_old_ = detail::controller_log2(1e-4);
+    control_.reset();
     rhs_(t_, y_, k1_);
-    rejected_last_ = false;
   }
 
   // New tolerances from the next step on (the state and step size are kept).
@@ -104,88 +223,21 @@ class DormandPrince5 {
   // Advances by one accepted step and fills `dense`.  Returns false when the
   // step size falls below h_min (the integrator gives up).
   bool step(DenseStep<N>& dense) {
-    constexpr double a21 = 1.0 / 5.0;
-    constexpr double a31 = 3.0 / 40.0, a32 = 9.0 / 40.0;
-    constexpr double a41 = 44.0 / 45.0, a42 = -56.0 / 15.0, a43 = 32.0 / 9.0;
-    constexpr double a51 = 19372.0 / 6561.0, a52 = -25360.0 / 2187.0, a53 = 64448.0 / 6561.0,
-                     a54 = -212.0 / 729.0;
-    constexpr double a61 = 9017.0 / 3168.0, a62 = -355.0 / 33.0, a63 = 46732.0 / 5247.0, a64 = 49.0 / 176.0,
-                     a65 = -5103.0 / 18656.0;
-    constexpr double a71 = 35.0 / 384.0, a73 = 500.0 / 1113.0, a74 = 125.0 / 192.0, a75 = -2187.0 / 6784.0,
-                     a76 = 11.0 / 84.0;
-    constexpr double c2 = 1.0 / 5.0, c3 = 3.0 / 10.0, c4 = 4.0 / 5.0, c5 = 8.0 / 9.0;
-    constexpr double e1 = 71.0 / 57600.0, e3 = -71.0 / 16695.0, e4 = 71.0 / 1920.0, e5 = -17253.0 / 339200.0,
-                     e6 = 22.0 / 525.0, e7 = -1.0 / 40.0;
-    constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700410799.0,
-                     d4 = -10690763975.0 / 1880347072.0, d5 = 701980252875.0 / 199316789632.0,
-                     d6 = -1453857185.0 / 822651844.0, d7 = 69997945.0 / 29380423.0;
-    // PI controller constants (HNW II.4, "beta = 0.04").
-    constexpr double beta = 0.04, expo1 = 0.2 - beta * 0.75, safe = 0.9, fac_min = 0.2, fac_max = 10.0;
-
-    State y2, y3, y4, y5, y6, y7, k2, k3, k4, k5, k6, k7;
+    State y7, k3, k4, k5, k6, k7;
     for (;;) {
       const double h = h_;
       if (std::abs(h) < c_.h_min) return false;
-      for (std::size_t i = 0; i < N; ++i) y2[i] = y_[i] + h * a21 * k1_[i];
-      rhs_(t_ + c2 * h, y2, k2);
-      for (std::size_t i = 0; i < N; ++i) y3[i] = y_[i] + h * (a31 * k1_[i] + a32 * k2[i]);
-      rhs_(t_ + c3 * h, y3, k3);
-      for (std::size_t i = 0; i < N; ++i) y4[i] = y_[i] + h * (a41 * k1_[i] + a42 * k2[i] + a43 * k3[i]);
-      rhs_(t_ + c4 * h, y4, k4);
-      for (std::size_t i = 0; i < N; ++i)
-        y5[i] = y_[i] + h * (a51 * k1_[i] + a52 * k2[i] + a53 * k3[i] + a54 * k4[i]);
-      rhs_(t_ + c5 * h, y5, k5);
-      for (std::size_t i = 0; i < N; ++i)
-        y6[i] = y_[i] + h * (a61 * k1_[i] + a62 * k2[i] + a63 * k3[i] + a64 * k4[i] + a65 * k5[i]);
-      rhs_(t_ + h, y6, k6);
-      for (std::size_t i = 0; i < N; ++i)
-        y7[i] = y_[i] + h * (a71 * k1_[i] + a73 * k3[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
-      rhs_(t_ + h, y7, k7);
-
-      double err = 0.0;
-      for (std::size_t i = 0; i < N; ++i) {
-        if (w_[i] == 0.0) continue;
-        const double ei =
-            h * (e1 * k1_[i] + e3 * k3[i] + e4 * k4[i] + e5 * k5[i] + e6 * k6[i] + e7 * k7[i]);
-        const double sc = c_.atol + c_.rtol * std::max(std::abs(y_[i]), std::abs(y7[i]));
-        const double q = w_[i] * ei / sc;
-        err += q * q;
-      }
-      err = std::sqrt(err / static_cast<double>(N));
-      if (!std::isfinite(err)) err = 1e10;  // a stage left the domain: shrink hard
-
-      // err^expo1 and err_old^beta (HNW's PI controller) through one log2
-      // each; err is at least 1e-10 here so the logarithms are finite.
-      const double log_err = detail::controller_log2(std::max(err, 1e-10));
-      const double fac11 = detail::controller_exp2(expo1 * log_err);
-      if (err <= 1.0) {
-        double fac = detail::controller_exp2(expo1 * log_err - beta * log2_err_old_) / safe;
-        fac = std::clamp(fac, 1.0 / fac_max, 1.0 / fac_min);
-        double h_new = h / fac;
-        if (std::abs(h_new) > c_.h_max) h_new = std::copysign(c_.h_max, h);
-        if (rejected_last_) h_new = std::copysign(std::min(std::abs(h_new), std::abs(h)), h);
-        log2_err_old_ = detail::controller_log2(std::max(err, 1e-4));
-        rejected_last_ = false;
-
+      dp5::stages(rhs_, t_, y_, k1_, h, y7, k3, k4, k5, k6, k7);
+      const double err = std::sqrt(dp5::error_sum(y_, y7, k1_, k3, k4, k5, k6, k7, h, w_, c_) / static_cast<double>(N));
+      if (control_.decide(err, h, c_, h_)) {
         dense.t0 = t_;
         dense.h = h;
-        for (std::size_t i = 0; i < N; ++i) {
-          const double dy = y7[i] - y_[i];
-          const double bspl = h * k1_[i] - dy;
-          dense.r1[i] = y_[i];
-          dense.r2[i] = dy;
-          dense.r3[i] = bspl;
-          dense.r4[i] = dy - h * k7[i] - bspl;
-          dense.r5[i] = h * (d1 * k1_[i] + d3 * k3[i] + d4 * k4[i] + d5 * k5[i] + d6 * k6[i] + d7 * k7[i]);
-        }
+        dp5::dense_coefficients(y_, y7, k1_, k3, k4, k5, k6, k7, h, dense.r1, dense.r2, dense.r3, dense.r4, dense.r5);
         t_ += h;
         y_ = y7;
         k1_ = k7;
-        h_ = h_new;
         return true;
       }
-      h_ = h / std::min(1.0 / fac_min, fac11 / safe);
-      rejected_last_ = true;
       ++rejected_;
     }
   }
@@ -194,9 +246,9 @@ class DormandPrince5 {
   Rhs rhs_;
   StepControl c_;
   State w_;
-  double t_ = 0.0, h_ = 0.0, log2_err_old_ = -13.287712379549449;  // log2(1e-4)
+  double t_ = 0.0, h_ = 0.0;
+  dp5::Controller control_;
   State y_{}, k1_{};
-  bool rejected_last_ = false;
   long rejected_ = 0;
 };
 
