@@ -1,5 +1,7 @@
 #include "shot_bench.hpp"
 
+#include <span>
+
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -7,6 +9,7 @@
 #include <vector>
 
 #include "render/scene_builder.hpp"
+#include "render/trace_batch.hpp"
 #include "scene/shot.hpp"
 
 namespace lc {
@@ -20,14 +23,16 @@ std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int 
   std::atomic<long> total{0};
   auto worker = [&] {
     long local = 0;
+    std::vector<Vec3> dirs(static_cast<std::size_t>(width));
     for (int j; (j = next.fetch_add(1)) < height;)
       std::visit(
           [&](const auto& sc) {
-            for (int i = 0; i < width; ++i) {
-              RaySample s = trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{});
-              local += s.steps;
-              out[static_cast<std::size_t>(j) * width + i] = s;
-            }
+            // A row at a time, as the renderer traces (several rays at once
+            // where the spacetime allows).
+            for (int i = 0; i < width; ++i) dirs[i] = sc.camera.direction(i + 0.5, j + 0.5);
+            const std::span<RaySample> row(out.data() + static_cast<std::size_t>(j) * width, static_cast<std::size_t>(width));
+            trace_batch(sc, std::span<const Vec3>(dirs), row);
+            for (const RaySample& s : row) local += s.steps;
           },
           scene);
     total += local;

@@ -93,8 +93,18 @@ inline constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 
                         d6 = -1453857185.0 / 822651844.0, d7 = 69997945.0 / 29380423.0;
 inline constexpr double beta = 0.04, expo1 = 0.2 - beta * 0.75, safe = 0.9, fac_min = 0.2, fac_max = 10.0;
 
+// |x| and max for double and for vectors of lanes (GCC vector extensions,
+// whose comparisons select lane by lane).
 inline double abs_of(double x) { return std::abs(x); }
 inline double max_of(double x, double y) { return std::max(x, y); }
+template <class T>
+T abs_of(T x) {
+  return x < T{} ? -x : x;
+}
+template <class T>
+T max_of(T x, T y) {
+  return x > y ? x : y;
+}
 
 // The stages of one attempt from (t, y) with slope k1 and step h: the
 // 5th-order solution y7 and the slopes k3..k7 that the error estimate and

@@ -1,6 +1,7 @@
 #include "render/renderer.hpp"
 
 #include "core/constants.hpp"
+#include "render/trace_batch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -23,11 +24,16 @@ FrameImage make_frame(const RenderSettings& rs) {
 
 namespace {
 
-// The sample offsets of an N x N grid traced first when sampling
-// adaptively: the corners (for N = 2 one diagonal), as (a, b) pairs.
-std::vector<std::pair<int, int>> first_samples(int N) {
-  if (N == 2) return {{0, 0}, {1, 1}};
-  return {{0, 0}, {N - 1, 0}, {0, N - 1}, {N - 1, N - 1}};
+// The sample offsets (a, b) of an N x N grid traced first: with adaptive
+// sampling the corners (for N = 2 one diagonal), else the whole grid in
+// row order.
+std::vector<std::pair<int, int>> first_samples(int N, bool adaptive) {
+  if (adaptive && N == 2) return {{0, 0}, {1, 1}};
+  if (adaptive) return {{0, 0}, {N - 1, 0}, {0, N - 1}, {N - 1, N - 1}};
+  std::vector<std::pair<int, int>> all;
+  for (int b = 0; b < N; ++b)
+    for (int a = 0; a < N; ++a) all.push_back({a, b});
+  return all;
 }
 
 // Whether two samples agree closely enough to stand for the pixels and
@@ -43,75 +49,99 @@ template <class S>
 RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::span<const int> rows,
                            FrameImage& img) {
   // Inputs: a scene, the settings and the rows to render; output: those
-  // rows of img (and layers), and the rays and steps spent.  Adaptive
-  // sampling works along a row (the rows above and below belong to other
-  // stripes): first the corner samples of every pixel, then the whole grid
-  // of each pixel whose corners disagree with each other or with a
-  // neighbour's in the row.
+  // rows of img (and layers), and the rays and steps spent.  A row's
+  // samples are traced in batches (trace_batch: several rays at once where
+  // the spacetime allows).  Adaptive sampling works along a row (the rows
+  // above and below belong to other stripes): first the corner samples of
+  // every pixel, then the whole grid of each pixel whose corners disagree
+  // with each other or with a neighbour's in the row.
   RenderStats stats;
   const int N = rs.supersample;
-  const bool centre_is_sample = N % 2 == 1;
   const bool adaptive = rs.adaptive && N >= 2;
-  const std::vector<std::pair<int, int>> first = adaptive ? first_samples(N) : std::vector<std::pair<int, int>>{};
+  const std::vector<std::pair<int, int>> first = first_samples(N, adaptive);
   const std::size_t F = first.size();
-  auto trace = [&](int i, int j, int a, int b) {
-    const double px = i + (a + 0.5) / N, py = j + (b + 0.5) / N;
-    const RaySample s = trace_sample(sc, sc.camera.direction(px, py), NoPath{});
-    ++stats.rays;
-    stats.steps += s.steps;
-    if (s.kind == HitKind::gave_up) ++stats.gave_up;
-    return s;
+  std::vector<char> is_first(static_cast<std::size_t>(N) * N, 0);
+  for (const auto& [a, b] : first) is_first[static_cast<std::size_t>(b) * N + a] = 1;
+  const int centre = N % 2 == 1 ? (N / 2) * N + N / 2 : -1;  // index of the centre sample, if there is one
+  const std::size_t W = static_cast<std::size_t>(rs.width);
+  auto count = [&](std::span<const RaySample> samples) {
+    for (const RaySample& s : samples) {
+      ++stats.rays;
+      stats.steps += s.steps;
+      if (s.kind == HitKind::gave_up) ++stats.gave_up;
+    }
   };
-  std::vector<RaySample> firsts(F * static_cast<std::size_t>(rs.width));
-  std::vector<char> refine(static_cast<std::size_t>(rs.width));
+  auto dir = [&](int i, int j, int a, int b) { return sc.camera.direction(i + (a + 0.5) / N, j + (b + 0.5) / N); };
+  std::vector<Vec3> dirs;
+  std::vector<RaySample> firsts, rest, centres;
+  std::vector<char> refine(W);
   for (int j : rows) {
-    if (adaptive) {
-      for (int i = 0; i < rs.width; ++i)
-        for (std::size_t k = 0; k < F; ++k) firsts[i * F + k] = trace(i, j, first[k].first, first[k].second);
-      for (int i = 0; i < rs.width; ++i) {
-        bool r = false;
+    dirs.clear();
+    for (std::size_t i = 0; i < W; ++i)
+      for (const auto& [a, b] : first) dirs.push_back(dir(static_cast<int>(i), j, a, b));
+    firsts.resize(dirs.size());
+    trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(firsts));
+    count(firsts);
+
+    dirs.clear();
+    for (std::size_t i = 0; i < W; ++i) {
+      bool r = false;
+      if (adaptive) {
         for (std::size_t k = 1; k < F && !r; ++k) r = !samples_agree(firsts[i * F], firsts[i * F + k]);
         if (i > 0 && !r) r = !samples_agree(firsts[i * F], firsts[(i - 1) * F]);
-        if (i + 1 < rs.width && !r) r = !samples_agree(firsts[i * F], firsts[(i + 1) * F]);
-        refine[i] = r;
+        if (i + 1 < W && !r) r = !samples_agree(firsts[i * F], firsts[(i + 1) * F]);
       }
-    }
-    for (int i = 0; i < rs.width; ++i) {
-      double acc[3] = {0, 0, 0};
-      int count = 0;
-      RaySample centre;
-      bool have_centre = false;
-      auto add = [&](const RaySample& s, int a, int b) {
-        for (int c = 0; c < 3; ++c) acc[c] += s.color[c];
-        ++count;
-        if (centre_is_sample && a == N / 2 && b == N / 2) {
-          centre = s;
-          have_centre = true;
-        }
-      };
-      auto is_first = [&](int a, int b) {
-        for (const auto& q : first)
-          if (q.first == a && q.second == b) return true;
-        return false;
-      };
-      for (std::size_t k = 0; k < F; ++k) add(firsts[i * F + k], first[k].first, first[k].second);
-      if (!adaptive || refine[i])
+      refine[i] = r;
+      if (r)
         for (int b = 0; b < N; ++b)
           for (int a = 0; a < N; ++a)
-            if (!is_first(a, b)) add(trace(i, j, a, b), a, b);
-      const std::size_t p = static_cast<std::size_t>(j) * rs.width + i;
-      for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = static_cast<float>(acc[c] / count);
+            if (!is_first[static_cast<std::size_t>(b) * N + a]) dirs.push_back(dir(static_cast<int>(i), j, a, b));
+    }
+    rest.resize(dirs.size());
+    trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(rest));
+    count(rest);
+
+    // The layers take the pixel-centre sample; trace it where no sample sits
+    // there (even N) or the centre was not traced (an unrefined odd grid).
+    const bool centre_traced_always = centre >= 0 && is_first[static_cast<std::size_t>(centre)];
+    dirs.clear();
+    if (rs.layers)
+      for (std::size_t i = 0; i < W; ++i)
+        if (!centre_traced_always && !(centre >= 0 && refine[i]))
+          dirs.push_back(sc.camera.direction(static_cast<double>(i) + 0.5, j + 0.5));
+    centres.resize(dirs.size());
+    trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(centres));
+    count(centres);
+
+    std::size_t next_rest = 0, next_centre = 0;
+    for (std::size_t i = 0; i < W; ++i) {
+      double acc[3] = {0, 0, 0};
+      int n = 0;
+      const RaySample* centre_sample = nullptr;
+      for (std::size_t k = 0; k < F; ++k) {
+        const RaySample& s = firsts[i * F + k];
+        for (int c = 0; c < 3; ++c) acc[c] += s.color[c];
+        ++n;
+        if (first[k].second * N + first[k].first == centre) centre_sample = &s;
+      }
+      if (refine[i])
+        for (int b = 0; b < N; ++b)
+          for (int a = 0; a < N; ++a) {
+            if (is_first[static_cast<std::size_t>(b) * N + a]) continue;
+            const RaySample& s = rest[next_rest++];
+            for (int c = 0; c < 3; ++c) acc[c] += s.color[c];
+            ++n;
+            if (b * N + a == centre) centre_sample = &s;
+          }
+      const std::size_t p = static_cast<std::size_t>(j) * W + i;
+      for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = static_cast<float>(acc[c] / n);
       if (rs.layers) {
-        if (!have_centre) {
-          centre = trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{});
-          ++stats.rays;
-          stats.steps += centre.steps;
-        }
-        img.layers[0].values[p] = static_cast<float>(static_cast<int>(centre.kind));
-        img.layers[1].values[p] = static_cast<float>(centre.r);
-        img.layers[2].values[p] = static_cast<float>(centre.phi);
-        img.layers[3].values[p] = static_cast<float>(centre.t);
-        img.layers[4].values[p] = static_cast<float>(centre.order);
+        if (!centre_sample) centre_sample = &centres[next_centre++];
+        img.layers[0].values[p] = static_cast<float>(static_cast<int>(centre_sample->kind));
+        img.layers[1].values[p] = static_cast<float>(centre_sample->r);
+        img.layers[2].values[p] = static_cast<float>(centre_sample->phi);
+        img.layers[3].values[p] = static_cast<float>(centre_sample->t);
+        img.layers[4].values[p] = static_cast<float>(centre_sample->order);
       }
     }
   }

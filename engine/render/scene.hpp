@@ -353,63 +353,24 @@ RaySample trace_sample_hamiltonian(const SceneOf<S>& sc, const Vec3& n, OnStep&&
 // The Kerr fast path (geodesic/kerr_mino.hpp): Boyer–Lindquist and Mino
 // time, for Kerr scenes without spheres.  The same results as the general
 // path to the integration tolerance; the start, the end and what `lightcone
-// trace` records are converted to Kerr–Schild.
+// trace` records are converted to Kerr–Schild.  One ray's start, its
+// visitor (disk, escape, the layers' events) and its result, apart from
+// the integration itself, so that rays can also be integrated several at
+// once (render/trace_batch.hpp).
 template <class OnStep>
-RaySample trace_sample_mino(const SceneOf<Kerr>& sc, const Vec3& n, OnStep&& on_step) {
-  const Kerr& st = sc.spacetime;
-  const Vec4 p_ks = backward_ray_momentum(sc.metric, sc.frame, n);
-  auto bl_momentum = [&](const Vec4& s) {
-    const Mat4 J = st.trace_jacobian(s);
-    Vec4 p{};
-    for (int nu = 0; nu < 4; ++nu)
-      for (int mu = 0; mu < 4; ++mu) p[nu] += p_ks[mu] * J[mu][nu];
-    return p;
-  };
-  Vec4 s0 = sc.observer_scene;
-  Vec4 p_bl{};
-  for (int nu = 0; nu < 4; ++nu)
-    for (int mu = 0; mu < 4; ++mu) p_bl[nu] += p_ks[mu] * sc.observer_jacobian[mu][nu];
-  if (std::sin(s0[2]) == 0.0) {
-    // On the axis every phi names the observer's point, and the ray leaves it
-    // along one meridian: p_theta at phi is A cos(phi) + B sin(phi) from the
-    // meridians phi = 0 and pi/2, largest (the ray's own) at atan2(B, A).
-    // (At theta = pi that sends theta beyond pi: sin theta < 0 stands for
-    // the same point, see kerr_mino.hpp.)
-    const Vec4 pa = bl_momentum({s0[0], s0[1], s0[2], 0.0});
-    const Vec4 pb = bl_momentum({s0[0], s0[1], s0[2], 0.5 * pi});
-    s0[3] = std::atan2(pb[2], pa[2]);
-    p_bl[2] = std::hypot(pa[2], pb[2]);
-    p_bl[3] = 0.0;
-  }
-  const KerrMinoStart start = kerr_mino_start(st.mass(), st.spin(), s0, p_bl, sc.rays.escape_radius);
-  // A Mino state as a trace-coordinate state (x^mu, p_mu), for the path
-  // recorder and the layers' end event.
-  auto trace_state = [&](const MinoState& y) {
-    Vec4 s, p;
-    kerr_mino_event(start.rhs, y, s, p);
-    const Mat4 Ji = inverse(st.trace_jacobian(s));
-    const Vec4 x = st.trace_from_scene(s);
-    Vec4 pk{};
-    for (int mu = 0; mu < 4; ++mu)
-      for (int nu = 0; nu < 4; ++nu) pk[mu] += p[nu] * Ji[nu][mu];
-    return RayState{x[0], x[1], x[2], x[3], pk[0], pk[1], pk[2], pk[3]};
-  };
-  RaySample out;
-  int crossings = 0;
-  auto fill_event = [&](const MinoState& y) {
-    Vec4 s, p;
-    kerr_mino_event(start.rhs, y, s, p);
-    out.r = s[1];
-    out.phi = s[3];
-    out.t = s[0] - sc.observer_time;
-    out.order = crossings;
-  };
-  const double u_escape = 1.0 / sc.rays.escape_radius;
-  MinoState at_escape = start.y0;  // where r passed the escape radius (the layers' end event)
-  double at_escape_lambda = 0.0;
-  Vec3 direction{};                // at infinity, in the Kerr–Schild Cartesian frame
-  auto visit = [&](const MinoStep& step, MinoResult& res) {
-    if constexpr (!std::is_same_v<std::decay_t<OnStep>, NoPath>) on_step(trace_state(step.start()), step.start()[7]);
+class MinoRay {
+ public:
+  MinoRay(const SceneOf<Kerr>& sc, const Vec3& n, OnStep& on_step)
+      : sc_(sc), on_step_(on_step), start_(make_start(sc, n)), u_escape_(1.0 / sc.rays.escape_radius),
+        at_escape_(start_.y0) {}
+
+  const KerrMinoStart& start() const { return start_; }
+  double capture_radius() const { return sc_.spacetime.mass() > 0.0 ? sc_.spacetime.capture_radius() : 0.0; }
+
+  // The visitor of trace_kerr_mino: sees each accepted step; true when the
+  // ray hit the disk (res filled).
+  bool visit(const MinoStep& step, MinoResult& res) {
+    if constexpr (!std::is_same_v<std::decay_t<OnStep>, NoPath>) on_step_(trace_state(step.start()), step.start()[7]);
     const double u0 = step.start()[1];
     // The step ends at infinity if u reaches 0 in it; nothing beyond counts.
     double l1 = step.t0 + step.h, u1 = step.component(1, l1);
@@ -422,53 +383,124 @@ RaySample trace_sample_mino(const SceneOf<Kerr>& sc, const Vec3& n, OnStep&& on_
       const double lz = locate_crossing(step, [](const MinoState& y) { return y[2]; }, step.t0, l1, c0, c1);
       const MinoState y = step.at(lz);
       fill_event(y);
-      if (sc.disk && out.r >= sc.disk->spec.inner && out.r <= sc.disk->spec.outer) {
-        out.kind = HitKind::disk;
-        out.color = sc.disk->color(out.r, out.phi);
+      if (sc_.disk && out_.r >= sc_.disk->spec.inner && out_.r <= sc_.disk->spec.outer) {
+        out_.kind = HitKind::disk;
+        out_.color = sc_.disk->color(out_.r, out_.phi);
         res.reason = StopReason::hit;
         res.y = y;
         res.lambda = lz;
         return true;
       }
-      if (y[1] > u_escape) ++crossings;  // as the Kerr–Schild path counts: up to the escape radius
+      if (y[1] > u_escape_) ++crossings_;  // as the Kerr–Schild path counts: up to the escape radius
     }
-    if (u0 > u_escape && u1 <= u_escape) {
-      at_escape_lambda = locate_crossing(
-          step, [u_escape](const MinoState& y) { return y[1] - u_escape; }, step.t0, l1, u0 - u_escape, u1 - u_escape);
-      at_escape = step.at(at_escape_lambda);
+    if (u0 > u_escape_ && u1 <= u_escape_) {
+      const double le = locate_crossing(
+          step, [u = u_escape_](const MinoState& y) { return y[1] - u; }, step.t0, l1, u0 - u_escape_, u1 - u_escape_);
+      at_escape_ = step.at(le);
     }
     if (res.reason == StopReason::escaped) {
       // At infinity phi_shift vanishes: the Kerr–Schild direction is the BL
       // angular position (sin th < 0 included: the same point).
       const MinoState y = step.at(l1);
-      direction = {y[3] * std::cos(y[4]), y[3] * std::sin(y[4]), y[2]};
+      direction_ = {y[3] * std::cos(y[4]), y[3] * std::sin(y[4]), y[2]};
     }
     return false;
-  };
-  const MinoResult res = trace_kerr_mino(start, st.mass() > 0.0 ? st.capture_radius() : 0.0, sc.rays, visit);
-  out.steps = res.steps;
-  out.reason = res.reason;
-  const MinoState& last = res.reason == StopReason::hit ? res.y : res.reason == StopReason::escaped ? at_escape : res.y;
-  // The end in trace coordinates costs a Jacobian, its inverse and two
-  // logarithms: only `lightcone trace` (a path recorder) reads it.
-  if constexpr (!std::is_same_v<std::decay_t<OnStep>, NoPath>) {
-    out.end = trace_state(last);
-    out.lambda_end = last[7];
   }
-  if (res.reason == StopReason::hit) return out;
-  fill_event(last);
-  if (res.reason == StopReason::horizon) {
-    out.kind = HitKind::horizon;
-    return out;
+
+  // The sample, once the integration has ended with `res`.
+  RaySample finish(const MinoResult& res) {
+    out_.steps = res.steps;
+    out_.reason = res.reason;
+    const MinoState& last = res.reason == StopReason::escaped ? at_escape_ : res.y;
+    // The end in trace coordinates costs a Jacobian, its inverse and two
+    // logarithms: only `lightcone trace` (a path recorder) reads it.
+    if constexpr (!std::is_same_v<std::decay_t<OnStep>, NoPath>) {
+      out_.end = trace_state(last);
+      out_.lambda_end = last[7];
+    }
+    if (res.reason == StopReason::hit) return out_;
+    fill_event(last);
+    if (res.reason == StopReason::horizon) {
+      out_.kind = HitKind::horizon;
+      return out_;
+    }
+    if (res.reason != StopReason::escaped) return out_;  // gave up: black, kind 4
+    out_.kind = HitKind::sky;
+    const double n2 = norm3(direction_);
+    const double theta = std::acos(std::clamp(direction_[2] / n2, -1.0, 1.0));
+    double sphi = std::atan2(direction_[1], direction_[0]);
+    if (sphi < 0) sphi += two_pi;
+    out_.color = sc_.sky.color(theta, sphi);
+    return out_;
   }
-  if (res.reason != StopReason::escaped) return out;  // gave up: black, kind 4
-  out.kind = HitKind::sky;
-  const double n2 = norm3(direction);
-  const double theta = std::acos(std::clamp(direction[2] / n2, -1.0, 1.0));
-  double sphi = std::atan2(direction[1], direction[0]);
-  if (sphi < 0) sphi += two_pi;
-  out.color = sc.sky.color(theta, sphi);
-  return out;
+
+ private:
+  static KerrMinoStart make_start(const SceneOf<Kerr>& sc, const Vec3& n) {
+    const Kerr& st = sc.spacetime;
+    const Vec4 p_ks = backward_ray_momentum(sc.metric, sc.frame, n);
+    auto bl_momentum = [&](const Vec4& s) {
+      const Mat4 J = st.trace_jacobian(s);
+      Vec4 p{};
+      for (int nu = 0; nu < 4; ++nu)
+        for (int mu = 0; mu < 4; ++mu) p[nu] += p_ks[mu] * J[mu][nu];
+      return p;
+    };
+    Vec4 s0 = sc.observer_scene;
+    Vec4 p_bl{};
+    for (int nu = 0; nu < 4; ++nu)
+      for (int mu = 0; mu < 4; ++mu) p_bl[nu] += p_ks[mu] * sc.observer_jacobian[mu][nu];
+    if (std::sin(s0[2]) == 0.0) {
+      // On the axis every phi names the observer's point, and the ray leaves it
+      // along one meridian: p_theta at phi is A cos(phi) + B sin(phi) from the
+      // meridians phi = 0 and pi/2, largest (the ray's own) at atan2(B, A).
+      // (At theta = pi that sends theta beyond pi: sin theta < 0 stands for
+      // the same point, see kerr_mino.hpp.)
+      const Vec4 pa = bl_momentum({s0[0], s0[1], s0[2], 0.0});
+      const Vec4 pb = bl_momentum({s0[0], s0[1], s0[2], 0.5 * pi});
+      s0[3] = std::atan2(pb[2], pa[2]);
+      p_bl[2] = std::hypot(pa[2], pb[2]);
+      p_bl[3] = 0.0;
+    }
+    return kerr_mino_start(st.mass(), st.spin(), s0, p_bl, sc.rays.escape_radius);
+  }
+  // A Mino state as a trace-coordinate state (x^mu, p_mu), for the path
+  // recorder and the layers' end event.
+  RayState trace_state(const MinoState& y) const {
+    const Kerr& st = sc_.spacetime;
+    Vec4 s, p;
+    kerr_mino_event(start_.rhs, y, s, p);
+    const Mat4 Ji = inverse(st.trace_jacobian(s));
+    const Vec4 x = st.trace_from_scene(s);
+    Vec4 pk{};
+    for (int mu = 0; mu < 4; ++mu)
+      for (int nu = 0; nu < 4; ++nu) pk[mu] += p[nu] * Ji[nu][mu];
+    return RayState{x[0], x[1], x[2], x[3], pk[0], pk[1], pk[2], pk[3]};
+  }
+  void fill_event(const MinoState& y) {
+    Vec4 s, p;
+    kerr_mino_event(start_.rhs, y, s, p);
+    out_.r = s[1];
+    out_.phi = s[3];
+    out_.t = s[0] - sc_.observer_time;
+    out_.order = crossings_;
+  }
+
+  const SceneOf<Kerr>& sc_;
+  OnStep& on_step_;
+  KerrMinoStart start_;
+  double u_escape_;
+  MinoState at_escape_;  // where r passed the escape radius (the layers' end event)
+  Vec3 direction_{};     // at infinity, in the Kerr–Schild Cartesian frame
+  RaySample out_;
+  int crossings_ = 0;
+};
+
+template <class OnStep>
+RaySample trace_sample_mino(const SceneOf<Kerr>& sc, const Vec3& n, OnStep& on_step) {
+  MinoRay<OnStep> ray(sc, n, on_step);
+  const MinoResult res = trace_kerr_mino(ray.start(), ray.capture_radius(), sc.rays,
+                                         [&](const MinoStep& step, MinoResult& r) { return ray.visit(step, r); });
+  return ray.finish(res);
 }
 
 }  // namespace detail
