@@ -133,16 +133,17 @@ void stages(Rhs& rhs, T t, const std::array<T, N>& y, const std::array<T, N>& k1
 
 // Sum over components of (w e / sc)^2, the squared scaled error of the
 // attempt (the norm is the square root of this over N).
+// atol and rtol are T-wide: each lane may have its own tolerances.
 template <class T, std::size_t N>
 T error_sum(const std::array<T, N>& y, const std::array<T, N>& y7, const std::array<T, N>& k1,
             const std::array<T, N>& k3, const std::array<T, N>& k4, const std::array<T, N>& k5,
-            const std::array<T, N>& k6, const std::array<T, N>& k7, T h, const std::array<double, N>& w,
-            const StepControl& c) {
+            const std::array<T, N>& k6, const std::array<T, N>& k7, T h, const std::array<double, N>& w, T atol,
+            T rtol) {
   T err = h * 0.0;
   for (std::size_t i = 0; i < N; ++i) {
     if (w[i] == 0.0) continue;
     const T ei = h * (e1 * k1[i] + e3 * k3[i] + e4 * k4[i] + e5 * k5[i] + e6 * k6[i] + e7 * k7[i]);
-    const T sc = c.atol + c.rtol * max_of(abs_of(y[i]), abs_of(y7[i]));
+    const T sc = atol + rtol * max_of(abs_of(y[i]), abs_of(y7[i]));
     const T q = w[i] * ei / sc;
     err += q * q;
   }
@@ -238,7 +239,7 @@ class DormandPrince5 {
       const double h = h_;
       if (std::abs(h) < c_.h_min) return false;
       dp5::stages(rhs_, t_, y_, k1_, h, y7, k3, k4, k5, k6, k7);
-      const double err = std::sqrt(dp5::error_sum(y_, y7, k1_, k3, k4, k5, k6, k7, h, w_, c_) / static_cast<double>(N));
+      const double err = std::sqrt(dp5::error_sum(y_, y7, k1_, k3, k4, k5, k6, k7, h, w_, c_.atol, c_.rtol) / static_cast<double>(N));
       if (control_.decide(err, h, c_, h_)) {
         dense.t0 = t_;
         dense.h = h;

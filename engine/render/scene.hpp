@@ -272,35 +272,27 @@ void sky_sample(const SceneOf<S>& sc, const Vec4& x, const Vec4& p, RaySample& o
 }
 
 
-// The general path: the Hamiltonian in the trace chart (Kerr–Schild for Kerr).
+// The general path: the Hamiltonian in the trace chart (Kerr–Schild for
+// Kerr).  One ray's start, its visitor (spheres, the disk, plane crossings)
+// and its result, apart from the integration itself, so that rays can also
+// be integrated several at once (render/trace_batch.hpp).
 template <class S, class OnStep>
-RaySample trace_sample_hamiltonian(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
-  const S& st = sc.spacetime;
-  const Vec4 p = backward_ray_momentum(sc.metric, sc.frame, n);
-  RaySample out;
-  int crossings = 0;
-  // Ends the ray at the event y (affine parameter lambda) on an object.
-  auto hit = [&](HitKind kind, const Color& color, const RayState& y, double lambda, RayResult& res) {
-    double t, r, phi;
-    scene_polar(st, {y[0], y[1], y[2], y[3]}, t, r, phi);
-    out.kind = kind;
-    out.color = color;
-    out.r = r;
-    out.phi = phi;
-    out.t = t - sc.observer_time;
-    out.order = crossings;
-    res.reason = StopReason::hit;
-    res.y = y;
-    res.lambda = lambda;
-    return true;
-  };
-  auto visit = [&](const RayStep& step, RayResult& res) {
-    on_step(step.start(), step.t0);
+class HamiltonianRay {
+ public:
+  HamiltonianRay(const SceneOf<S>& sc, const Vec3& n, OnStep& on_step)
+      : sc_(sc), on_step_(on_step), p0_(backward_ray_momentum(sc.metric, sc.frame, n)) {}
+
+  const Vec4& momentum() const { return p0_; }
+
+  // The visitor of trace_null_ray: true when the ray hit an object (res filled).
+  bool visit(const RayStep& step, RayResult& res) {
+    const S& st = sc_.spacetime;
+    on_step_(step.start(), step.t0);
     const double l1 = step.t0 + step.h;
     double best = l1 + 1.0;
     int hit_sphere = -1;
-    for (std::size_t k = 0; k < sc.spheres.size(); ++k)
-      if (auto l = detail::sphere_entry(st, sc.spheres[k], step); l && *l < best) {
+    for (std::size_t k = 0; k < sc_.spheres.size(); ++k)
+      if (auto l = detail::sphere_entry(st, sc_.spheres[k], step); l && *l < best) {
         best = *l;
         hit_sphere = static_cast<int>(k);
       }
@@ -308,46 +300,81 @@ RaySample trace_sample_hamiltonian(const SceneOf<S>& sc, const Vec3& n, OnStep&&
     if ((z0 > 0.0) != (z1 > 0.0) && z0 != 0.0) {
       // Without a disk a crossing only counts (hit.order); it is located only
       // when a sphere hit in the same step makes its order matter.
-      const double lz = sc.disk || hit_sphere >= 0 ? locate_crossing(step, [](const RayState& y) { return y[3]; }, z0, z1)
-                                                   : step.t0;
-      if (!sc.disk) {
-        if (lz < best) ++crossings;
+      const double lz = sc_.disk || hit_sphere >= 0
+                            ? locate_crossing(step, [](const RayState& y) { return y[3]; }, z0, z1)
+                            : step.t0;
+      if (!sc_.disk) {
+        if (lz < best) ++crossings_;
       } else if (lz < best) {
         const RayState y = step.at(lz);
         double t, r, phi;
         scene_polar(st, {y[0], y[1], y[2], y[3]}, t, r, phi);
-        if (sc.disk && r >= sc.disk->spec.inner && r <= sc.disk->spec.outer)
-          return hit(HitKind::disk, sc.disk->color(r, phi), y, lz, res);
-        ++crossings;
+        if (r >= sc_.disk->spec.inner && r <= sc_.disk->spec.outer)
+          return hit(HitKind::disk, sc_.disk->color(r, phi), y, lz, res);
+        ++crossings_;
       }
     }
     if (hit_sphere >= 0) {
       const RayState y = step.at(best);
-      const Sphere& sp = sc.spheres[hit_sphere];
+      const Sphere& sp = sc_.spheres[hit_sphere];
       return hit(HitKind::object, sp.color(detail::sphere_local(st, sp, {y[0], y[1], y[2], y[3]})), y, best, res);
     }
     return false;
-  };
-  const RayResult res = trace_null_ray(st, sc.observer, p, sc.rays, visit);
-  out.steps = res.steps;
-  out.reason = res.reason;
-  out.end = res.y;
-  out.lambda_end = res.lambda;
-  if (res.reason == StopReason::hit) return out;
-  const Vec4 x = {res.y[0], res.y[1], res.y[2], res.y[3]};
-  double t, r, phi;
-  scene_polar(st, x, t, r, phi);
-  out.r = r;
-  out.phi = phi;
-  out.t = t - sc.observer_time;
-  out.order = crossings;
-  if (res.reason == StopReason::horizon) {
-    out.kind = HitKind::horizon;
-    return out;
   }
-  if (res.reason != StopReason::escaped) return out;  // gave up: black, kind 4
-  sky_sample(sc, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out);
-  return out;
+
+  // The sample, once the integration has ended with `res`.
+  RaySample finish(const RayResult& res) {
+    out_.steps = res.steps;
+    out_.reason = res.reason;
+    out_.end = res.y;
+    out_.lambda_end = res.lambda;
+    if (res.reason == StopReason::hit) return out_;
+    const Vec4 x = {res.y[0], res.y[1], res.y[2], res.y[3]};
+    double t, r, phi;
+    scene_polar(sc_.spacetime, x, t, r, phi);
+    out_.r = r;
+    out_.phi = phi;
+    out_.t = t - sc_.observer_time;
+    out_.order = crossings_;
+    if (res.reason == StopReason::horizon) {
+      out_.kind = HitKind::horizon;
+      return out_;
+    }
+    if (res.reason != StopReason::escaped) return out_;  // gave up: black, kind 4
+    sky_sample(sc_, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out_);
+    return out_;
+  }
+
+ private:
+  // Ends the ray at the event y (affine parameter lambda) on an object.
+  bool hit(HitKind kind, const Color& color, const RayState& y, double lambda, RayResult& res) {
+    double t, r, phi;
+    scene_polar(sc_.spacetime, {y[0], y[1], y[2], y[3]}, t, r, phi);
+    out_.kind = kind;
+    out_.color = color;
+    out_.r = r;
+    out_.phi = phi;
+    out_.t = t - sc_.observer_time;
+    out_.order = crossings_;
+    res.reason = StopReason::hit;
+    res.y = y;
+    res.lambda = lambda;
+    return true;
+  }
+
+  const SceneOf<S>& sc_;
+  OnStep& on_step_;
+  Vec4 p0_;
+  RaySample out_;
+  int crossings_ = 0;
+};
+
+template <class S, class OnStep>
+RaySample trace_sample_hamiltonian(const SceneOf<S>& sc, const Vec3& n, OnStep& on_step) {
+  HamiltonianRay<S, OnStep> ray(sc, n, on_step);
+  const RayResult res = trace_null_ray(sc.spacetime, sc.observer, ray.momentum(), sc.rays,
+                                       [&](const RayStep& step, RayResult& r) { return ray.visit(step, r); });
+  return ray.finish(res);
 }
 
 // The Kerr fast path (geodesic/kerr_mino.hpp): Boyer–Lindquist and Mino
