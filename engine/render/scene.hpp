@@ -49,12 +49,11 @@ namespace detail {
 // Local coordinates (on the sphere frame's spatial legs) of the ray point X,
 // taken on the sphere's simultaneity slice: Newton on g(X - C(tau), u(tau)) = 0,
 // whose derivative in tau is -g(u, u) = 1 (local linearisation, DESIGN.md).
+// The coordinate time of the sphere's event simultaneous with X: Newton on
+// the centre and 4-velocity alone (cheap).
 template <class S>
-Vec3 sphere_local(const S& st, const Sphere& sphere, const Vec4& X) {
-  // Newton on the centre and 4-velocity alone (cheap); the frame, with its
-  // metric and Gram–Schmidt, once at the event found.
+double sphere_simultaneous_time(const S& st, const Sphere& sphere, const Vec4& X, Vec4& C, Vec4& u) {
   double t = X[0];
-  Vec4 C, u;
   sphere.centre(t, C, u);
   for (int it = 0; it < 3; ++it) {
     const double lag = contract(st.metric(C), X - C, u);
@@ -64,6 +63,29 @@ Vec3 sphere_local(const S& st, const Sphere& sphere, const Vec4& X) {
     t = C[0] + lag * u[0];
     sphere.centre(t, C, u);
   }
+  return t;
+}
+
+// |xi|^2 of sphere_local without the frame's spatial legs: the squared
+// length of X - C projected orthogonally to u, g(d, d) + g(d, u)^2 / -g(u, u).
+// What the intersection test needs at every sample; the legs (interpolation,
+// metric and Gram–Schmidt) only colour a hit.
+template <class S>
+double sphere_distance2(const S& st, const Sphere& sphere, const Vec4& X) {
+  Vec4 C, u;
+  sphere_simultaneous_time(st, sphere, X, C, u);
+  const Mat4 g = st.metric(C);
+  const Vec4 d = X - C;
+  const double du = contract(g, d, u);
+  return contract(g, d, d) + du * du / -contract(g, u, u);
+}
+
+template <class S>
+Vec3 sphere_local(const S& st, const Sphere& sphere, const Vec4& X) {
+  // The simultaneous event first; the frame, with its metric and
+  // Gram–Schmidt, once there.
+  Vec4 C, u;
+  const double t = sphere_simultaneous_time(st, sphere, X, C, u);
   const SphereFrame f = sphere.at(t);
   const Mat4 g = st.metric(f.centre);
   const Vec4 d = X - f.centre;
@@ -168,10 +190,7 @@ std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayS
   // runs on by |dt| per |dx| — deep in a potential well far more than 1.
   const double time_rate = std::abs(b[0] - a[0]) / std::max(chord, 1e-300);
   const double lip = 2.0 * std::sqrt(row) * (1.0 + time_rate);
-  auto F = [&](const RayState& y) {
-    const Vec3 xi = sphere_local(st, sphere, {y[0], y[1], y[2], y[3]});
-    return xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2] - R2;
-  };
+  auto F = [&](const RayState& y) { return sphere_distance2(st, sphere, {y[0], y[1], y[2], y[3]}) - R2; };
   auto lambda_at = [&](double q) { return l0 + q * (l1 - l0); };
   double prev_s = s0, prev_l = lambda_at(s0);
   double prev_f = F(step.at(prev_l));
