@@ -68,8 +68,9 @@ TEST(Render, KerrFastPathAgreesWithKerrSchild) {
     RecordProperty(theta == 0 ? "axis_dr_max" : "inclined_dr_max", std::to_string(a.dr_max));
     for (std::size_t k = 0; k < ks.size(); ++k) {
       EXPECT_EQ(ks[k].order, bl[k].order) << "pixel " << k;
-      if (ks[k].kind == HitKind::sky)
+      if (ks[k].kind == HitKind::sky) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(ks[k].color[c], bl[k].color[c], 1e-6) << "pixel " << k;
+      }
     }
   }
 }
@@ -104,7 +105,7 @@ TEST(Render, FlatSpaceDiskIsTheExactProjection) {
   // exact); at the production tolerance, chosen by image error, to 1e-4 M
   // at worst (the bench's standard is a 99th percentile of 1e-5 M).
   const int W = 48, H = 48;
-  for (const auto [tolerance, bound] : {std::pair{1e-10, 1e-7}, std::pair{default_ray_tolerance, 1e-5}}) {
+  for (const auto& [tolerance, bound] : {std::pair{1e-10, 1e-7}, std::pair{default_ray_tolerance, 1e-5}}) {
     ShotResources res;
     const FrameScene fs = kerr_scene(0, 0, 30, 70, 50, true);
     RayOptions o;
