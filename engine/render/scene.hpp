@@ -183,7 +183,9 @@ std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayS
   // a potential well), so twice the fastest quarter's, not the chord.
   const double len = 8.0 * quarter + 2.0 * margin;
   const double spacing = 0.25 * R;
-  const Mat4 gc = st.metric(sphere.at(0.5 * (a[0] + b[0])).centre);
+  Vec4 centre, u_centre;  // the centre alone: the frame's Gram–Schmidt is not needed here
+  sphere.centre(0.5 * (a[0] + b[0]), centre, u_centre);
+  const Mat4 gc = st.metric(centre);
   double row = 0.0;
   for (int i = 1; i < 4; ++i) row = std::max(row, std::abs(gc[i][0]) + std::abs(gc[i][1]) + std::abs(gc[i][2]) + std::abs(gc[i][3]));
   // The sphere moves (slower than light) while the ray's coordinate time
