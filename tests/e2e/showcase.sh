@@ -64,6 +64,14 @@ expect_error rate "--rate goes with --quality preview" -- "$LIGHTCONE" showcase 
 expect_error size "--size '12': expected WxH" -- "$LIGHTCONE" showcase --size 12 --out bad
 mkdir empty
 expect_error shots "empty/kerr_accrDisk.lua not found" -- "$LIGHTCONE" showcase --shots empty --out bad
+expect_error rate_range "--rate -1: must be between 0.01 and 240" -- "$LIGHTCONE" showcase --rate -1 --out bad
+mkdir broken
+cp "$SRC"/shots/kerr_accrDisk.lua "$SRC"/shots/dihole.lua broken/
+echo 'error("broken on purpose")' >broken/kerr_passing.lua
+expect_error broken_shot "broken/kerr_passing.lua:1: broken on purpose" -- "$LIGHTCONE" showcase --shots broken --out bad
 [ ! -e bad ] || fail "a refused showcase left bad/ behind"
+touch a_file
+expect_error out_is_file "a_file/frames/kerr_accrDisk: cannot create the output directory" -- \
+  "$LIGHTCONE" showcase "${ARGS[@]}" --out a_file
 
 e2e_end
