@@ -98,20 +98,18 @@ inline bool boxes_overlap(const Vec3& alo, const Vec3& ahi, const Vec3& blo, con
   return true;
 }
 
-// First entry of the ray into the sphere within this step, if any: the affine
-// parameter of the crossing.  The spacetime tube (the centre's box over the
-// step's time range, grown by 2R) rejects almost every step cheaply.
-template <class S>
-std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayStep& step) {
-  const double l0 = step.t0, l1 = step.t0 + step.h;
+// The cheap first half of sphere_entry, for every step of every ray: true
+// when the step may come near the sphere.  First against the box the centre
+// never leaves, grown by 2R and half the chord (a step strays from its chord
+// by less than that), then against the centre's box over the step's time
+// range (a table lookup); neither evaluates the step's dense output inside.
+inline bool sphere_near_step(const Sphere& sphere, const RayStep& step) {
   const RayState& a = step.start();
-  const RayState b = step.at(l1);
-  double chord2 = 0.0;
-  for (int k = 0; k < 3; ++k) chord2 += (b[k + 1] - a[k + 1]) * (b[k + 1] - a[k + 1]);
-  // First against the box the centre never leaves, grown by half the chord
-  // (a step strays from its chord by less than that): most steps are far
-  // from the sphere at all times, and this needs no lookup on the worldline.
+  const double l1 = step.t0 + step.h;
   Vec3 rlo, rhi, clo, chi;
+  double chord2 = 0.0, b[4];
+  for (int k = 0; k < 4; ++k) b[k] = step.component(k, l1);
+  for (int k = 0; k < 3; ++k) chord2 += (b[k + 1] - a[k + 1]) * (b[k + 1] - a[k + 1]);
   const double far = 2.0 * sphere.spec.radius + 0.5 * std::sqrt(chord2);
   for (int k = 0; k < 3; ++k) {
     rlo[k] = std::min(a[k + 1], b[k + 1]);
@@ -119,7 +117,31 @@ std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayS
     clo[k] = sphere.life_lo[k] - far;
     chi[k] = sphere.life_hi[k] + far;
   }
-  if (!boxes_overlap(rlo, rhi, clo, chi)) return std::nullopt;
+  if (!boxes_overlap(rlo, rhi, clo, chi)) return false;
+  sphere.bounds(a[0], b[0], clo, chi);
+  for (int k = 0; k < 3; ++k) {
+    clo[k] -= far;
+    chi[k] += far;
+  }
+  return boxes_overlap(rlo, rhi, clo, chi);
+}
+
+// First entry of the ray into the sphere within a step that sphere_near_step
+// let through, if any: the affine parameter of the crossing.  The spacetime
+// tube (the centre's box over the step's time range, grown by 2R and the
+// step's bulge) rejects most such steps before any sampling.
+template <class S>
+[[gnu::noinline]] std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayStep& step) {
+  const double l0 = step.t0, l1 = step.t0 + step.h;
+  const RayState& a = step.start();
+  const RayState b = step.at(l1);
+  double chord2 = 0.0;
+  for (int k = 0; k < 3; ++k) chord2 += (b[k + 1] - a[k + 1]) * (b[k + 1] - a[k + 1]);
+  Vec3 rlo, rhi, clo, chi;
+  for (int k = 0; k < 3; ++k) {
+    rlo[k] = std::min(a[k + 1], b[k + 1]);
+    rhi[k] = std::max(a[k + 1], b[k + 1]);
+  }
   // How far the step strays from its chord: the largest distance of the
   // points at 1/4, 1/2 and 3/4 from the chord's (a step is a smooth,
   // nearly polynomial arc), doubled for safety.  Long straight steps (far
@@ -312,11 +334,13 @@ class HamiltonianRay {
     const double l1 = step.t0 + step.h;
     double best = l1 + 1.0;
     int hit_sphere = -1;
-    for (std::size_t k = 0; k < sc_.spheres.size(); ++k)
+    for (std::size_t k = 0; k < sc_.spheres.size(); ++k) {
+      if (!detail::sphere_near_step(sc_.spheres[k], step)) continue;
       if (auto l = detail::sphere_entry(st, sc_.spheres[k], step); l && *l < best) {
         best = *l;
         hit_sphere = static_cast<int>(k);
       }
+    }
     const double z0 = step.start()[3], z1 = step.component(3, l1);
     if ((z0 > 0.0) != (z1 > 0.0) && z0 != 0.0) {
       // Without a disk a crossing only counts (hit.order); it is located only

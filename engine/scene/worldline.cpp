@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "geodesic/christoffel.hpp"
 #include "geodesic/geodesic_solver.hpp"
 
 namespace lc {
@@ -79,12 +80,50 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
   w.dtau_ = spec.duration / (pb.samples - 1);
   w.samples_.reserve(path.samples.size());
   for (const auto& s : path.samples) w.samples_.push_back({s.x, s.u, Tetrad{s.e}});
-  for (std::size_t c = 0; c * kChunk < w.samples_.size(); ++c) {
+  // The coordinate-time table: twice as many steps as in proper time
+  // (coordinate time runs up to a few times faster than proper time deep in
+  // a potential well).  Each sample comes from the proper-time samples by
+  // Hermite interpolation in tau of the position (derivative u) and of the
+  // 4-velocity (derivative du/dtau = -Gamma(u, u), from the metric), with
+  // tau(t) inverted by proper_time_at; then dx/dt = u / u^0 and
+  // du/dt = (du/dtau) / u^0.
+  std::vector<Vec4> dudtau(w.samples_.size());
+  const std::size_t n_t = 2 * (w.samples_.size() - 1) + 1;
+  w.dt_ = (w.end_time() - w.start_time()) / static_cast<double>(n_t - 1);
+  w.by_time_.resize(n_t);
+  std::visit(
+      [&](const auto& st) {
+        auto acceleration = [&](const Vec4& x, const Vec4& u) { return transport_rate(christoffel(st, x), u, u); };
+        for (std::size_t i = 0; i < w.samples_.size(); ++i)
+          dudtau[i] = acceleration(w.samples_[i].x, w.samples_[i].u);
+        for (std::size_t k = 0; k < n_t; ++k) {
+          TimeSample& ts = w.by_time_[k];
+          const double t = k + 1 == n_t ? w.end_time() : w.start_time() + static_cast<double>(k) * w.dt_;
+          const double f = w.proper_time_at(t) / w.dtau_;
+          const std::size_t i = std::min(static_cast<std::size_t>(f), w.samples_.size() - 2);
+          const double q = f - static_cast<double>(i);
+          const Sample& sa = w.samples_[i];
+          const Sample& sb = w.samples_[i + 1];
+          double h00, h10, h01, h11;
+          hermite(q, h00, h10, h01, h11);
+          for (int m = 0; m < 4; ++m) {
+            ts.x[m] = h00 * sa.x[m] + h10 * w.dtau_ * sa.u[m] + h01 * sb.x[m] + h11 * w.dtau_ * sb.u[m];
+            ts.u[m] = h00 * sa.u[m] + h10 * w.dtau_ * dudtau[i][m] + h01 * sb.u[m] + h11 * w.dtau_ * dudtau[i + 1][m];
+          }
+          const Vec4 acc = acceleration(ts.x, ts.u);
+          for (int m = 0; m < 4; ++m) {
+            ts.dxdt[m] = ts.u[m] / ts.u[0];
+            ts.dudt[m] = acc[m] / ts.u[0];
+          }
+        }
+      },
+      w.spacetime_);
+  for (std::size_t c = 0; c * kChunk < n_t; ++c) {
     std::array<Vec3, 2> b = {Vec3{1e300, 1e300, 1e300}, Vec3{-1e300, -1e300, -1e300}};
-    for (std::size_t i = c * kChunk; i <= std::min(w.samples_.size() - 1, (c + 1) * kChunk); ++i)
+    for (std::size_t i = c * kChunk; i <= std::min(n_t - 1, (c + 1) * kChunk); ++i)
       for (int k = 0; k < 3; ++k) {
-        b[0][k] = std::min(b[0][k], w.samples_[i].x[k + 1]);
-        b[1][k] = std::max(b[1][k], w.samples_[i].x[k + 1]);
+        b[0][k] = std::min(b[0][k], w.by_time_[i].x[k + 1]);
+        b[1][k] = std::max(b[1][k], w.by_time_[i].x[k + 1]);
       }
     w.chunk_bounds_.push_back(b);
   }
@@ -170,25 +209,28 @@ double Worldline::proper_time_at(double t) const {
   return (static_cast<double>(i) + s) * dtau_;
 }
 
+std::size_t Worldline::time_index(double t) const {
+  const double f = (t - start_time()) / dt_;
+  if (!(f > 0.0)) return 0;
+  return std::min(by_time_.size() - 2, static_cast<std::size_t>(f));
+}
+
 void Worldline::centre_at_coordinate_time(double t, Vec4& x, Vec4& u) const {
-  if (t < samples_.front().x[0]) {
+  if (t < start_time()) {
     x = samples_.front().x;
     x[0] = t;
     u = samples_.front().e.e[0];  // held at rest at the start
     return;
   }
-  const double f = proper_time_at(t) / dtau_;
-  const std::size_t i = std::min(static_cast<std::size_t>(f), samples_.size() - 2);
-  const double s = f - static_cast<double>(i);
-  const Sample& a = samples_[i];
-  const Sample& b = samples_[i + 1];
+  const std::size_t i = time_index(t);
+  const double s = std::min(1.0, (t - by_time_[i].x[0]) / dt_);
+  const TimeSample& a = by_time_[i];
+  const TimeSample& b = by_time_[i + 1];
   double h00, h10, h01, h11;
   hermite(s, h00, h10, h01, h11);
-  // Derivatives of the Hermite basis in s; d/dtau = (d/ds) / dtau.
-  const double d00 = 6 * s * s - 6 * s, d10 = 3 * s * s - 4 * s + 1, d01 = -d00, d11 = 3 * s * s - 2 * s;
   for (int m = 0; m < 4; ++m) {
-    x[m] = h00 * a.x[m] + h10 * dtau_ * a.u[m] + h01 * b.x[m] + h11 * dtau_ * b.u[m];
-    u[m] = (d00 * a.x[m] + d01 * b.x[m]) / dtau_ + d10 * a.u[m] + d11 * b.u[m];
+    x[m] = h00 * a.x[m] + h10 * dt_ * a.dxdt[m] + h01 * b.x[m] + h11 * dt_ * b.dxdt[m];
+    u[m] = h00 * a.u[m] + h10 * dt_ * a.dudt[m] + h01 * b.u[m] + h11 * dt_ * b.dudt[m];
   }
 }
 
@@ -238,13 +280,9 @@ std::vector<WorldlineEvent> Worldline::apocentres() const {
 
 void Worldline::bounds(double t0, double t1, Vec3& lo, Vec3& hi) const {
   if (t0 > t1) std::swap(t0, t1);
-  // Chunks are whole runs of samples: the sample index is enough, no Newton.
-  auto index = [&](double t) {
-    if (t <= samples_.front().x[0]) return std::size_t{0};
-    if (t >= samples_.back().x[0]) return samples_.size() - 1;
-    return sample_index_at(t);
-  };
-  const std::size_t i0 = index(t0), i1 = index(t1);
+  // Chunks are whole runs of coordinate-time samples: an index, no search.
+  const std::size_t i0 = t0 <= start_time() ? 0 : time_index(t0);
+  const std::size_t i1 = t1 >= end_time() ? by_time_.size() - 1 : time_index(t1) + 1;
   lo = {1e300, 1e300, 1e300};
   hi = {-1e300, -1e300, -1e300};
   for (std::size_t c = i0 / kChunk; c <= std::min(i1 / kChunk, chunk_bounds_.size() - 1); ++c)

@@ -3,7 +3,10 @@
 // tetrad parallel-transported), then sampled by proper time (observers) or
 // by coordinate time (objects met by rays).  Stored at uniform proper-time
 // steps and interpolated with cubic Hermite polynomials (position with its
-// 4-velocity as derivative), so a lookup costs a few dozen flops.
+// 4-velocity as derivative).  For the rays' many centre lookups it is also
+// resampled once at uniform coordinate-time steps (position and 4-velocity,
+// each Hermite with its own t-derivative), so such a lookup is an index and
+// a few dozen flops: no search, no Newton.
 
 #include <vector>
 
@@ -60,6 +63,8 @@ class Worldline {
  private:
   // The sample step [i, i + 1] holding trace coordinate time t.
   std::size_t sample_index_at(double t) const;
+  // Index of the coordinate-time table step holding t, clamped to the table.
+  std::size_t time_index(double t) const;
 
   struct Sample {
     Vec4 x, u;
@@ -70,7 +75,15 @@ class Worldline {
   Spacetime spacetime_ = Minkowski{};
   std::vector<Sample> samples_;
   double dtau_ = 0.0, duration_ = 0.0;
-  // Per chunk of kChunk samples: spatial bounds, for the spacetime tube.
+  // Uniform in trace coordinate time from start_time(), step dt_: the
+  // centre, dx/dt, the 4-velocity and du/dt (geodesic equation).
+  struct TimeSample {
+    Vec4 x, dxdt, u, dudt;
+  };
+  std::vector<TimeSample> by_time_;
+  double dt_ = 0.0;
+  // Per chunk of kChunk coordinate-time samples: spatial bounds, for the
+  // spacetime tube.
   static constexpr std::size_t kChunk = 16;
   std::vector<std::array<Vec3, 2>> chunk_bounds_;
 };
