@@ -15,10 +15,30 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 namespace lc {
 
 namespace detail {
+
+// The controller's arithmetic is generic in T: double, or a GCC vector of
+// doubles (one independent problem per lane, dormand_prince_lanes.hpp).
+// Bits<T>: the signed 64-bit integer type of T's shape.
+template <class T>
+struct Bits {
+  using type = decltype(T{} < T{});  // a vector comparison's lane masks
+};
+template <>
+struct Bits<double> {
+  using type = std::int64_t;
+};
+template <class To, class From>
+To convert_to(From x) {
+  if constexpr (std::is_arithmetic_v<From>)
+    return static_cast<To>(x);
+  else
+    return __builtin_convertvector(x, To);
+}
 
 // log2 and exp2 to ~1e-5 relative, for the step-size controller only: its
 // factors are heuristics clamped to [0.1, 5], so libm's full precision
@@ -26,21 +46,30 @@ namespace detail {
 // step sequence is the same on every machine.
 // log2(x), x > 0 and finite: exponent from the bits, ln of the mantissa m
 // in [1, 2) by the series 2 atanh((m - 1)/(m + 1)) to the 9th power.
-inline double controller_log2(double x) {
-  const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
-  const int e = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
-  const double m = std::bit_cast<double>((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);
-  const double t = (m - 1.0) / (m + 1.0), t2 = t * t;
-  const double ln_m = 2.0 * t * (1.0 + t2 * (1.0 / 3.0 + t2 * (1.0 / 5.0 + t2 * (1.0 / 7.0 + t2 * (1.0 / 9.0)))));
-  return e + ln_m * 1.4426950408889634;
+template <class T>
+T controller_log2(T x) {
+  using I = typename Bits<T>::type;
+  const I bits = std::bit_cast<I>(x);
+  const I e = ((bits >> 52) & 0x7ff) - 1023;
+  const T m = std::bit_cast<T>((bits & 0x000fffffffffffffLL) | 0x3ff0000000000000LL);
+  const T t = (m - 1.0) / (m + 1.0), t2 = t * t;
+  const T ln_m = 2.0 * t * (1.0 + t2 * (1.0 / 3.0 + t2 * (1.0 / 5.0 + t2 * (1.0 / 7.0 + t2 * (1.0 / 9.0)))));
+  return convert_to<T>(e) + ln_m * 1.4426950408889634;
 }
 // 2^y for |y| < 1000: 2^floor(y) in the exponent bits, 2^f by Taylor to f^7.
-inline double controller_exp2(double y) {
-  const double n = std::floor(y);
-  const double f = (y - n) * 0.6931471805599453;
-  const double p =
+template <class T>
+T controller_exp2(T y) {
+  using I = typename Bits<T>::type;
+  I n = convert_to<I>(y);  // towards zero; then down to floor(y)
+  if constexpr (std::is_arithmetic_v<T>) {
+    if (static_cast<T>(n) > y) n -= 1;
+  } else {
+    n += convert_to<T>(n) > y;  // a true lane is -1
+  }
+  const T f = (y - convert_to<T>(n)) * 0.6931471805599453;
+  const T p =
       1.0 + f * (1.0 + f * (0.5 + f * (1.0 / 6 + f * (1.0 / 24 + f * (1.0 / 120 + f * (1.0 / 720 + f * (1.0 / 5040)))))));
-  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(p) + (static_cast<std::uint64_t>(static_cast<std::int64_t>(n)) << 52));
+  return std::bit_cast<T>(std::bit_cast<I>(p) + (n << 52));
 }
 
 }  // namespace detail
@@ -168,6 +197,25 @@ void dense_coefficients(const std::array<T, N>& y, const std::array<T, N>& y7, c
   }
 }
 
+// What the PI controller makes of an attempt's error norm err (err <= 1
+// accepts), given log2 of the last accepted error: log2 err, the factor that
+// divides h on acceptance (before clamping) and the one on rejection.  T as
+// in detail::controller_log2: the lanes work out all their factors at once.
+template <class T>
+struct ControllerFactors {
+  T err, log2_err, accept, reject;
+};
+template <class T>
+ControllerFactors<T> controller_factors(T err, T log2_err_old) {
+  const T big = T{} + 1e10;
+  err = err == err && err < T{} + 1e300 ? err : big;  // a stage left the domain: shrink hard
+  // err^expo1 and err_old^beta through one log2 each; err is at least
+  // 1e-10 here so the logarithms are finite.
+  const T log_err = detail::controller_log2(max_of(err, T{} + 1e-10));
+  return {err, log_err, detail::controller_exp2(expo1 * log_err - beta * log2_err_old) / safe,
+          detail::controller_exp2(expo1 * log_err) / safe};
+}
+
 // The PI step-size controller of one problem.
 struct Controller {
   double log2_err_old = -13.287712379549449;  // log2(1e-4)
@@ -180,23 +228,22 @@ struct Controller {
   // Inputs: the attempt's error norm (err <= 1 accepts) and step h; output:
   // whether it is accepted, and the next step to try.
   bool decide(double err, double h, const StepControl& c, double& h_next) {
-    if (!std::isfinite(err)) err = 1e10;  // a stage left the domain: shrink hard
-    // err^expo1 and err_old^beta through one log2 each; err is at least
-    // 1e-10 here so the logarithms are finite.
-    const double log_err = detail::controller_log2(std::max(err, 1e-10));
-    const double fac11 = detail::controller_exp2(expo1 * log_err);
-    if (err <= 1.0) {
-      double fac = detail::controller_exp2(expo1 * log_err - beta * log2_err_old) / safe;
-      fac = std::clamp(fac, 1.0 / fac_max, 1.0 / fac_min);
+    return decide(controller_factors(err, log2_err_old), h, c, h_next);
+  }
+  // The same with the factors worked out already.
+  bool decide(const ControllerFactors<double>& f, double h, const StepControl& c, double& h_next) {
+    if (f.err <= 1.0) {
+      const double fac = std::clamp(f.accept, 1.0 / fac_max, 1.0 / fac_min);
       double h_new = h / fac;
       if (std::abs(h_new) > c.h_max) h_new = std::copysign(c.h_max, h);
       if (rejected_last) h_new = std::copysign(std::min(std::abs(h_new), std::abs(h)), h);
-      log2_err_old = detail::controller_log2(std::max(err, 1e-4));
+      // log2(max(err, 1e-4)), log2 being monotone.
+      log2_err_old = std::max(f.log2_err, detail::controller_log2(1e-4));
       rejected_last = false;
       h_next = h_new;
       return true;
     }
-    h_next = h / std::min(1.0 / fac_min, fac11 / safe);
+    h_next = h / std::min(1.0 / fac_min, f.reject);
     rejected_last = true;
     return false;
   }

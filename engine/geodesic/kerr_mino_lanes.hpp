@@ -10,11 +10,10 @@
 
 #include "geodesic/dormand_prince.hpp"
 #include "geodesic/kerr_mino.hpp"
+#include "geodesic/lanes.hpp"
 
 namespace lc {
 
-using Lane4 = double __attribute__((vector_size(32)));
-inline constexpr int lane_count = 4;
 
 using MinoLanes = std::array<Lane4, 8>;  // component j, lane i: y[j][i]
 

@@ -1,29 +1,15 @@
 #pragma once
 // Hamilton's equations of the dihole (Dihole::hamiltonian_rhs) for four
-// rays at once, one per lane of a vector (geodesic/kerr_mino_lanes.hpp's
+// rays at once, one per lane of a vector (geodesic/lanes.hpp's
 // Lane4): the same formulas, for render/trace_batch.hpp.
 
 #include <array>
 #include <cmath>
 
-#if defined(__AVX__)
-#include <immintrin.h>
-#endif
-
-#include "geodesic/kerr_mino_lanes.hpp"
+#include "geodesic/lanes.hpp"
 #include "spacetime/dihole.hpp"
 
 namespace lc {
-
-// The square root of every lane.
-inline Lane4 sqrt_of(Lane4 x) {
-#if defined(__AVX__)
-  return reinterpret_cast<Lane4>(_mm256_sqrt_pd(reinterpret_cast<__m256d>(x)));
-#else
-  for (int i = 0; i < lane_count; ++i) x[i] = std::sqrt(x[i]);
-  return x;
-#endif
-}
 
 // State per lane: x^0..x^3, p_0..p_3, as RayState.
 using RayLanes = std::array<Lane4, 8>;
