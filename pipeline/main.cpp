@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--scale", render.scale, "Scale the image size by S (previews: 0.25)");
   render_cmd->add_option("--supersample", render.supersample, "N x N samples per pixel instead of the shot's");
   render_cmd->add_flag("--full-supersample", render.full_supersample,
-                       "Trace every sample of the N x N grid (default: the rest only where a pixel's corner samples differ)");
+                       "Trace every sample of the N x N grid (default: one per pixel, the rest only where it differs from a row neighbour's)");
   render_cmd->add_flag("--layers", render.layers, "Add data layers (hit.kind, hit.r, hit.phi, hit.t, hit.order) to the EXR");
   render_cmd->add_option("--threads", render.threads, "Render threads per process (default: every core; under mpirun the node's share)")
       ->check(CLI::Range(1, 1024));

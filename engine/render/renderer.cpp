@@ -1,9 +1,11 @@
 #include "render/renderer.hpp"
 
 #include "core/constants.hpp"
+#include "image/srgb.hpp"
 #include "render/trace_batch.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <thread>
@@ -24,24 +26,20 @@ FrameImage make_frame(const RenderSettings& rs) {
 
 namespace {
 
-// The sample offsets (a, b) of an N x N grid traced first: with adaptive
-// sampling the corners (for N = 2 one diagonal), else the whole grid in
-// row order.
-std::vector<std::pair<int, int>> first_samples(int N, bool adaptive) {
-  if (adaptive && N == 2) return {{0, 0}, {1, 1}};
-  if (adaptive) return {{0, 0}, {N - 1, 0}, {0, N - 1}, {N - 1, N - 1}};
-  std::vector<std::pair<int, int>> all;
-  for (int b = 0; b < N; ++b)
-    for (int a = 0; a < N; ++a) all.push_back({a, b});
-  return all;
-}
+// The sub-pixel (a, b) of an N x N grid traced first in pixel column i when
+// sampling adaptively: one corner, alternating along the row between the
+// top-left and the bottom-right: neighbours' first samples then sit on
+// different sub-rows, so an edge that runs along the row inside a pixel row
+// makes them differ (a vertical one does anyway).
+std::pair<int, int> first_sample(int N, std::size_t i) { return i % 2 == 0 ? std::pair{0, 0} : std::pair{N - 1, N - 1}; }
 
 // Whether two samples agree closely enough to stand for the pixels and
-// sub-pixels between them.
+// sub-pixels between them: the same hit kind, and every colour channel
+// within adaptive_sample_threshold after the sRGB curve (what a viewer sees).
 bool samples_agree(const RaySample& x, const RaySample& y) {
   if (x.kind != y.kind) return false;
   for (int c = 0; c < 3; ++c)
-    if (std::abs(x.color[c] - y.color[c]) > adaptive_sample_threshold) return false;
+    if (std::abs(linear_to_srgb(x.color[c]) - linear_to_srgb(y.color[c])) > adaptive_sample_threshold) return false;
   return true;
 }
 
@@ -52,18 +50,22 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
   // rows of img (and layers), and the rays and steps spent.  A row's
   // samples are traced in batches (trace_batch: several rays at once where
   // the spacetime allows).  Adaptive sampling works along a row (the rows
-  // above and below belong to other stripes): first the corner samples of
-  // every pixel, then the whole grid of each pixel whose corners disagree
-  // with each other or with a neighbour's in the row.
+  // above and below belong to other stripes): first one sample of every
+  // pixel (first_sample); then the whole grid of each pixel whose first
+  // sample disagrees with a row neighbour's; then, in rounds, of each
+  // neighbour of a pixel whose grid turned out not to be flat (a feature
+  // found inside one pixel may reach into the next without touching its
+  // first sample).
   RenderStats stats;
   const int N = rs.supersample;
+  const std::size_t NN = static_cast<std::size_t>(N) * N;
   const bool adaptive = rs.adaptive && N >= 2;
-  const std::vector<std::pair<int, int>> first = first_samples(N, adaptive);
-  const std::size_t F = first.size();
-  std::vector<char> is_first(static_cast<std::size_t>(N) * N, 0);
-  for (const auto& [a, b] : first) is_first[static_cast<std::size_t>(b) * N + a] = 1;
-  const int centre = N % 2 == 1 ? (N / 2) * N + N / 2 : -1;  // index of the centre sample, if there is one
+  const int centre = N % 2 == 1 ? (N / 2) * N + N / 2 : -1;  // index b * N + a of the centre sample, if any
   const std::size_t W = static_cast<std::size_t>(rs.width);
+  auto first_index = [&](std::size_t i) {
+    const auto [a, b] = first_sample(N, i);
+    return static_cast<std::size_t>(b) * N + a;
+  };
   auto count = [&](std::span<const RaySample> samples) {
     for (const RaySample& s : samples) {
       ++stats.rays;
@@ -71,72 +73,91 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
       if (s.kind == HitKind::gave_up) ++stats.gave_up;
     }
   };
-  auto dir = [&](int i, int j, int a, int b) { return sc.camera.direction(i + (a + 0.5) / N, j + (b + 0.5) / N); };
+  auto dir = [&](std::size_t i, int j, std::size_t k) {
+    const int a = static_cast<int>(k) % N, b = static_cast<int>(k) / N;
+    return sc.camera.direction(static_cast<double>(i) + (a + 0.5) / N, j + (b + 0.5) / N);
+  };
   std::vector<Vec3> dirs;
-  std::vector<RaySample> firsts, rest, centres;
-  std::vector<char> refine(W);
+  std::vector<RaySample> traced;
+  std::vector<std::size_t> where;   // grid index of each traced sample
+  std::vector<RaySample> grid(W * NN);  // sample k = b * N + a of pixel i at i * NN + k
+  std::vector<char> full(W), next(W);
+  std::vector<RaySample> centres;
   for (int j : rows) {
-    dirs.clear();
-    for (std::size_t i = 0; i < W; ++i)
-      for (const auto& [a, b] : first) dirs.push_back(dir(static_cast<int>(i), j, a, b));
-    firsts.resize(dirs.size());
-    trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(firsts));
-    count(firsts);
-
-    dirs.clear();
+    // Traces the samples at grid indices `where` into the grid.
+    auto trace_row = [&]() {
+      dirs.clear();
+      for (const std::size_t g : where) dirs.push_back(dir(g / NN, j, g % NN));
+      traced.resize(dirs.size());
+      trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
+      count(traced);
+      for (std::size_t n = 0; n < where.size(); ++n) grid[where[n]] = traced[n];
+    };
+    // Every pixel's grid where not adaptive, else its first sample; then
+    // the grids of the pixels marked in `next`, in rounds.
+    where.clear();
     for (std::size_t i = 0; i < W; ++i) {
-      bool r = false;
-      if (adaptive) {
-        for (std::size_t k = 1; k < F && !r; ++k) r = !samples_agree(firsts[i * F], firsts[i * F + k]);
-        if (i > 0 && !r) r = !samples_agree(firsts[i * F], firsts[(i - 1) * F]);
-        if (i + 1 < W && !r) r = !samples_agree(firsts[i * F], firsts[(i + 1) * F]);
-      }
-      refine[i] = r;
-      if (r)
-        for (int b = 0; b < N; ++b)
-          for (int a = 0; a < N; ++a)
-            if (!is_first[static_cast<std::size_t>(b) * N + a]) dirs.push_back(dir(static_cast<int>(i), j, a, b));
+      full[i] = !adaptive;
+      if (adaptive)
+        where.push_back(i * NN + first_index(i));
+      else
+        for (std::size_t k = 0; k < NN; ++k) where.push_back(i * NN + k);
     }
-    rest.resize(dirs.size());
-    trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(rest));
-    count(rest);
+    trace_row();
+    auto first_of = [&](std::size_t i) -> const RaySample& { return grid[i * NN + first_index(i)]; };
+    for (std::size_t i = 0; adaptive && i < W; ++i)
+      next[i] = (i > 0 && !samples_agree(first_of(i), first_of(i - 1))) ||
+                (i + 1 < W && !samples_agree(first_of(i), first_of(i + 1)));
+    while (adaptive) {
+      where.clear();
+      for (std::size_t i = 0; i < W; ++i)
+        if (next[i] && !full[i])
+          for (std::size_t k = 0; k < NN; ++k)
+            if (k != first_index(i)) where.push_back(i * NN + k);
+      if (where.empty()) break;
+      trace_row();
+      std::fill(next.begin(), next.end(), 0);
+      for (const std::size_t g : where) full[g / NN] = 2;  // refined in this round
+      for (std::size_t i = 0; i < W; ++i) {
+        if (full[i] != 2) continue;
+        full[i] = 1;
+        bool flat = true;
+        for (std::size_t k = 0; k < NN && flat; ++k) flat = samples_agree(grid[i * NN + k], first_of(i));
+        if (!flat) {
+          if (i > 0) next[i - 1] = 1;
+          if (i + 1 < W) next[i + 1] = 1;
+        }
+      }
+    }
 
     // The layers take the pixel-centre sample; trace it where no sample sits
-    // there (even N) or the centre was not traced (an unrefined odd grid).
-    const bool centre_traced_always = centre >= 0 && is_first[static_cast<std::size_t>(centre)];
+    // there (even N) or it was not traced (an unrefined pixel).
     dirs.clear();
     if (rs.layers)
       for (std::size_t i = 0; i < W; ++i)
-        if (!centre_traced_always && !(centre >= 0 && refine[i]))
+        if (!(centre >= 0 && (full[i] || first_index(i) == static_cast<std::size_t>(centre))))
           dirs.push_back(sc.camera.direction(static_cast<double>(i) + 0.5, j + 0.5));
     centres.resize(dirs.size());
     trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(centres));
     count(centres);
 
-    std::size_t next_rest = 0, next_centre = 0;
+    std::size_t next_centre = 0;
     for (std::size_t i = 0; i < W; ++i) {
       double acc[3] = {0, 0, 0};
       int n = 0;
-      const RaySample* centre_sample = nullptr;
-      for (std::size_t k = 0; k < F; ++k) {
-        const RaySample& s = firsts[i * F + k];
-        for (int c = 0; c < 3; ++c) acc[c] += s.color[c];
+      for (std::size_t k = 0; k < NN; ++k) {
+        if (!full[i] && k != first_index(i)) continue;
+        for (int c = 0; c < 3; ++c) acc[c] += grid[i * NN + k].color[c];
         ++n;
-        if (first[k].second * N + first[k].first == centre) centre_sample = &s;
       }
-      if (refine[i])
-        for (int b = 0; b < N; ++b)
-          for (int a = 0; a < N; ++a) {
-            if (is_first[static_cast<std::size_t>(b) * N + a]) continue;
-            const RaySample& s = rest[next_rest++];
-            for (int c = 0; c < 3; ++c) acc[c] += s.color[c];
-            ++n;
-            if (b * N + a == centre) centre_sample = &s;
-          }
       const std::size_t p = static_cast<std::size_t>(j) * W + i;
       for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = static_cast<float>(acc[c] / n);
       if (rs.layers) {
-        if (!centre_sample) centre_sample = &centres[next_centre++];
+        const RaySample* centre_sample = nullptr;
+        if (centre >= 0 && (full[i] || first_index(i) == static_cast<std::size_t>(centre)))
+          centre_sample = &grid[i * NN + static_cast<std::size_t>(centre)];
+        else
+          centre_sample = &centres[next_centre++];
         img.layers[0].values[p] = static_cast<float>(static_cast<int>(centre_sample->kind));
         img.layers[1].values[p] = static_cast<float>(centre_sample->r);
         img.layers[2].values[p] = static_cast<float>(centre_sample->phi);

@@ -16,9 +16,10 @@ struct RenderSettings {
   int width = 0, height = 0;
   int supersample = 1;  // N: N x N samples per pixel
   bool layers = false;  // also fill hit.kind, hit.r, hit.phi, hit.t, hit.order
-  // N >= 2: trace a pixel's corner samples first (the diagonal pair for
-  // N = 2) and the rest of its N x N grid only if they disagree (another hit
-  // kind, or a colour more than adaptive_sample_threshold apart).
+  // N >= 2: trace one corner sample of each pixel first (alternating
+  // top-left and bottom-right along the row) and the rest of its N x N grid
+  // only if it disagrees with a row neighbour's (another hit kind, or a
+  // colour more than adaptive_sample_threshold apart in sRGB).
   bool adaptive = true;
 };
 

@@ -320,9 +320,9 @@ TEST(Render, ThreadCountDoesNotChangeTheImage) {
 }
 
 TEST(Render, AdaptiveSupersamplingRefinesWhereSamplesDiffer) {
-  // 2x2 adaptive against the full grid on the disk scene: fewer rays; the
-  // same value wherever the first samples agree to the threshold (the pixel
-  // is then flat to it); full samples at the disk's and shadow's edges.
+  // 2x2 adaptive against the full grid on the disk scene: one sample per
+  // pixel where it agrees with its row neighbours' (the pixel is then flat
+  // to the threshold), the full grid at the disk's and shadow's edges.
   const int W = 160, H = 120;
   ShotResources res;
   const Scene scene = build_scene(kerr_scene(1, 0.9, 30, 80, 40, true), W, H, res);
@@ -331,8 +331,8 @@ TEST(Render, AdaptiveSupersamplingRefinesWhereSamplesDiffer) {
   const FrameImage a = render_frame(scene, adaptive, 2, &sa);
   const FrameImage f = render_frame(scene, full, 2, &sf);
   EXPECT_EQ(sf.rays, 4L * W * H);
-  EXPECT_LT(sa.rays, 3L * W * H);  // most pixels are flat
-  EXPECT_GT(sa.rays, 2L * W * H);  // edges are refined
+  EXPECT_LT(sa.rays, 3L * W * H);  // most pixels are flat (small as it is, the scene is mostly edges)
+  EXPECT_GT(sa.rays, 1L * W * H);  // edges are refined
   double mean = 0;
   for (std::size_t k = 0; k < a.rgb.size(); ++k) mean += std::abs(a.rgb[k] - f.rgb[k]);
   mean /= static_cast<double>(a.rgb.size());
