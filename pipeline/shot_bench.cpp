@@ -81,6 +81,7 @@ ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, int r
   RayOptions tight;
   tight.control.rtol = tight.control.atol = reference_tolerance;
   tight.control.h_min = 1e-14;
+  tight.escape = EscapeRule::fixed;  // integrated out to 1000 M, whatever the scene allows
   const Scene reference_scene = build_scene(fs, info.width, info.height, resources, tight);
   const std::vector<RaySample> reference = trace_all(reference_scene, r.width, r.height, threads, nullptr);
   r.accuracy = compare_samples(reference, test, fs);

@@ -14,6 +14,12 @@ inline constexpr double degree = std::numbers::pi / 180.0;  // radians per degre
 // moving outwards: beyond the outermost photon orbit no ray turns back, so the
 // remaining bending only changes the escape direction (by about 2M/r).
 inline constexpr double default_escape_radius = 1000.0;
+// Where the far field is a known monopole (the dihole's isotropic
+// coordinates, flat space; geodesic/weak_field_tail.hpp), rays escape
+// earlier: beyond the objects, once the multipoles beyond the monopole
+// (O(M d^2 / r^3) for the dihole) bend light by less than this, in radians.
+// A pixel of the paper's dihole shots spans ~2e-4 rad.
+inline constexpr double far_field_bending = 1e-6;
 
 // The extreme Reissner–Nordström holes are coordinate points: a ray is taken
 // as captured once U = 1 + Σ m_i/ρ_i exceeds this bound.  U > 11 forces

@@ -22,10 +22,18 @@ using RayStep = DenseStep<8>;
 // moving objects) or always with the Kerr–Schild Hamiltonian.
 enum class KerrChart { boyer_lindquist_mino, kerr_schild };
 
+// Where a ray moving outwards stops being integrated (the sky lookup then
+// adds the bending still to come, render/scene.hpp's sky_sample).
+enum class EscapeRule {
+  far_field,  // the scene builder may bring escape_radius in to where the rest is known (far_field_bending)
+  fixed,      // always at escape_radius (references)
+};
+
 struct RayOptions {
   StepControl control{default_ray_tolerance, default_ray_tolerance, 1e-12, 1e30};
   KerrChart kerr_chart = KerrChart::boyer_lindquist_mino;
   double escape_radius = default_escape_radius;
+  EscapeRule escape = EscapeRule::far_field;
   // Beyond this coordinate radius, moving outwards, a ray meets nothing more
   // (the scene builder sets it from the objects and the holes; 0: never):
   // its tolerances are relaxed by free_flight_relaxation.

@@ -13,6 +13,7 @@
 #include "geodesic/crossing.hpp"
 #include "geodesic/kerr_mino.hpp"
 #include "geodesic/null_ray.hpp"
+#include "geodesic/weak_field_tail.hpp"
 #include "observer/ray_direction.hpp"
 #include "render/camera.hpp"
 #include "render/hit.hpp"
@@ -282,9 +283,11 @@ namespace detail {
 template <class S>
 void sky_sample(const SceneOf<S>& sc, const Vec4& x, const Vec4& p, RaySample& out) {
   const S& st = sc.spacetime;
-  // Escape direction: the spatial tangent, bent by the weak-field deflection
-  // still to come between here and infinity, (2M/r) tan(psi/2) towards the
-  // centre (psi: angle between position and direction) — without it the sky
+  // Escape direction: the spatial tangent, bent by the deflection still to
+  // come between here and infinity.  The dihole's far field is the
+  // isotropic monopole of weak_field_tail.hpp, exact to O(M d^2 / r^3);
+  // elsewhere (Kerr–Schild) its first order, (2M/r) tan(psi/2) towards the
+  // centre (psi: angle between position and direction).  Without it the sky
   // would sit ~2M/R radians off at the escape radius R.
   Vec4 dx, dp;
   st.hamiltonian_rhs(x, p, dx, dp);
@@ -292,7 +295,9 @@ void sky_sample(const SceneOf<S>& sc, const Vec4& x, const Vec4& p, RaySample& o
   const double dn = norm3(d);
   for (auto& c : d) c /= dn;
   const double M = st.asymptotic_mass();
-  if (M > 0.0) {
+  if constexpr (std::is_same_v<S, Dihole>) {
+    d = isotropic_escape_direction({x[1], x[2], x[3]}, d, M);
+  } else if (M > 0.0) {
     const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
     const Vec3 rh = {x[1] / rho, x[2] / rho, x[3] / rho};
     const double c = std::clamp(rh[0] * d[0] + rh[1] * d[1] + rh[2] * d[2], -1.0, 1.0);
