@@ -1,6 +1,6 @@
 #pragma once
 // Dormand–Prince 5(4) on lane_count independent 8-component problems at
-// once (one per vector lane, lanes.hpp's Lane4): the arithmetic of
+// once (one per vector lane, lanes.hpp's LaneVec): the arithmetic of
 // dormand_prince.hpp's dp5 pieces on vectors, and per lane its own time,
 // step size, PI controller and tolerances.  The ray drivers of
 // render/trace_batch.hpp start and stop problems in lanes as rays begin and end.
@@ -16,15 +16,15 @@ namespace lc {
 template <class Rhs4>
 class DormandPrince5Lanes {
  public:
-  using Lanes = std::array<Lane4, 8>;
+  using Lanes = std::array<LaneVec, 8>;
   using State = std::array<double, 8>;
 
   // rhs: the right-hand side on lanes (it may hold per-lane constants the
   // caller sets before start()); weights as for DormandPrince5.
   DormandPrince5Lanes(const Rhs4& rhs, const StepControl& control, const State& weights)
       : rhs_(rhs), c_(control), w_(weights) {
-    atol_ = Lane4{} + c_.atol;
-    rtol_ = Lane4{} + c_.rtol;
+    atol_ = LaneVec{} + c_.atol;
+    rtol_ = LaneVec{} + c_.rtol;
   }
 
   // Lane i starts at y0 with slope k0 and first trial step h, at the
@@ -69,7 +69,7 @@ class DormandPrince5Lanes {
   template <class Accepted, class GaveUp>
   bool attempt(Accepted&& accepted, GaveUp&& gave_up) {
     bool any = false;
-    Lane4 tv{}, hv{};
+    LaneVec tv{}, hv{};
     for (int i = 0; i < lane_count; ++i) {
       any = any || live_[i];
       tv[i] = t_[i];
@@ -77,13 +77,13 @@ class DormandPrince5Lanes {
     }
     if (!any) return false;
     dp5::stages(rhs_, tv, y_, k1_, hv, y7_, k3_, k4_, k5_, k6_, k7_);
-    const Lane4 e2 = dp5::error_sum(y_, y7_, k1_, k3_, k4_, k5_, k6_, k7_, hv, w_, atol_, rtol_);
+    const LaneVec e2 = dp5::error_sum(y_, y7_, k1_, k3_, k4_, k5_, k6_, k7_, hv, w_, atol_, rtol_);
     dp5::dense_coefficients(y_, y7_, k1_, k3_, k4_, k5_, k6_, k7_, hv, r1_, r2_, r3_, r4_, r5_);
     // The controllers' logarithms and powers for all lanes at once (a
     // tenth of a dihole frame when each lane worked out its own).
-    Lane4 log2_err_old{};
+    LaneVec log2_err_old{};
     for (int i = 0; i < lane_count; ++i) log2_err_old[i] = control_[i].log2_err_old;
-    const dp5::ControllerFactors<Lane4> f = dp5::controller_factors(sqrt_of(e2 / 8.0), log2_err_old);
+    const dp5::ControllerFactors<LaneVec> f = dp5::controller_factors(sqrt_of(e2 / 8.0), log2_err_old);
     for (int i = 0; i < lane_count; ++i) {
       if (!live_[i]) continue;
       const double h = h_[i];
@@ -126,7 +126,7 @@ class DormandPrince5Lanes {
   StepControl c_;
   State w_;
   Lanes y_{}, k1_{}, y7_{}, k3_{}, k4_{}, k5_{}, k6_{}, k7_{}, r1_{}, r2_{}, r3_{}, r4_{}, r5_{};
-  Lane4 atol_{}, rtol_{};
+  LaneVec atol_{}, rtol_{};
   std::array<double, lane_count> t_{}, h_{};
   std::array<dp5::Controller, lane_count> control_{};
   std::array<bool, lane_count> live_{};

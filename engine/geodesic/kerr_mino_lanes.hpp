@@ -1,9 +1,10 @@
 #pragma once
-// The BL–Mino right-hand side of kerr_mino.hpp for four rays at once, one
-// ray per lane of an AVX2 vector (GCC vector extensions): each lane has its
-// own constants of motion, the spacetime is shared.  With the
+// The BL–Mino right-hand side of kerr_mino.hpp for several rays at once, one
+// ray per lane of a vector (geodesic/lanes.hpp: four with AVX2, eight with
+// AVX-512): each lane has its own constants of motion, the spacetime is
+// shared.  With the
 // Dormand–Prince pieces of dormand_prince.hpp, which are generic in the
-// number type, it lets render/trace_batch.hpp advance four rays per
+// number type, it lets render/trace_batch.hpp advance lane_count rays per
 // instruction stream, each with its own step size and controller.
 
 #include <array>
@@ -15,10 +16,10 @@
 namespace lc {
 
 
-using MinoLanes = std::array<Lane4, 8>;  // component j, lane i: y[j][i]
+using MinoLanes = std::array<LaneVec, 8>;  // component j, lane i: y[j][i]
 
 struct KerrMinoRhs4 {
-  Lane4 M{}, a{}, E{}, L{}, K{}, a2{}, aE{}, a2E2{}, alpha{}, u_floor2{};
+  LaneVec M{}, a{}, E{}, L{}, K{}, a2{}, aE{}, a2E2{}, alpha{}, u_floor2{};
 
   // Lane i takes the constants of one ray.
   void set(int i, const KerrMinoRhs& r) {
@@ -35,15 +36,15 @@ struct KerrMinoRhs4 {
   }
 
   // KerrMinoRhs::operator() lane by lane (the same formulas; see there).
-  void operator()(Lane4, const MinoLanes& y, MinoLanes& dy) const {
-    const Lane4 zero = {0, 0, 0, 0}, one = {1, 1, 1, 1};
-    const Lane4 u = y[1], c = y[2], s = y[3], U = y[5], w = y[6];
-    const Lane4 u2 = u * u;
-    const Lane4 Pu = E + alpha * u2;
-    const Lane4 inv_D = one / (one - 2.0 * M * u + a2 * u2);
-    const Lane4 inv_u2 = one / (u2 > u_floor2 ? u2 : u_floor2);
-    const Lane4 s2 = s * s;
-    const Lane4 L_s2 = L == zero ? zero : L / s2;
+  void operator()(LaneVec, const MinoLanes& y, MinoLanes& dy) const {
+    const LaneVec zero = LaneVec{} + 0.0, one = LaneVec{} + 1.0;
+    const LaneVec u = y[1], c = y[2], s = y[3], U = y[5], w = y[6];
+    const LaneVec u2 = u * u;
+    const LaneVec Pu = E + alpha * u2;
+    const LaneVec inv_D = one / (one - 2.0 * M * u + a2 * u2);
+    const LaneVec inv_u2 = one / (u2 > u_floor2 ? u2 : u_floor2);
+    const LaneVec s2 = s * s;
+    const LaneVec L_s2 = L == zero ? zero : L / s2;
     dy[0] = a * (L - aE * s2) + (one + a2 * u2) * Pu * inv_D * inv_u2;
     dy[1] = U;
     dy[2] = -s * w;

@@ -1,5 +1,6 @@
 #pragma once
-// Many camera rays of one scene at once: four per vector in lanes for the
+// Many camera rays of one scene at once: one per vector lane (four or eight,
+// geodesic/lanes.hpp) for the
 // Kerr BL–Mino path (geodesic/kerr_mino_lanes.hpp) and the dihole
 // (spacetime/dihole_lanes.hpp), one by one otherwise (flat space, Kerr with
 // spheres).  What the renderer and the bench call for a row's samples.
@@ -19,7 +20,7 @@ namespace lc {
 
 namespace detail {
 
-// Integrates the rays of `dirs` four at a time: each lane has its own ray
+// Integrates the rays of `dirs` lane_count at a time: each lane has its own ray
 // (its MinoRay visitor), step size and controller, and the same stopping
 // rules as trace_kerr_mino; a lane whose ray ends takes the next one.
 // Assumes sc takes the BL–Mino path.  Results agree with trace_sample to
@@ -92,7 +93,7 @@ inline void trace_mino_lanes(const SceneOf<Kerr>& sc, std::span<const Vec3> dirs
   }
 }
 
-// The general Hamiltonian path four rays at a time (Rhs4: the spacetime's
+// The general Hamiltonian path lane_count rays at a time (Rhs4: the spacetime's
 // right-hand side on lanes), with the stopping rules of trace_null_ray and
 // a HamiltonianRay visitor per lane; each lane has its own step size,
 // controller and tolerances (relaxed in free flight).

@@ -9,7 +9,7 @@ e2e_begin "$@"
 
 use_mpirun  # lib.sh: Open MPI settings for a test
 SHOT="$SRC/tests/data/farm/farm_orbit.lua"
-ARGS=(--supersample 2 --progress 0)
+ARGS=(--supersample 2 --full-supersample --progress 0)  # the full grid: slow enough to be killed mid-job
 
 "$LIGHTCONE" render "$SHOT" --out ref --threads 2 "${ARGS[@]}" 2>ref.log || fail "reference render: $(cat ref.log)"
 
