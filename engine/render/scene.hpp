@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -47,6 +49,30 @@ using Scene = std::variant<SceneOf<Minkowski>, SceneOf<Kerr>, SceneOf<Dihole>>;
 
 namespace detail {
 
+// The metric at one event, for the sphere test's many inner products: just
+// its diagonal where the chart has nothing else (the dihole, flat space),
+// else the whole matrix.
+template <class S>
+struct MetricAt {
+  static constexpr bool diagonal = requires(const S& s, const Vec4& x) { s.diagonal_metric(x); };
+  std::conditional_t<diagonal, Vec4, Mat4> g{};
+
+  MetricAt() = default;
+  MetricAt(const S& st, const Vec4& x) {
+    if constexpr (diagonal)
+      g = st.diagonal_metric(x);
+    else
+      g = st.metric(x);
+  }
+  // g(a, b).
+  double operator()(const Vec4& a, const Vec4& b) const {
+    if constexpr (diagonal)
+      return g[0] * a[0] * b[0] + g[1] * a[1] * b[1] + g[2] * a[2] * b[2] + g[3] * a[3] * b[3];
+    else
+      return contract(g, a, b);
+  }
+};
+
 // Local coordinates (on the sphere frame's spatial legs) of the ray point X,
 // taken on the sphere's simultaneity slice: the root in t of
 // lag(t) = g(X - C(t), u(t)) (local linearisation, DESIGN.md).
@@ -58,15 +84,24 @@ namespace detail {
 // (to 1e-8 in two or three steps near the sphere).  At most four
 // evaluations, as before; far from the sphere, where it may not settle,
 // the value only bounds how far sphere tracing skips.
-// Also returns, in g, the metric at the final C (the caller's distance needs
-// it, and the last check has computed it already).
+// Starts from the coordinate time t_start (X's own, or the answer for a
+// nearby point); also returns, in g, the metric at the final C (the caller's
+// distance needs it, and the last check has computed it already).
 template <class S>
-double sphere_simultaneous_time(const S& st, const Sphere& sphere, const Vec4& X, Vec4& C, Vec4& u, Mat4& g) {
-  constexpr double tolerance = 1e-8;  // in proper time: the centre moves by less than that
-  double t = X[0];
+double sphere_simultaneous_time(const S& st, const Sphere& sphere, const Vec4& X, double t_start, Vec4& C, Vec4& u,
+                                MetricAt<S>& g) {
+  double t = t_start;
   sphere.centre(t, C, u);
-  g = st.metric(C);
-  double lag = contract(g, X - C, u);
+  g = MetricAt<S>(st, C);
+  double lag = g(X - C, u);
+  // To 1e-8 in proper time (the centre moves by less than that) near the
+  // sphere; farther out sphere tracing only needs |xi| to a fraction of the
+  // distance to spare, and lag moves it by at most |lag|: 1% of the
+  // coordinate distance beyond 1.5 R.
+  double dx2 = 0.0;
+  for (int k = 1; k < 4; ++k) dx2 += (X[k] - C[k]) * (X[k] - C[k]);
+  const double R = sphere.spec.radius;
+  const double tolerance = 1e-8 + (dx2 > 2.25 * R * R ? 0.01 * (std::sqrt(dx2) - 1.5 * R) : 0.0);
   double t_prev = t, lag_prev = lag;
   for (int it = 0; it < 6 && std::abs(lag) >= tolerance; ++it) {
     double next = C[0] - lag * u[0];  // Newton: d(lag)/dtau ~ 1, so tau moves by -lag
@@ -78,8 +113,8 @@ double sphere_simultaneous_time(const S& st, const Sphere& sphere, const Vec4& X
     lag_prev = lag;
     t = next;
     sphere.centre(t, C, u);
-    g = st.metric(C);
-    lag = contract(g, X - C, u);
+    g = MetricAt<S>(st, C);
+    lag = g(X - C, u);
   }
   return t;
 }
@@ -88,14 +123,16 @@ double sphere_simultaneous_time(const S& st, const Sphere& sphere, const Vec4& X
 // length of X - C projected orthogonally to u, g(d, d) + g(d, u)^2 / -g(u, u).
 // What the intersection test needs at every sample; the legs (interpolation,
 // metric and Gram–Schmidt) only colour a hit.
+// t_near: where the search starts (NaN: at X's own time); set to the
+// simultaneous time found, so the next point along the ray starts near it.
 template <class S>
-double sphere_distance2(const S& st, const Sphere& sphere, const Vec4& X) {
+double sphere_distance2(const S& st, const Sphere& sphere, const Vec4& X, double& t_near) {
   Vec4 C, u;
-  Mat4 g;
-  sphere_simultaneous_time(st, sphere, X, C, u, g);
+  MetricAt<S> g;
+  t_near = sphere_simultaneous_time(st, sphere, X, std::isnan(t_near) ? X[0] : t_near, C, u, g);
   const Vec4 d = X - C;
-  const double du = contract(g, d, u);
-  return contract(g, d, d) + du * du / -contract(g, u, u);
+  const double du = g(d, u);
+  return g(d, d) + du * du / -g(u, u);
 }
 
 template <class S>
@@ -103,8 +140,8 @@ Vec3 sphere_local(const S& st, const Sphere& sphere, const Vec4& X) {
   // The simultaneous event first; the frame, with its metric and
   // Gram–Schmidt, once there.
   Vec4 C, u;
-  Mat4 g_centre;
-  const double t = sphere_simultaneous_time(st, sphere, X, C, u, g_centre);
+  MetricAt<S> g_centre;
+  const double t = sphere_simultaneous_time(st, sphere, X, X[0], C, u, g_centre);
   const SphereFrame f = sphere.at(t);
   const Mat4 g = st.metric(f.centre);
   const Vec4 d = X - f.centre;
@@ -233,7 +270,10 @@ template <class S>
   // runs on by |dt| per |dx| — deep in a potential well far more than 1.
   const double time_rate = std::abs(b[0] - a[0]) / std::max(chord, 1e-300);
   const double lip = 2.0 * std::sqrt(row) * (1.0 + time_rate);
-  auto F = [&](const RayState& y) { return sphere_distance2(st, sphere, {y[0], y[1], y[2], y[3]}) - R2; };
+  // Samples along one step are close together: each simultaneity search
+  // starts from the last one's answer.
+  double t_near = std::numeric_limits<double>::quiet_NaN();
+  auto F = [&](const RayState& y) { return sphere_distance2(st, sphere, {y[0], y[1], y[2], y[3]}, t_near) - R2; };
   auto lambda_at = [&](double q) { return l0 + q * (l1 - l0); };
   double prev_s = s0, prev_l = lambda_at(s0);
   double prev_f = F(step.at(prev_l));
@@ -267,7 +307,10 @@ template <class S>
     constexpr double g = 0.6180339887498949;
     double c = b - g * (b - a), d = a + g * (b - a);
     double fc = F(step.at(c)), fd = F(step.at(d));
-    for (int it = 0; it < 60 && b - a > 1e-13 * (1.0 + std::abs(b)); ++it) {
+    // To 1e-6 R of coordinate length along the ray: where the closest
+    // approach lies matters only as far as whether F dips below 0 there.
+    const double tol = 1e-6 * R * (l1 - l0) / len;
+    for (int it = 0; it < 60 && std::abs(b - a) > tol; ++it) {
       if (fc <= 0.0 || fd <= 0.0) break;
       if (fc < fd) {
         b = d;

@@ -52,6 +52,11 @@ class Dihole : public CartesianScene {
   bool inside_horizon(const Vec4& x) const { return captured(x); }
 
   Mat4 metric(const Vec4& x) const;
+  // The metric's diagonal (it has nothing else): -U^-2, U^2, U^2, U^2.
+  Vec4 diagonal_metric(const Vec4& x) const {
+    const double U = potential(x), U2 = U * U;
+    return {-1.0 / U2, U2, U2, U2};
+  }
   Mat4 inverse_metric(const Vec4& x) const;
   Mat4Derivs metric_derivatives(const Vec4& x) const;
 

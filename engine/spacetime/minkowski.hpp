@@ -16,6 +16,7 @@ class Minkowski : public CartesianScene {
   bool captured(const Vec4&) const { return false; }
   bool inside_horizon(const Vec4&) const { return false; }
   Mat4 metric(const Vec4&) const { return {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
+  Vec4 diagonal_metric(const Vec4&) const { return {-1, 1, 1, 1}; }
   Mat4 inverse_metric(const Vec4& x) const { return metric(x); }
   Mat4Derivs metric_derivatives(const Vec4&) const { return {}; }
 };
