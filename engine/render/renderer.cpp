@@ -33,13 +33,25 @@ namespace {
 // makes them differ (a vertical one does anyway).
 std::pair<int, int> first_sample(int N, std::size_t i) { return i % 2 == 0 ? std::pair{0, 0} : std::pair{N - 1, N - 1}; }
 
+// A traced sample as adaptive sampling compares it: its hit kind and its
+// colour after the sRGB curve (what a viewer sees), worked out once per
+// sample (the curve's pow was ~4% of a Kerr frame when taken per comparison).
+struct Perceived {
+  HitKind kind = HitKind::sky;
+  std::array<double, 3> srgb{};
+  explicit Perceived(const RaySample& s) : kind(s.kind) {
+    for (int c = 0; c < 3; ++c) srgb[c] = linear_to_srgb(s.color[c]);
+  }
+  Perceived() = default;
+};
+
 // Whether two samples agree closely enough to stand for the pixels and
 // sub-pixels between them: the same hit kind, and every colour channel
-// within adaptive_sample_threshold after the sRGB curve (what a viewer sees).
-bool samples_agree(const RaySample& x, const RaySample& y) {
+// within adaptive_sample_threshold after the sRGB curve.
+bool samples_agree(const Perceived& x, const Perceived& y) {
   if (x.kind != y.kind) return false;
   for (int c = 0; c < 3; ++c)
-    if (std::abs(linear_to_srgb(x.color[c]) - linear_to_srgb(y.color[c])) > adaptive_sample_threshold) return false;
+    if (std::abs(x.srgb[c] - y.srgb[c]) > adaptive_sample_threshold) return false;
   return true;
 }
 
@@ -81,6 +93,7 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
   std::vector<RaySample> traced;
   std::vector<std::size_t> where;   // grid index of each traced sample
   std::vector<RaySample> grid(W * NN);  // sample k = b * N + a of pixel i at i * NN + k
+  std::vector<Perceived> seen(adaptive ? W * NN : 0);  // the same, as samples_agree compares them
   std::vector<char> full(W), next(W);
   std::vector<RaySample> centres;
   for (int j : rows) {
@@ -91,7 +104,10 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
       traced.resize(dirs.size());
       trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
       count(traced);
-      for (std::size_t n = 0; n < where.size(); ++n) grid[where[n]] = traced[n];
+      for (std::size_t n = 0; n < where.size(); ++n) {
+        grid[where[n]] = traced[n];
+        if (adaptive) seen[where[n]] = Perceived(traced[n]);
+      }
     };
     // Every pixel's grid where not adaptive, else its first sample; then
     // the grids of the pixels marked in `next`, in rounds.
@@ -104,7 +120,7 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
         for (std::size_t k = 0; k < NN; ++k) where.push_back(i * NN + k);
     }
     trace_row();
-    auto first_of = [&](std::size_t i) -> const RaySample& { return grid[i * NN + first_index(i)]; };
+    auto first_of = [&](std::size_t i) -> const Perceived& { return seen[i * NN + first_index(i)]; };
     for (std::size_t i = 0; adaptive && i < W; ++i)
       next[i] = (i > 0 && !samples_agree(first_of(i), first_of(i - 1))) ||
                 (i + 1 < W && !samples_agree(first_of(i), first_of(i + 1)));
@@ -122,7 +138,7 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
         if (full[i] != 2) continue;
         full[i] = 1;
         bool flat = true;
-        for (std::size_t k = 0; k < NN && flat; ++k) flat = samples_agree(grid[i * NN + k], first_of(i));
+        for (std::size_t k = 0; k < NN && flat; ++k) flat = samples_agree(seen[i * NN + k], first_of(i));
         if (!flat) {
           if (i > 0) next[i - 1] = 1;
           if (i + 1 < W) next[i + 1] = 1;
