@@ -5,6 +5,7 @@
 // concrete spacetime so the metric inlines into the integrator.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -186,8 +187,11 @@ inline bool sphere_near_step(const Sphere& sphere, const RayStep& step) {
 // let through, if any: the affine parameter of the crossing.  The spacetime
 // tube (the centre's box over the step's time range, grown by 2R and the
 // step's bulge) rejects most such steps before any sampling.
+// t_near carries the last simultaneity answer along the ray (NaN: none yet),
+// so the searches of consecutive steps start close to theirs.
 template <class S>
-[[gnu::noinline]] std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayStep& step) {
+[[gnu::noinline]] std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayStep& step,
+                                                     double& t_near) {
   const double l0 = step.t0, l1 = step.t0 + step.h;
   const RayState& a = step.start();
   const RayState b = step.at(l1);
@@ -272,7 +276,6 @@ template <class S>
   const double lip = 2.0 * std::sqrt(row) * (1.0 + time_rate);
   // Samples along one step are close together: each simultaneity search
   // starts from the last one's answer.
-  double t_near = std::numeric_limits<double>::quiet_NaN();
   auto F = [&](const RayState& y) { return sphere_distance2(st, sphere, {y[0], y[1], y[2], y[3]}, t_near) - R2; };
   auto lambda_at = [&](double q) { return l0 + q * (l1 - l0); };
   double prev_s = s0, prev_l = lambda_at(s0);
@@ -402,7 +405,9 @@ class HamiltonianRay {
     int hit_sphere = -1;
     for (std::size_t k = 0; k < sc_.spheres.size(); ++k) {
       if (!detail::sphere_near_step(sc_.spheres[k], step)) continue;
-      if (auto l = detail::sphere_entry(st, sc_.spheres[k], step); l && *l < best) {
+      double none = std::numeric_limits<double>::quiet_NaN();
+      double& t_near = k < sphere_times_.size() ? sphere_times_[k] : none;
+      if (auto l = detail::sphere_entry(st, sc_.spheres[k], step, t_near); l && *l < best) {
         best = *l;
         hit_sphere = static_cast<int>(k);
       }
@@ -478,6 +483,9 @@ class HamiltonianRay {
   Vec4 p0_;
   RaySample out_;
   int crossings_ = 0;
+  // Per sphere (the first few), the last simultaneity answer along this ray.
+  std::array<double, 4> sphere_times_ = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                                         std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
 };
 
 template <class S, class OnStep>
