@@ -17,7 +17,8 @@ inline constexpr double default_escape_radius = 1000.0;
 // Where the far field is a known monopole (the dihole's isotropic
 // coordinates, flat space; geodesic/weak_field_tail.hpp), rays escape
 // earlier: beyond the objects, once the multipoles beyond the monopole
-// (O(M d^2 / r^3) for the dihole) bend light by less than this, in radians.
+// (the dihole's dipole |m1 - m2| d / r^2, or for equal holes its quadrupole
+// M d^2 / r^3) bend light by less than this, in radians.
 // A pixel of the paper's dihole shots spans ~2e-4 rad.
 inline constexpr double far_field_bending = 1e-6;
 

@@ -17,7 +17,8 @@ namespace lc {
 // in coordinates where light obeys dt = n(r) dl with a flat dl and the
 // isotropic index n = (1 + M/r)^2: exact for the Majumdar–Papapetrou
 // monopole (extreme Reissner–Nordström in isotropic coordinates), whose
-// multipoles beyond it bend by O(M d^2 / r^3) more.
+// multipoles beyond it bend by more: O(|m1 - m2| d / r^2) for unequal
+// holes, O(M d^2 / r^3) for equal ones.
 //
 // Method: Bouguer's invariant b = n r sin(psi) holds along the ray
 // (Born & Wolf, Principles of Optics, sec. 3.2.2), and the polar angle it

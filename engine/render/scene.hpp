@@ -84,40 +84,51 @@ struct MetricAt {
 // moves tau by -lag: exact in flat space.  That slope ignores the metric's
 // change and the sphere's acceleration, ~20% off near the dihole's holes,
 // so from the second step on the secant slope takes over (superlinear).
-// To 1e-8 in proper time near the sphere, at most six steps; beyond 1.5 R
-// it stops once the centre is known to 1% of the room to spare, all sphere
-// tracing needs.  (Newton with the exact slope, from the metric's rate and
+// To 1e-8 in proper time near the sphere in at most six steps, from the
+// given start and, if that does not settle, again from X's own time; beyond
+// 1.5 R it stops once the centre is known to 1% of the room to spare, all
+// sphere tracing needs.  (Newton with the exact slope, from the metric's rate and
 // du/dt, converged in fewer steps but cost 8% more per frame.)
 template <class S>
 double sphere_simultaneous_time(const S& st, const Sphere& sphere, const Vec4& X, double t_start, Vec4& C, Vec4& u,
                                 MetricAt<S>& g) {
-  double t = t_start;
-  sphere.centre(t, C, u);
-  g = MetricAt<S>(st, C);
-  double lag = g(X - C, u);
-  // To 1e-8 in proper time (the centre moves by less than that) near the
-  // sphere; farther out sphere tracing only needs |xi| to a fraction of the
-  // distance to spare, and lag moves it by at most |lag|: 1% of the
-  // coordinate distance beyond 1.5 R.
-  double dx2 = 0.0;
-  for (int k = 1; k < 4; ++k) dx2 += (X[k] - C[k]) * (X[k] - C[k]);
   const double R = sphere.spec.radius;
-  const double tolerance = 1e-8 + (dx2 > 2.25 * R * R ? 0.01 * (std::sqrt(dx2) - 1.5 * R) : 0.0);
-  double t_prev = t, lag_prev = lag;
-  for (int it = 0; it < 6 && std::abs(lag) >= tolerance; ++it) {
-    double next = C[0] - lag * u[0];  // Newton: d(lag)/dtau ~ 1, so tau moves by -lag
-    if (it > 0 && lag != lag_prev) {
-      const double secant = t - lag * (t - t_prev) / (lag - lag_prev);
-      if (std::isfinite(secant)) next = secant;
-    }
-    t_prev = t;
-    lag_prev = lag;
-    t = next;
+  double t = t_start;
+  for (int attempt = 0;; ++attempt) {
     sphere.centre(t, C, u);
     g = MetricAt<S>(st, C);
-    lag = g(X - C, u);
+    double lag = g(X - C, u);
+    // To 1e-8 in proper time (the centre moves by less than that) near the
+    // sphere; farther out sphere tracing only needs |xi| to a fraction of
+    // the distance to spare, and lag moves it by at most |lag|: 1% of the
+    // coordinate distance beyond 1.5 R (judged where the search starts).
+    double dx2 = 0.0;
+    for (int k = 1; k < 4; ++k) dx2 += (X[k] - C[k]) * (X[k] - C[k]);
+    const double tolerance = 1e-8 + (dx2 > 2.25 * R * R ? 0.01 * (std::sqrt(dx2) - 1.5 * R) : 0.0);
+    double t_prev = t, lag_prev = lag;
+    for (int it = 0; it < 6 && std::abs(lag) >= tolerance; ++it) {
+      double next = C[0] - lag * u[0];  // Newton: d(lag)/dtau ~ 1, so tau moves by -lag
+      if (it > 0 && lag != lag_prev) {
+        const double secant = t - lag * (t - t_prev) / (lag - lag_prev);
+        if (std::isfinite(secant)) next = secant;
+      }
+      t_prev = t;
+      lag_prev = lag;
+      t = next;
+      sphere.centre(t, C, u);
+      g = MetricAt<S>(st, C);
+      lag = g(X - C, u);
+    }
+    if (std::abs(lag) < 1e-8 || attempt == 1 || t_start == X[0]) return t;
+    // Not settled to the near-sphere tolerance: a warm start far from this
+    // point's root can leave six steps short, or the far-field tolerance
+    // judged at a stale start may have stopped it short near the sphere.
+    // Where it matters, within 2 R, search again from X's own time.
+    dx2 = 0.0;
+    for (int k = 1; k < 4; ++k) dx2 += (X[k] - C[k]) * (X[k] - C[k]);
+    if (dx2 >= 4.0 * R * R) return t;
+    t = X[0];
   }
-  return t;
 }
 
 // |xi|^2 of sphere_local without the frame's spatial legs: the squared

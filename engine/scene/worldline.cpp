@@ -212,7 +212,8 @@ double Worldline::proper_time_at(double t) const {
 std::size_t Worldline::time_index(double t) const {
   const double f = (t - start_time()) / dt_;
   if (!(f > 0.0)) return 0;
-  return std::min(by_time_.size() - 2, static_cast<std::size_t>(f));
+  const double last = static_cast<double>(by_time_.size() - 2);
+  return f >= last ? by_time_.size() - 2 : static_cast<std::size_t>(f);  // clamped before the cast (t may be huge)
 }
 
 void Worldline::centre_at_coordinate_time(double t, Vec4& x, Vec4& u) const {

@@ -7,6 +7,7 @@
 
 #include "geodesic/null_ray.hpp"
 #include "geodesic/weak_field_tail.hpp"
+#include "render/scene_builder.hpp"
 #include "spacetime/dihole.hpp"
 
 namespace lc {
@@ -58,6 +59,27 @@ TEST(WeakFieldTail, NoMassOrARadialRayGoesStraight) {
   const Vec3 radial = {3.0 / 13, 4.0 / 13, 12.0 / 13};
   const Vec3 out = isotropic_escape_direction(x, radial, 2.0);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(out[k], radial[k], 1e-15);
+}
+
+TEST(WeakFieldTail, RaysEscapeWhereTheRestIsKnown) {
+  // The scene builder stops dihole rays where what the tail leaves out
+  // bends light by < 1e-6 rad: the quadrupole M d^2 / r^3 of equal holes
+  // (the paper's: ~93 M), the dipole |m1 - m2| d / r^2 of unequal ones
+  // (0.6 and 0.2: ~632 M), never beyond 1000 M; the bench's reference keeps 1000 M.
+  auto escape_radius = [](double m1, double m2, EscapeRule rule) {
+    FrameScene fs;
+    fs.spacetime = Dihole(m1, m2, 1.0);
+    fs.observer.position = {0, 0, 80, 0};
+    ShotResources res;
+    RayOptions o;
+    o.escape = rule;
+    const Scene sc = build_scene(fs, 4, 4, res, o);
+    return std::get<SceneOf<Dihole>>(sc).rays.escape_radius;
+  };
+  EXPECT_NEAR(escape_radius(0.4, 0.4, EscapeRule::far_field), std::cbrt(0.8e6), 1e-9);
+  EXPECT_NEAR(escape_radius(0.6, 0.2, EscapeRule::far_field), std::sqrt(0.4e6), 1e-9);
+  EXPECT_EQ(escape_radius(1.5, 0.0, EscapeRule::far_field), 1000.0);  // sqrt(1.5e6) would be 1225
+  EXPECT_EQ(escape_radius(0.4, 0.4, EscapeRule::fixed), 1000.0);
 }
 
 }  // namespace
