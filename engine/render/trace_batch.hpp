@@ -20,6 +20,18 @@ namespace lc {
 
 namespace detail {
 
+// Ends lane i's ray: its state and parameter from the integrator unless the
+// visitor set them (a hit), then its sample into `out`.  For both lane
+// drivers below.
+template <class Lane, class Integrator>
+void finish_lane(Lane& l, const Integrator& dp, int i, bool set_end, std::span<RaySample> out) {
+  if (set_end) {
+    l.res.y = dp.y(i);
+    l.res.lambda = dp.t(i);
+  }
+  out[l.index] = l.ray->finish(l.res);
+}
+
 // Integrates the rays of `dirs` lane_count at a time: each lane has its own ray
 // (its MinoRay visitor), step size and controller, and the same stopping
 // rules as trace_kerr_mino; a lane whose ray ends takes the next one.
@@ -60,12 +72,7 @@ inline void trace_mino_lanes(const SceneOf<Kerr>& sc, std::span<const Vec3> dirs
     l.u_capture = cr > 0.0 ? 1.0 / cr : 1e300;
   };
   auto end_ray = [&](int i, bool set_end) {
-    Lane& l = lanes[i];
-    if (set_end) {
-      l.res.y = dp.y(i);
-      l.res.lambda = dp.t(i);
-    }
-    out[l.index] = l.ray->finish(l.res);
+    finish_lane(lanes[i], dp, i, set_end, out);
     load(i);
   };
   for (int i = 0; i < lane_count; ++i) load(i);
@@ -140,12 +147,7 @@ void trace_hamiltonian_lanes(const SceneOf<S>& sc, const Rhs4& rhs, std::span<co
     l.relaxed = false;
   };
   auto end_ray = [&](int i, bool set_end) {
-    Lane& l = lanes[i];
-    if (set_end) {
-      l.res.y = dp.y(i);
-      l.res.lambda = dp.t(i);
-    }
-    out[l.index] = l.ray->finish(l.res);
+    finish_lane(lanes[i], dp, i, set_end, out);
     load(i);
   };
   for (int i = 0; i < lane_count; ++i) load(i);
