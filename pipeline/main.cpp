@@ -40,6 +40,8 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--supersample", render.supersample, "N x N samples per pixel instead of the shot's");
   render_cmd->add_flag("--full-supersample", render.full_supersample,
                        "Trace every sample of the N x N grid (default: one per pixel, the rest only where it differs from a row neighbour's)");
+  render_cmd->add_flag("--no-reuse", render.no_reuse,
+                       "Trace every sample of every frame (default: frames that differ only in time reuse the rays that cannot change)");
   render_cmd->add_flag("--layers", render.layers, "Add data layers (hit.kind, hit.r, hit.phi, hit.t, hit.order) to the EXR");
   render_cmd->add_option("--threads", render.threads, "Render threads per process (default: every core; under mpirun the node's share)")
       ->check(CLI::Range(1, 1024));

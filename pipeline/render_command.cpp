@@ -183,7 +183,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
       // Enough scenes for every frame that can be open at once.
       farm::SceneCache scenes(*job.shot, job.rs.width, job.rs.height,
                               farm::open_frames_for(threads, job.layout.stripes()) + 2);
-      farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout);
+      farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout, !cmd.no_reuse);
       farm::run_local_farm(queue, run, renderer, threads, progress);
     }
     run.close();
@@ -198,9 +198,10 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     throw std::runtime_error(*error);
   }
   const double s = progress.elapsed();
-  fmt::print(stderr, "render: done: {} frames in {:.2f} s, {} rays, {:.0f} rays/s, {:.0f} rays per core-second ({} core{}){}\n",
+  fmt::print(stderr, "render: done: {} frames in {:.2f} s, {} rays, {:.0f} rays/s, {:.0f} rays per core-second ({} core{}){}{}\n",
              p.frames_stored, s, p.stats.rays, p.stats.rays / s, p.stats.rays / s / std::max(1, cores), cores,
              cores == 1 ? "" : "s",
+             p.stats.reused ? fmt::format("; {} samples reused from earlier frames", p.stats.reused) : "",
              plan.done.empty() ? "" : fmt::format("; {} more were finished before", plan.done.size()));
   if (mpi)
     fmt::print(stderr, "render: the master used {:.2f} s of CPU in {:.2f} s ({:.0f}% of one core) while {} worker threads rendered\n",
@@ -227,7 +228,7 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
     // Enough scenes for the frames the sets in hand (two per thread) span.
     scenes = std::make_unique<farm::SceneCache>(*job.shot, job.rs.width, job.rs.height,
                                                 farm::open_frames_for(threads, job.layout.stripes()) + 2);
-    renderer = std::make_unique<farm::SceneStripeRenderer>(*scenes, job.rs, job.layout);
+    renderer = std::make_unique<farm::SceneStripeRenderer>(*scenes, job.rs, job.layout, !cmd.no_reuse);
   }
   farm::run_mpi_worker(mpi, renderer.get(), job.rs, job.layout, threads, job.digest, setup_error);
   return 0;

@@ -22,6 +22,7 @@ struct RenderCommand {
   std::optional<int> supersample;
   bool layers = false;
   bool full_supersample = false;      // every sample of the N x N grid, not adaptively
+  bool no_reuse = false;              // trace every sample, none kept from earlier frames of a still scene
   int threads = 0;                    // 0: every core (under MPI: the node's share)
   std::optional<int> stripes;         // working sets per frame (default: farm::default_stripes)
   int preview = 0;                    // k >= 2: every k-th stripe of every frame first

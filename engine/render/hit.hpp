@@ -24,6 +24,9 @@ struct RaySample {
   // parameter; the Kerr fast path fills them only when a path is recorded.
   std::array<double, 8> end{};
   double lambda_end = 0.0;
+  // The ray came near the path of a moving object: what it sees depends on
+  // the frame's time, so no other frame may reuse it (render/sample_memo.hpp).
+  bool depends_on_time = false;
 };
 
 }  // namespace lc

@@ -2,6 +2,7 @@
 
 #include "core/constants.hpp"
 #include "image/srgb.hpp"
+#include "render/sample_memo.hpp"
 #include "render/trace_batch.hpp"
 
 #include <algorithm>
@@ -57,7 +58,7 @@ bool samples_agree(const Perceived& x, const Perceived& y) {
 
 template <class S>
 RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::span<const int> rows,
-                           FrameImage& img) {
+                           FrameImage& img, SampleMemo* memo) {
   // Inputs: a scene, the settings and the rows to render; output: those
   // rows of img (and layers), and the rays and steps spent.  A row's
   // samples are traced in batches (trace_batch: several rays at once where
@@ -67,7 +68,8 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
   // sample disagrees with a row neighbour's; then, in rounds, of each
   // neighbour of a pixel whose grid turned out not to be flat (a feature
   // found inside one pixel may reach into the next without touching its
-  // first sample).
+  // first sample).  With a memo, samples kept from an earlier frame of the
+  // same still_key stand in for traced ones.
   RenderStats stats;
   const int N = rs.supersample;
   const std::size_t NN = static_cast<std::size_t>(N) * N;
@@ -91,23 +93,38 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
   };
   std::vector<Vec3> dirs;
   std::vector<RaySample> traced;
-  std::vector<std::size_t> where;   // grid index of each traced sample
+  std::vector<std::size_t> where;   // grid index of each sample wanted
+  std::vector<std::size_t> tracing;  // of those, the ones not kept in the memo
   std::vector<RaySample> grid(W * NN);  // sample k = b * N + a of pixel i at i * NN + k
   std::vector<Perceived> seen(adaptive ? W * NN : 0);  // the same, as samples_agree compares them
   std::vector<char> full(W), next(W);
-  std::vector<RaySample> centres;
+  std::vector<RaySample> centres(rs.layers ? W : 0);  // pixel i's centre ray, where the layers need one
   for (int j : rows) {
-    // Traces the samples at grid indices `where` into the grid.
+    std::optional<SampleMemo::Row> kept;
+    if (memo) kept = memo->row(j, sc.still_key);
+    // Fills the samples at grid indices `where` into the grid: kept ones
+    // from the memo, the others traced (and kept for later frames).
     auto trace_row = [&]() {
       dirs.clear();
-      for (const std::size_t g : where) dirs.push_back(dir(g / NN, j, g % NN));
+      tracing.clear();
+      for (const std::size_t g : where) {
+        if (kept && kept->has(g)) {
+          grid[g] = kept->get(g);
+          ++stats.reused;
+        } else {
+          tracing.push_back(g);
+          dirs.push_back(dir(g / NN, j, g % NN));
+        }
+      }
       traced.resize(dirs.size());
       trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
       count(traced);
-      for (std::size_t n = 0; n < where.size(); ++n) {
-        grid[where[n]] = traced[n];
-        if (adaptive) seen[where[n]] = Perceived(traced[n]);
+      for (std::size_t n = 0; n < tracing.size(); ++n) {
+        grid[tracing[n]] = traced[n];
+        if (kept) kept->put(tracing[n], traced[n]);
       }
+      if (adaptive)
+        for (const std::size_t g : where) seen[g] = Perceived(grid[g]);
     };
     // Every pixel's grid where not adaptive, else its first sample; then
     // the grids of the pixels marked in `next`, in rounds.
@@ -147,17 +164,32 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
     }
 
     // The layers take the pixel-centre sample; trace it where no sample sits
-    // there (even N) or it was not traced (an unrefined pixel).
+    // there (even N) or it was not traced (an unrefined pixel).  In the
+    // memo it is sample W N N + i.
+    auto has_centre_sample = [&](std::size_t i) {
+      return centre >= 0 && (full[i] || first_index(i) == static_cast<std::size_t>(centre));
+    };
     dirs.clear();
+    tracing.clear();
     if (rs.layers)
-      for (std::size_t i = 0; i < W; ++i)
-        if (!(centre >= 0 && (full[i] || first_index(i) == static_cast<std::size_t>(centre))))
+      for (std::size_t i = 0; i < W; ++i) {
+        if (has_centre_sample(i)) continue;
+        if (kept && kept->has(W * NN + i)) {
+          centres[i] = kept->get(W * NN + i);
+          ++stats.reused;
+        } else {
+          tracing.push_back(i);
           dirs.push_back(sc.camera.direction(static_cast<double>(i) + 0.5, j + 0.5));
-    centres.resize(dirs.size());
-    trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(centres));
-    count(centres);
+        }
+      }
+    traced.resize(dirs.size());
+    trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
+    count(traced);
+    for (std::size_t n = 0; n < tracing.size(); ++n) {
+      centres[tracing[n]] = traced[n];
+      if (kept) kept->put(W * NN + tracing[n], traced[n]);
+    }
 
-    std::size_t next_centre = 0;
     for (std::size_t i = 0; i < W; ++i) {
       double acc[3] = {0, 0, 0};
       int n = 0;
@@ -169,11 +201,8 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
       const std::size_t p = static_cast<std::size_t>(j) * W + i;
       for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = static_cast<float>(acc[c] / n);
       if (rs.layers) {
-        const RaySample* centre_sample = nullptr;
-        if (centre >= 0 && (full[i] || first_index(i) == static_cast<std::size_t>(centre)))
-          centre_sample = &grid[i * NN + static_cast<std::size_t>(centre)];
-        else
-          centre_sample = &centres[next_centre++];
+        const RaySample* centre_sample =
+            has_centre_sample(i) ? &grid[i * NN + static_cast<std::size_t>(centre)] : &centres[i];
         img.layers[0].values[p] = static_cast<float>(static_cast<int>(centre_sample->kind));
         img.layers[1].values[p] = static_cast<float>(centre_sample->r);
         img.layers[2].values[p] = static_cast<float>(centre_sample->phi);
@@ -187,8 +216,9 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
 
 }  // namespace
 
-RenderStats render_rows(const Scene& scene, const RenderSettings& rs, std::span<const int> rows, FrameImage& image) {
-  return std::visit([&](const auto& sc) { return render_rows_of(sc, rs, rows, image); }, scene);
+RenderStats render_rows(const Scene& scene, const RenderSettings& rs, std::span<const int> rows, FrameImage& image,
+                        SampleMemo* memo) {
+  return std::visit([&](const auto& sc) { return render_rows_of(sc, rs, rows, image, memo); }, scene);
 }
 
 FrameImage render_frame(const Scene& scene, const RenderSettings& rs, int threads, RenderStats* stats,

@@ -24,14 +24,18 @@ struct RenderSettings {
 };
 
 struct RenderStats {
-  long rays = 0, steps = 0, gave_up = 0;
+  long rays = 0, steps = 0, gave_up = 0;  // rays traced
+  long reused = 0;                        // samples taken from a SampleMemo instead
   RenderStats& operator+=(const RenderStats& o) {
     rays += o.rays;
     steps += o.steps;
     gave_up += o.gave_up;
+    reused += o.reused;
     return *this;
   }
 };
+
+class SampleMemo;
 
 // The names of the data layers, in the order they are stored.
 inline constexpr std::array<const char*, 5> layer_names = {"hit.kind", "hit.r", "hit.phi", "hit.t", "hit.order"};
@@ -40,8 +44,11 @@ inline constexpr std::array<const char*, 5> layer_names = {"hit.kind", "hit.r", 
 FrameImage make_frame(const RenderSettings& rs);
 
 // Renders the listed rows into `image` (made by make_frame).  Thread-safe for
-// disjoint rows.
-RenderStats render_rows(const Scene& scene, const RenderSettings& rs, std::span<const int> rows, FrameImage& image);
+// disjoint rows.  With a memo (made for the same settings), samples kept
+// from earlier frames of the same still_key are taken instead of traced,
+// and this frame's timeless ones kept: the image is the same either way.
+RenderStats render_rows(const Scene& scene, const RenderSettings& rs, std::span<const int> rows, FrameImage& image,
+                        SampleMemo* memo = nullptr);
 
 // Renders a whole frame with `threads` threads (0: every core), rows handed
 // out dynamically.  `rows_done`, when given, counts finished rows (progress).

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -39,6 +40,10 @@ struct SceneOf {
   RayOptions rays;
   Vec4 observer_scene{};  // the observer's event in scene coordinates, exact where the shot gave it (on the axis)
   Mat4 observer_jacobian{};  // Kerr: trace_jacobian(observer_scene), once per frame for the BL–Mino path
+  // still_key() of the frame's scene where the spacetime is stationary, else
+  // empty: frames with equal non-empty keys may share the samples of rays
+  // that stay clear of moving objects (render/sample_memo.hpp).
+  std::string still_key{};
 };
 
 // For trace_sample: a path recorder that records nothing (rendering).
@@ -166,12 +171,19 @@ inline bool boxes_overlap(const Vec3& alo, const Vec3& ahi, const Vec3& blo, con
   return true;
 }
 
-// The cheap first half of sphere_entry, for every step of every ray: true
-// when the step may come near the sphere.  First against the box the centre
-// never leaves, grown by 2R and half the chord (a step strays from its chord
-// by less than that), then against the centre's box over the step's time
-// range (a table lookup); neither evaluates the step's dense output inside.
-inline bool sphere_near_step(const Sphere& sphere, const RayStep& step) {
+// How near a step may come to a sphere, by sphere_near_step's boxes.
+enum class SphereReach {
+  never,    // clear of everywhere the centre ever is: the sphere's motion cannot matter
+  not_now,  // clear of where the centre is over the step's time range
+  maybe,    // sphere_entry must look
+};
+
+// The cheap first half of sphere_entry, for every step of every ray.  First
+// against the box the centre never leaves, grown by 2R and half the chord
+// (a step strays from its chord by less than that), then against the
+// centre's box over the step's time range (a table lookup); neither
+// evaluates the step's dense output inside.
+[[gnu::always_inline]] inline SphereReach sphere_near_step(const Sphere& sphere, const RayStep& step) {
   const RayState& a = step.start();
   const double l1 = step.t0 + step.h;
   Vec3 rlo, rhi, clo, chi;
@@ -185,13 +197,70 @@ inline bool sphere_near_step(const Sphere& sphere, const RayStep& step) {
     clo[k] = sphere.life_lo[k] - far;
     chi[k] = sphere.life_hi[k] + far;
   }
-  if (!boxes_overlap(rlo, rhi, clo, chi)) return false;
+  if (!boxes_overlap(rlo, rhi, clo, chi)) return SphereReach::never;
   sphere.bounds(a[0], b[0], clo, chi);
   for (int k = 0; k < 3; ++k) {
     clo[k] -= far;
     chi[k] += far;
   }
-  return boxes_overlap(rlo, rhi, clo, chi);
+  return boxes_overlap(rlo, rhi, clo, chi) ? SphereReach::maybe : SphereReach::not_now;
+}
+
+// Where a step goes, for the sphere tests that sphere_near_step's coarse
+// boxes let through: the box of its ends and of its points at 1/4, 1/2 and
+// 3/4, and how far it may stray beyond: twice the largest distance of those
+// points from the chord (a step is a smooth, nearly polynomial arc).  Long
+// straight steps (far from the holes) then keep a tight box instead of one
+// grown by a fraction of their length.
+struct StepHull {
+  RayState end{};
+  Vec3 lo{}, hi{};
+  double chord2 = 0.0;   // squared chord
+  double quarter = 0.0;  // the longest chord of a quarter of the step
+  double margin = 0.0;   // how far beyond the box the step may stray
+};
+
+inline StepHull step_hull(const RayStep& step) {
+  StepHull h;
+  const double l0 = step.t0, l1 = step.t0 + step.h;
+  const RayState& a = step.start();
+  const RayState& b = h.end = step.at(l1);
+  for (int k = 0; k < 3; ++k) {
+    h.chord2 += (b[k + 1] - a[k + 1]) * (b[k + 1] - a[k + 1]);
+    h.lo[k] = std::min(a[k + 1], b[k + 1]);
+    h.hi[k] = std::max(a[k + 1], b[k + 1]);
+  }
+  double bulge = 0.0;
+  RayState prev = a;
+  for (const double q : {0.25, 0.5, 0.75, 1.0}) {
+    const RayState m = q == 1.0 ? b : step.at(l0 + q * (l1 - l0));
+    double d2 = 0.0, seg2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      h.lo[k] = std::min(h.lo[k], m[k + 1]);
+      h.hi[k] = std::max(h.hi[k], m[k + 1]);
+      const double off = m[k + 1] - (a[k + 1] + q * (b[k + 1] - a[k + 1]));
+      d2 += off * off;
+      seg2 += (m[k + 1] - prev[k + 1]) * (m[k + 1] - prev[k + 1]);
+    }
+    bulge = std::max(bulge, std::sqrt(d2));
+    h.quarter = std::max(h.quarter, std::sqrt(seg2));
+    prev = m;
+  }
+  h.margin = 2.0 * bulge + 1e-9 * std::sqrt(h.chord2);
+  return h;
+}
+
+// Whether the step (its hull) comes within 2R of the box [lo, hi] of
+// centres: the test both for "may meet the sphere now" (the centre's box
+// over the step's time range) and for "may depend on the sphere's motion"
+// (the box it never leaves).
+inline bool hull_near_centres(const StepHull& h, const Sphere& sphere, Vec3 lo, Vec3 hi) {
+  const double grow = 2.0 * sphere.spec.radius + h.margin;
+  for (int k = 0; k < 3; ++k) {
+    lo[k] -= grow;
+    hi[k] += grow;
+  }
+  return boxes_overlap(h.lo, h.hi, lo, hi);
 }
 
 // First entry of the ray into the sphere within a step that sphere_near_step
@@ -202,46 +271,19 @@ inline bool sphere_near_step(const Sphere& sphere, const RayStep& step) {
 // so the searches of consecutive steps start close to theirs.
 template <class S>
 [[gnu::noinline]] std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayStep& step,
-                                                     double& t_near) {
+                                                     const StepHull& hull, double& t_near) {
   const double l0 = step.t0, l1 = step.t0 + step.h;
   const RayState& a = step.start();
-  const RayState b = step.at(l1);
-  double chord2 = 0.0;
-  for (int k = 0; k < 3; ++k) chord2 += (b[k + 1] - a[k + 1]) * (b[k + 1] - a[k + 1]);
-  Vec3 rlo, rhi, clo, chi;
-  for (int k = 0; k < 3; ++k) {
-    rlo[k] = std::min(a[k + 1], b[k + 1]);
-    rhi[k] = std::max(a[k + 1], b[k + 1]);
-  }
-  // How far the step strays from its chord: the largest distance of the
-  // points at 1/4, 1/2 and 3/4 from the chord's (a step is a smooth,
-  // nearly polynomial arc), doubled for safety.  Long straight steps (far
-  // from the holes) then keep a tight tube instead of one grown by a
-  // fraction of their length.
-  double bulge = 0.0, quarter = 0.0;  // quarter: the longest chord of a quarter of the step
-  RayState prev = a;
-  for (const double q : {0.25, 0.5, 0.75, 1.0}) {
-    const RayState m = q == 1.0 ? b : step.at(l0 + q * (l1 - l0));
-    double d2 = 0.0, seg2 = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      rlo[k] = std::min(rlo[k], m[k + 1]);
-      rhi[k] = std::max(rhi[k], m[k + 1]);
-      const double off = m[k + 1] - (a[k + 1] + q * (b[k + 1] - a[k + 1]));
-      d2 += off * off;
-      seg2 += (m[k + 1] - prev[k + 1]) * (m[k + 1] - prev[k + 1]);
-    }
-    bulge = std::max(bulge, std::sqrt(d2));
-    quarter = std::max(quarter, std::sqrt(seg2));
-    prev = m;
-  }
-  const double margin = 2.0 * bulge + 1e-9 * std::sqrt(chord2);
+  const RayState& b = hull.end;
+  const double chord2 = hull.chord2, quarter = hull.quarter, margin = hull.margin;
+  Vec3 clo, chi;
   sphere.bounds(a[0], b[0], clo, chi);
+  if (!hull_near_centres(hull, sphere, clo, chi)) return std::nullopt;
   const double grow = 2.0 * sphere.spec.radius + margin;
   for (int k = 0; k < 3; ++k) {
     clo[k] -= grow;
     chi[k] += grow;
   }
-  if (!boxes_overlap(rlo, rhi, clo, chi)) return std::nullopt;
 
   // Clip the step to the tube with the straight chord (widened each side by
   // the margin, for the bulge), then sample F = |xi|^2 - R^2 at spacing R/4
@@ -414,11 +456,21 @@ class HamiltonianRay {
     const double l1 = step.t0 + step.h;
     double best = l1 + 1.0;
     int hit_sphere = -1;
+    std::optional<StepHull> hull;  // for the spheres the coarse boxes let through
     for (std::size_t k = 0; k < sc_.spheres.size(); ++k) {
-      if (!detail::sphere_near_step(sc_.spheres[k], step)) continue;
+      const Sphere& sphere = sc_.spheres[k];
+      const SphereReach reach = detail::sphere_near_step(sphere, step);
+      if (reach == SphereReach::never) continue;
+      const bool timeless_yet = sphere.worldline && !out_.depends_on_time;
+      if (reach == SphereReach::not_now && !timeless_yet) continue;
+      if (!hull) hull = step_hull(step);
+      // Near a moving sphere's path what the ray sees depends on where the
+      // sphere is at the frame's time: no other frame may reuse it.
+      if (timeless_yet && hull_near_centres(*hull, sphere, sphere.life_lo, sphere.life_hi)) out_.depends_on_time = true;
+      if (reach == SphereReach::not_now) continue;
       double none = std::numeric_limits<double>::quiet_NaN();
       double& t_near = k < sphere_times_.size() ? sphere_times_[k] : none;
-      if (auto l = detail::sphere_entry(st, sc_.spheres[k], step, t_near); l && *l < best) {
+      if (auto l = detail::sphere_entry(st, sphere, step, *hull, t_near); l && *l < best) {
         best = *l;
         hit_sphere = static_cast<int>(k);
       }

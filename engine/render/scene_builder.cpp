@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "scene/still_key.hpp"
+
 namespace lc {
 
 ShotResources::ShotResources(std::vector<std::filesystem::path> asset_dirs) : asset_dirs_(std::move(asset_dirs)) {}
@@ -169,6 +171,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
     if (rays.escape == EscapeRule::far_field)
       sc.rays.escape_radius = std::min(sc.rays.escape_radius, far_field_escape_radius(sc));
   if constexpr (std::is_same_v<S, Kerr>) sc.observer_jacobian = st.trace_jacobian(sc.observer_scene);
+  if constexpr (S::stationary) sc.still_key = still_key(fs);
   return sc;
 }
 

@@ -15,6 +15,7 @@ namespace lc {
 
 class Dihole : public CartesianScene {
  public:
+  static constexpr bool stationary = true;  // static holes; see Kerr::stationary
   // Throws std::invalid_argument for negative or non-finite masses, d <= 0.
   Dihole(double m1, double m2, double d);
 

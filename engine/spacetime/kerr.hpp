@@ -31,6 +31,9 @@ enum class KerrSchildSense { ingoing, outgoing };
 
 class Kerr {
  public:
+  // The metric does not depend on t (in either chart): frames that differ
+  // only by the observer's time may share rays (scene/still_key.hpp).
+  static constexpr bool stationary = true;
   // Throws std::invalid_argument when M < 0 or |a| > M or either is not finite.
   Kerr(double mass, double spin, KerrSchildSense sense = KerrSchildSense::outgoing);
 

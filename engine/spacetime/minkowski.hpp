@@ -8,6 +8,7 @@ namespace lc {
 
 class Minkowski : public CartesianScene {
  public:
+  static constexpr bool stationary = true;  // see Kerr::stationary
   void hamiltonian_rhs(const Vec4&, const Vec4& p, Vec4& dx, Vec4& dp) const {
     dx = {-p[0], p[1], p[2], p[3]};
     dp = {0.0, 0.0, 0.0, 0.0};

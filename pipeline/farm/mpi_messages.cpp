@@ -29,7 +29,7 @@ T get(std::span<const char> b, std::size_t& at) {
 
 struct ResultHeader {
   std::int32_t frame, stripe, pass, pad;
-  std::int64_t rays, steps, gave_up;
+  std::int64_t rays, steps, gave_up, reused;
 };
 
 }  // namespace
@@ -91,7 +91,7 @@ Bytes pack_result(const WorkItem& item, const RenderStats& stats, const FrameIma
   Bytes b;
   b.reserve(sizeof(ResultHeader) + floats * sizeof(float));
   put(b, ResultHeader{item.frame, item.stripe, static_cast<std::int32_t>(item.pass), 0, stats.rays, stats.steps,
-                      stats.gave_up});
+                      stats.gave_up, stats.reused});
   auto append = [&](const float* p, std::size_t n) {
     const char* c = reinterpret_cast<const char*>(p);
     b.insert(b.end(), c, c + n * sizeof(float));
@@ -125,7 +125,7 @@ RenderStats unpack_result(std::span<const char> b, FrameImage& canvas, const std
     take(canvas.rgb.data() + 3 * w * j, 3 * w);
     for (auto& layer : canvas.layers) take(layer.values.data() + w * j, w);
   }
-  return {h.rays, h.steps, h.gave_up};
+  return {h.rays, h.steps, h.gave_up, h.reused};
 }
 
 }  // namespace lc::farm

@@ -3,8 +3,11 @@
 // canvas.  The real one traces rays through the frame's scene; the farm
 // benchmark's does nothing, to time the farm alone.
 
+#include <memory>
+
 #include "farm/scene_cache.hpp"
 #include "farm/work_queue.hpp"
+#include "render/sample_memo.hpp"
 
 namespace lc::farm {
 
@@ -16,16 +19,19 @@ class StripeRenderer {
   virtual RenderStats render(const WorkItem& item, FrameImage& canvas) = 0;
 };
 
+// With `reuse`, a row's samples that cannot change are kept for the later
+// frames of the same still scene this process renders (SampleMemo).
 class SceneStripeRenderer final : public StripeRenderer {
  public:
-  SceneStripeRenderer(SceneCache& scenes, const RenderSettings& rs, const StripeLayout& layout)
-      : scenes_(scenes), rs_(rs), layout_(layout) {}
+  SceneStripeRenderer(SceneCache& scenes, const RenderSettings& rs, const StripeLayout& layout, bool reuse)
+      : scenes_(scenes), rs_(rs), layout_(layout), memo_(reuse ? std::make_unique<SampleMemo>(rs) : nullptr) {}
   RenderStats render(const WorkItem& item, FrameImage& canvas) override;
 
  private:
   SceneCache& scenes_;
   RenderSettings rs_;
   StripeLayout layout_;
+  std::unique_ptr<SampleMemo> memo_;
 };
 
 // Leaves the rows as they are (zero): a working set that costs nothing.

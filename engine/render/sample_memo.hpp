@@ -1,0 +1,81 @@
+#pragma once
+// Camera-ray samples kept from earlier frames for later ones.  In a
+// stationary spacetime, frames whose scenes differ only by the observer's
+// time (equal SceneOf::still_key) see the same thing along every ray that
+// stays clear of moving objects' paths: the same ray, traced the same way,
+// with its time shifted.  Such samples are kept per row, and a later frame
+// of the same key takes them instead of tracing them again; a sample whose
+// ray came near a moving object (RaySample::depends_on_time) is always
+// traced.  Holds and a static observer watching a moving sphere
+// (docs/performance.md, change 25) cost only the rays that can change.
+//
+// Kept per (row, sample index) for one RenderSettings: sample g of a row is
+// pixel g / (N N)'s grid sample g % (N N), and W N N + i the centre ray of
+// pixel i that the layers take.  Thread-safe: one thread holds a row at a
+// time.
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/hit.hpp"
+#include "render/renderer.hpp"
+
+namespace lc {
+
+class SampleMemo {
+  // What a sample holds that a frame uses (colour, adaptive sampling's hit
+  // kind, the layers' event), in 32 bytes.
+  struct Kept {
+    Color color{};
+    float r = 0.0f, phi = 0.0f, t = 0.0f;
+    std::int32_t order = 0;
+    std::uint8_t kind = 0;  // HitKind
+    bool kept = false;
+  };
+  static_assert(sizeof(Kept) == 32);
+  struct Slot {
+    std::mutex mutex;
+    std::string key;  // still_key of the frame the samples came from
+    std::vector<Kept> samples;
+  };
+
+ public:
+  // For frames rendered with `rs`.
+  explicit SampleMemo(const RenderSettings& rs);
+
+  // One row's samples while a thread renders it.
+  class Row {
+   public:
+    // Whether sample g was kept from an earlier frame.
+    bool has(std::size_t g) const { return slot_->samples[g].kept; }
+    // Kept sample g (has(g)), as the renderer uses it: no steps, no end state.
+    RaySample get(std::size_t g) const;
+    // Keeps traced sample g for later frames, unless it depends on time.
+    void put(std::size_t g, const RaySample& s);
+
+   private:
+    friend class SampleMemo;
+    Row(Slot& slot) : lock_(slot.mutex, std::adopt_lock), slot_(&slot) {}
+    std::unique_lock<std::mutex> lock_;
+    Slot* slot_;
+  };
+
+  // Row j for a frame whose scene has still_key `key`: the samples kept
+  // from frames of the same key (none, if the row last held another key).
+  // nullopt when nothing can be kept (an empty key: a spacetime that is not
+  // stationary) or another thread holds the row (the caller traces all).
+  std::optional<Row> row(int j, const std::string& key);
+
+  // Samples per row: W N N grid samples and W centre rays.
+  std::size_t row_size() const { return row_size_; }
+
+ private:
+  std::size_t row_size_;
+  std::vector<std::unique_ptr<Slot>> rows_;
+};
+
+}  // namespace lc

@@ -1,0 +1,66 @@
+// still_key: frames that differ only by a static observer's time share a
+// key; any other difference, however small, gives another.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene/still_key.hpp"
+
+namespace lc {
+namespace {
+
+FrameScene scene() {
+  FrameScene fs;
+  fs.spacetime = Kerr(1.0, 0.9);
+  fs.observer.position = {10.0, 30.0, 1.2, 0.3};
+  fs.disk = DiskSpec{};
+  SphereSpec sp;
+  sp.position = Vec4{0.0, 12.0, 1.5, 0.0};
+  fs.spheres.push_back(sp);
+  return fs;
+}
+
+TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
+  const std::string key = still_key(scene());
+  FrameScene later = scene();
+  later.observer.position[0] = 250.0;
+  EXPECT_EQ(still_key(later), key);
+  later.observer.kind = ObserverKind::zamo;
+  EXPECT_NE(still_key(later), key);
+
+  auto differs = [&](auto change) {
+    FrameScene fs = scene();
+    change(fs);
+    return still_key(fs) != key;
+  };
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.observer.position[1] = std::nextafter(30.0, 31.0); }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.spacetime = Kerr(1.0, std::nextafter(0.9, 1.0)); }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.camera.roll = 1e-12; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.disk->sectors = 25; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.disk.reset(); }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.sky.rotate = 1e-12; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.sky.seed = 2; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { (*fs.spheres[0].position)[1] = 12.5; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.spheres[0].color_a[0] = 0.5f; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.spheres.push_back(fs.spheres[0]); }));
+  // A sphere at rest ignores the time in its position.
+  EXPECT_FALSE(differs([](FrameScene& fs) { (*fs.spheres[0].position)[0] = 99.0; }));
+}
+
+TEST(StillKey, AFreeFallingObserverIsKeyedByItsProperTime) {
+  FrameScene fs = scene();
+  WorldlineSpec w;
+  w.spacetime = fs.spacetime;
+  w.start = {0.0, 30.0, 1.2, 0.0};
+  w.duration = 100.0;
+  fs.observer.kind = ObserverKind::free_fall;
+  fs.observer.worldline = w;
+  fs.observer.proper_time = 5.0;
+  const std::string key = still_key(fs);
+  fs.observer.proper_time = 6.0;
+  EXPECT_NE(still_key(fs), key);
+}
+
+}  // namespace
+}  // namespace lc
