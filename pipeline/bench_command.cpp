@@ -23,10 +23,14 @@ int run_bench(const BenchCommand& cmd) {
     const auto dir = library_dir().parent_path() / "shots" / "bench";
     shots = {dir / "kerr_disk.lua", dir / "dihole_sphere.lua"};
   }
-  fmt::print("lightcone bench: one ray per pixel centre, best of {}; accuracy against tolerance {:g}\n",
-             cmd.repeats, cmd.reference_tolerance);
+  if (!(cmd.seconds >= 0.0) || cmd.seconds > 3600.0)
+    throw std::invalid_argument(fmt::format("--seconds {}: must be between 0 and 3600", cmd.seconds));
+  fmt::print("lightcone bench: one ray per pixel centre, best of {}{}; accuracy against tolerance {:g}\n",
+             cmd.repeats, cmd.seconds > 0.0 ? fmt::format(" runs of at least {:g} s", cmd.seconds) : "",
+             cmd.reference_tolerance);
   for (const auto& file : shots) {
-    const ShotBenchResult r = bench_shot(file, all, cmd.repeats, cmd.tolerance, cmd.reference_tolerance, chart);
+    const ShotBenchResult r =
+        bench_shot(file, all, {cmd.repeats, cmd.seconds}, cmd.tolerance, cmd.reference_tolerance, chart);
     const AccuracyReport& a = r.accuracy;
     fmt::print("\n{} ({}x{}, tolerance {:g}{})\n", r.name, r.width, r.height, r.tolerance,
                chart == KerrChart::kerr_schild ? ", Kerr rays in Kerr-Schild" : "");

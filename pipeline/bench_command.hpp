@@ -13,6 +13,7 @@ struct BenchCommand {
   std::vector<std::filesystem::path> shots;  // default: shots/bench/kerr_disk.lua, dihole_sphere.lua
   int threads = 0;                           // 0: every core
   int repeats = 3;                           // best of N (the machines are shared and noisy)
+  double seconds = 0.0;                      // each timed run traces the image again until this long has passed
   double reference_tolerance = 1e-13;
   double tolerance = 0.0;  // 0: the production default (constants.hpp)
   std::string kerr_chart = "bl-mino";  // how Kerr rays are integrated in the timed run: bl-mino or kerr-schild

@@ -113,6 +113,8 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--threads", bench.threads, "Threads for the parallel run (default: every core)")
       ->check(CLI::Range(1, 1024));
   bench_cmd->add_option("--repeats", bench.repeats, "Best of this many runs")->check(CLI::Range(1, 100));
+  bench_cmd->add_option("--seconds", bench.seconds,
+                        "Each timed run traces the image again until this many seconds have passed (default: once)");
   bench_cmd->add_option("--tolerance", bench.tolerance, "Integrator tolerance to measure (default: production)")
       ->check(CLI::Range(1e-15, 1e-2));
   bench_cmd->add_option("--kerr-chart", bench.kerr_chart,

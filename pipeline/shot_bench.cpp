@@ -45,15 +45,19 @@ std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int 
   return out;
 }
 
-double seconds_of(const std::function<void()>& f) {
+// Seconds per call of f, over as many calls as fill `at_least` seconds.
+double seconds_of(const std::function<void()>& f, double at_least) {
   const auto t0 = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (int calls = 1;; ++calls) {
+    f();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (s >= at_least) return s / calls;
+  }
 }
 
 }  // namespace
 
-ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, int repeats, double tolerance,
+ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, BenchTiming timing, double tolerance,
                            double reference_tolerance, KerrChart chart) {
   Shot shot(file);
   const ShotInfo& info = shot.info();
@@ -73,10 +77,12 @@ ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, int r
   const Scene scene = build_scene(fs, info.width, info.height, resources, defaults);
   std::vector<RaySample> test;
   r.seconds_one = r.seconds_all = 1e300;
-  for (int k = 0; k < repeats; ++k) {
-    r.seconds_one = std::min(r.seconds_one, seconds_of([&] { test = trace_all(scene, r.width, r.height, 1, &r.steps); }));
+  for (int k = 0; k < timing.repeats; ++k) {
+    r.seconds_one = std::min(
+        r.seconds_one, seconds_of([&] { test = trace_all(scene, r.width, r.height, 1, &r.steps); }, timing.seconds));
     if (threads > 1)
-      r.seconds_all = std::min(r.seconds_all, seconds_of([&] { trace_all(scene, r.width, r.height, threads, nullptr); }));
+      r.seconds_all = std::min(
+          r.seconds_all, seconds_of([&] { trace_all(scene, r.width, r.height, threads, nullptr); }, timing.seconds));
   }
   RayOptions tight;
   tight.control.rtol = tight.control.atol = reference_tolerance;

@@ -27,7 +27,16 @@ struct ShotBenchResult {
 // `tolerance` 0 means the production default; `chart` is how the timed run
 // integrates Kerr rays (the reference always takes the Boyer–Lindquist–Mino
 // path, which converges faster: docs/performance.md).
-ShotBenchResult bench_shot(const std::filesystem::path& shot, int threads, int repeats, double tolerance,
+// How the speed is timed: the best of `repeats` runs, each tracing the
+// image as many times as it takes to fill `seconds` (at least once): a
+// small bench image is over in ~0.1 s, too short to time two threads on a
+// shared machine.
+struct BenchTiming {
+  int repeats = 3;
+  double seconds = 0.0;
+};
+
+ShotBenchResult bench_shot(const std::filesystem::path& shot, int threads, BenchTiming timing, double tolerance,
                            double reference_tolerance, KerrChart chart = KerrChart::boyer_lindquist_mino);
 
 }  // namespace lc

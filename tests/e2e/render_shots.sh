@@ -65,7 +65,7 @@ LUA
 [ -s skies/skies.0000.png ] && [ -s skies/skies.0001.png ] || fail "star sky frames missing"
 # bench on a small copy of the Kerr benchmark shot: speed and accuracy lines.
 sed 's/width = 256/width = 24/; s/height = 256/height = 16/' "$SRC/shots/bench/kerr_disk.lua" >bench_small.lua
-"$LIGHTCONE" bench --shot bench_small.lua --repeats 1 --threads 2 >bench.log 2>&1 || fail "bench: $(cat bench.log)"
+"$LIGHTCONE" bench --shot bench_small.lua --repeats 1 --seconds 0.05 --threads 2 >bench.log 2>&1 || fail "bench: $(cat bench.log)"
 grep -q "rays per core-second on 1 thread" bench.log || fail "bench speed line: $(cat bench.log)"
 grep -q "0 of 384 pixels differ in hit kind" bench.log || fail "bench accuracy line: $(cat bench.log)"
 e2e_end
