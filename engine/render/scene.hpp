@@ -91,7 +91,7 @@ struct MetricAt {
 // so from the second step on the secant slope takes over (superlinear).
 // To 1e-8 in proper time near the sphere in at most six steps, from the
 // given start and, if that does not settle, again from X's own time; beyond
-// 1.5 R it stops once the centre is known to 1% of the room to spare, all
+// 1.5 R it stops once the centre is known to 10% of the room to spare, all
 // sphere tracing needs.  (Newton with the exact slope, from the metric's rate and
 // du/dt, converged in fewer steps but cost 8% more per frame.)
 template <class S>
@@ -127,7 +127,7 @@ double sphere_simultaneous_time(const S& st, const Sphere& sphere, const Vec4& X
       t_prev = t;
       lag_prev = lag;
       t = next;
-        sphere.centre(t, C, u);
+      sphere.centre(t, C, u);
       g = MetricAt<S>(st, C);
       lag = g(X - C, u);
       tolerance = tolerance_at(C);
@@ -468,11 +468,14 @@ class HamiltonianRay {
       const Sphere& sphere = sc_.spheres[k];
       const SphereReach reach = detail::sphere_near_step(sphere, step);
       if (reach == SphereReach::never) continue;
-      const bool timeless_yet = sphere.worldline && !out_.depends_on_time;
+      const bool timeless_yet = !out_.depends_on_time;
       if (reach == SphereReach::not_now && !timeless_yet) continue;
       if (!hull) hull = step_hull(step);
       // Near a moving sphere's path what the ray sees depends on where the
-      // sphere is at the frame's time: no other frame may reuse it.
+      // sphere is at the frame's time: no other frame may reuse it.  Near
+      // one at rest too, though only to rounding: the sphere test works in
+      // absolute coordinate time, so shifted in time its samples round
+      // differently, and a grazing hit could flip.
       if (timeless_yet && hull_near_centres(*hull, sphere, sphere.life_lo, sphere.life_hi)) out_.depends_on_time = true;
       if (reach == SphereReach::not_now) continue;
       double none = std::numeric_limits<double>::quiet_NaN();

@@ -171,7 +171,16 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
     if (rays.escape == EscapeRule::far_field)
       sc.rays.escape_radius = std::min(sc.rays.escape_radius, far_field_escape_radius(sc));
   if constexpr (std::is_same_v<S, Kerr>) sc.observer_jacobian = st.trace_jacobian(sc.observer_scene);
-  if constexpr (S::stationary) sc.still_key = still_key(fs);
+  if constexpr (S::stationary) {
+    // With what the rays are traced by: frames share rays only if these
+    // agree too.
+    sc.still_key = still_key(fs);
+    if (!sc.still_key.empty())
+      sc.still_key += fmt::format("|image {}x{}|rays {:a} {:a} {:a} {:a} {} {:a} {} {:a} {}", width, height,
+                                  rays.control.rtol, rays.control.atol, rays.control.h_min, rays.control.h_max,
+                                  static_cast<int>(rays.kerr_chart), rays.escape_radius, static_cast<int>(rays.escape),
+                                  rays.free_radius, rays.max_steps);
+  }
   return sc;
 }
 

@@ -35,8 +35,8 @@ std::string still_key(const FrameScene& fs) {
                        hex(ob.position[2]), hex(ob.position[3]));
       break;
     case ObserverKind::free_fall:
-      k += fmt::format("|observer free_fall {} at {}", ob.worldline->key(), hex(ob.proper_time));
-      break;
+      // Moving: no two of its frames are the same scene shifted in time.
+      return {};
   }
   const CameraSpec& c = fs.camera;
   k += fmt::format("|camera {} {} {} {}", hex(c.fov), hex(c.yaw), hex(c.pitch), hex(c.roll));

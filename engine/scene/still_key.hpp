@@ -1,7 +1,8 @@
 #pragma once
 // What a frame's scene is apart from its moment: every parameter, exactly
 // (hex floats), except the observer's time where the observer is fixed in
-// space (static or ZAMO).  In a stationary spacetime two frames with equal
+// space (static or ZAMO); empty for a free-falling observer, whose frames
+// never share.  In a stationary spacetime two frames with equal
 // keys are the same scene translated in time: a camera ray that never comes
 // near a moving object sees the same thing in both (render/sample_memo.hpp).
 

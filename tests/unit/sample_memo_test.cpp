@@ -96,5 +96,24 @@ TEST(SampleMemo, AnotherSceneReusesNothing) {
   EXPECT_GT(hold.stats.reused, 0);
 }
 
+TEST(SampleMemo, RaysNearASphereAtRestAreTracedAgain) {
+  // The sphere test works in absolute coordinate time, so a later frame's
+  // samples near a sphere at rest may round differently: they are traced.
+  const RenderSettings rs{32, 18, 2, false};
+  ShotResources res;
+  SampleMemo memo(rs);
+  auto held = [](double t) {
+    FrameScene fs = dihole_at(t);
+    fs.spheres[0].worldline.reset();
+    fs.spheres[0].position = Vec4{0, 5, 0, 0};
+    return fs;
+  };
+  render(held(100), rs, res, &memo);
+  const Rendered later = render(held(1000), rs, res, &memo);
+  EXPECT_GT(later.stats.rays, 0);
+  EXPECT_GT(later.stats.reused, later.stats.rays);
+  EXPECT_EQ(later.image.rgb, render(held(1000), rs, res, nullptr).image.rgb);
+}
+
 }  // namespace
 }  // namespace lc
