@@ -28,6 +28,19 @@ cmp -s frames/kerr_disk.0000.png frames1/kerr_disk.0000.png || fail "PNGs differ
   || fail "render dihole_sphere: $(cat dihole.log)"
 [ -s frames/dihole_sphere.0000.png ] || fail "no dihole PNG"
 
+# Frames of a still scene reuse samples (the dihole's oscillation, watched
+# from the y axis): the same EXRs as traced afresh with --no-reuse.
+"$LIGHTCONE" render "$SRC/shots/dihole.lua" --out still --frames 300:302 --size 64x36 --layers 2>still.log \
+  || fail "render dihole 300-302: $(cat still.log)"
+grep -q "samples reused from earlier frames" still.log || fail "no samples reused: $(cat still.log)"
+"$LIGHTCONE" render "$SRC/shots/dihole.lua" --out fresh --frames 300:302 --size 64x36 --layers --no-reuse 2>fresh.log \
+  || fail "render dihole 300-302 --no-reuse: $(cat fresh.log)"
+grep -q "reused" fresh.log && fail "--no-reuse reused samples: $(cat fresh.log)"
+for f in 0300 0301 0302; do
+  cmp -s still/dihole.$f.png fresh/dihole.$f.png || fail "frame $f differs with reuse"
+  idiff -a still/dihole.$f.exr fresh/dihole.$f.exr >idiff_$f.log 2>&1 || fail "frame $f EXR differs with reuse: $(cat idiff_$f.log)"
+done
+
 # inspect: JSON of frames 0..5 step 5 of the example shot (frames 0 and 5).
 "$LIGHTCONE" inspect "$SRC/shots/orbit_example.lua" --frames 0:5:5 >inspect.json 2>inspect.log || fail "inspect: $(cat inspect.log)"
 python3 -c "
