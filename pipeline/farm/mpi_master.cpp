@@ -71,7 +71,7 @@ MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& ru
     if (!w.hello || w.wanted <= 0 || w.told_no_more) return;
     std::vector<WorkItem> items;
     while (static_cast<int>(items.size()) < w.wanted)
-      if (auto item = queue.take())
+      if (auto item = queue.take_for(r))
         items.push_back(*item);
       else
         break;

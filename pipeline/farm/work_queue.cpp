@@ -7,7 +7,7 @@
 namespace lc::farm {
 
 WorkQueue::WorkQueue(RenderSettings rs, StripeLayout layout, std::vector<int> frames, Options options)
-    : rs_(rs), layout_(layout), frames_(std::move(frames)), options_(options) {
+    : rs_(rs), layout_(layout), frames_(std::move(frames)), options_(options), owner_(layout_.stripes(), -1) {
   if (options_.max_open_frames < 1) options_.max_open_frames = 1;
   for (int s = 0; s < layout_.stripes(); ++s) {
     all_stripes_.push_back(s);
@@ -23,26 +23,54 @@ WorkQueue::WorkQueue(RenderSettings rs, StripeLayout layout, std::vector<int> fr
   }
 }
 
-// Hands out the set under the cursor, opening its frame if needed, and
-// moves the cursor on (to the next pass after a pass's last frame, so
-// drained() is true as soon as the last set is out); nullopt at the end,
-// when stopped, or when opening a frame would exceed the limit.
-std::optional<WorkItem> WorkQueue::take_locked() {
+std::size_t WorkQueue::pick_locked(int taker) {
+  // Pops the first index of `list` not yet handed out (lists are kept
+  // descending, so that is the back).
+  auto from = [&](std::vector<std::size_t>& list) -> std::optional<std::size_t> {
+    while (!list.empty() && handed_[list.back()]) list.pop_back();
+    if (list.empty()) return std::nullopt;
+    const std::size_t i = list.back();
+    list.pop_back();
+    return i;
+  };
+  if (taker >= 0) {
+    if (auto i = from(left_for_[taker])) return *i;
+    if (auto i = from(left_for_[-1])) return *i;
+  }
+  while (handed_[lowest_]) ++lowest_;
+  return lowest_;
+}
+
+// Hands out a set of the frame under the cursor (pick_locked), opening the
+// frame if needed, and moves the cursor on once the frame's last set is
+// out (to the next pass after a pass's last frame, so drained() is true as
+// soon as the last set is out); nullopt at the end, when stopped, or when
+// opening a frame would exceed the limit.
+std::optional<WorkItem> WorkQueue::take_locked(int taker) {
   if (stopped_ || cur_pass_ > 1 || frames_.empty()) return std::nullopt;
   const auto& stripes = cur_pass_ == 0 ? preview_stripes_ : all_stripes_;
   const Pass pass = cur_pass_ == 0 ? Pass::preview : Pass::full;
   const int frame = frames_[cur_frame_];
-  if (cur_stripe_ == 0) {
+  if (!frame_started_) {
     // First set of a frame: it needs a canvas and a slot.
     if (static_cast<int>(open_.size()) >= options_.max_open_frames) return std::nullopt;
     OpenFrame& of = open_[key(pass, frame)];
     of.canvas = std::make_unique<FrameImage>(make_frame(rs_));
     of.done.assign(stripes.size(), 0);
     of.remaining = static_cast<int>(stripes.size());
+    frame_started_ = true;
+    handed_.assign(stripes.size(), 0);
+    handed_count_ = lowest_ = 0;
+    left_for_.clear();
+    for (std::size_t i = stripes.size(); i-- > 0;) left_for_[owner_[stripes[i]]].push_back(i);
   }
-  WorkItem item{frame, stripes[cur_stripe_], pass};
-  if (++cur_stripe_ == stripes.size()) {
-    cur_stripe_ = 0;
+  const std::size_t index = pick_locked(taker);
+  handed_[index] = 1;
+  ++handed_count_;
+  if (taker >= 0) owner_[stripes[index]] = taker;
+  WorkItem item{frame, stripes[index], pass};
+  if (handed_count_ == stripes.size()) {
+    frame_started_ = false;
     if (++cur_frame_ == frames_.size()) {
       cur_frame_ = 0;
       ++cur_pass_;
@@ -53,13 +81,18 @@ std::optional<WorkItem> WorkQueue::take_locked() {
 
 std::optional<WorkItem> WorkQueue::take() {
   std::lock_guard lock(mutex_);
-  return take_locked();
+  return take_locked(-1);
+}
+
+std::optional<WorkItem> WorkQueue::take_for(int taker) {
+  std::lock_guard lock(mutex_);
+  return take_locked(std::max(taker, 0));
 }
 
 std::optional<WorkItem> WorkQueue::take_wait() {
   std::unique_lock lock(mutex_);
   for (;;) {
-    if (auto item = take_locked()) return item;
+    if (auto item = take_locked(-1)) return item;
     if (stopped_ || cur_pass_ > 1 || frames_.empty()) return std::nullopt;
     slot_freed_.wait(lock);
   }

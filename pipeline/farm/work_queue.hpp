@@ -57,6 +57,12 @@ class WorkQueue {
   // set is out (see drained()), the queue was stopped, or max_open_frames
   // frames await their stripes or their writer (try again after stored()).
   std::optional<WorkItem> take();
+  // take() for a taker that keeps something between frames (an MPI worker
+  // with its sample memo, numbered >= 0): of the current frame's stripes,
+  // those this taker had last time first, then any nobody had, then the
+  // others in order.  A still scene's rows then go back to the worker that
+  // kept their samples.
+  std::optional<WorkItem> take_for(int taker);
   // Like take() but waits while throttled; nullopt once drained or stopped.
   std::optional<WorkItem> take_wait();
   bool drained() const;
@@ -94,7 +100,10 @@ class WorkQueue {
   };
   using Key = std::pair<int, int>;  // (pass, frame)
   static Key key(Pass p, int frame) { return {static_cast<int>(p), frame}; }
-  std::optional<WorkItem> take_locked();
+  std::optional<WorkItem> take_locked(int taker);
+  // The index (into the pass's stripes) of the current frame's next set for
+  // `taker` (-1: in order).
+  std::size_t pick_locked(int taker);
 
   RenderSettings rs_;
   StripeLayout layout_;
@@ -104,9 +113,15 @@ class WorkQueue {
 
   mutable std::mutex mutex_;
   std::condition_variable slot_freed_;
-  // Cursor: pass (0 preview, 1 full), index into frames_, index into the pass's stripes.
+  // Cursor: pass (0 preview, 1 full), index into frames_; within the frame
+  // (open once its first set is out) the sets handed out so far.
   int cur_pass_ = 0;
-  std::size_t cur_frame_ = 0, cur_stripe_ = 0;
+  std::size_t cur_frame_ = 0;
+  bool frame_started_ = false;
+  std::vector<char> handed_;   // per index into the pass's stripes
+  std::size_t handed_count_ = 0, lowest_ = 0;  // lowest_: no set below it is left
+  std::vector<int> owner_;     // per stripe: the taker it went to last (-1: none)
+  std::map<int, std::vector<std::size_t>> left_for_;  // per owner, the current frame's indices it had, descending
   std::map<Key, OpenFrame> open_;  // handed out and not stored yet
   bool stopped_ = false;
   QueueProgress progress_;

@@ -4,6 +4,7 @@
 // of open frames is bounded, and threads sharing the queue agree.
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <thread>
 
@@ -64,6 +65,42 @@ TEST(FarmQueue, EverySetOnceInFrameOrder) {
     EXPECT_EQ(items[k].stripe, static_cast<int>(k % 5));
     EXPECT_EQ(items[k].pass, Pass::full);
   }
+}
+
+TEST(FarmQueue, WorkersGetBackTheStripesTheyHadBefore) {
+  // Two MPI workers (ranks 1 and 2) asking in turns share frame 0; in frame
+  // 1 each gets the stripes it had, whoever asks first and however often,
+  // so its sample memo holds their rows.  What one leaves, the other takes.
+  WorkQueue q(settings(4, 12), StripeLayout(12, 6), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 100});
+  std::map<int, std::set<int>> had;
+  for (int k = 0; k < 6; ++k) {
+    const int rank = 1 + k % 2;
+    const auto item = q.take_for(rank);
+    ASSERT_TRUE(item);
+    EXPECT_EQ(item->frame, 0);
+    had[rank].insert(item->stripe);
+  }
+  EXPECT_EQ(had[1], std::set<int>({0, 2, 4}));
+  for (int k = 0; k < 3; ++k) {
+    const auto item = q.take_for(2);
+    EXPECT_EQ(item->frame, 1);
+    EXPECT_TRUE(had[2].count(item->stripe)) << item->stripe;
+  }
+  // Rank 2 has had all of its own: it takes rank 1's, lowest first.
+  EXPECT_EQ(q.take_for(2)->stripe, 0);
+  for (int k = 0; k < 2; ++k) {
+    const auto item = q.take_for(1);
+    EXPECT_EQ(item->frame, 1);
+    EXPECT_TRUE(had[1].count(item->stripe)) << item->stripe;
+  }
+  // Frame 2: stripe 0 went to rank 2 last.
+  EXPECT_EQ(q.take_for(2)->stripe, 0);
+  EXPECT_EQ(q.take_for(1)->stripe, 2);
+  // Every set of every frame came out exactly once.
+  int rest = 0;
+  while (q.take_for(1)) ++rest;
+  EXPECT_EQ(rest, 4);
+  EXPECT_TRUE(q.drained());
 }
 
 TEST(FarmQueue, FrameCompletesWithItsLastStripeAndHoldsItsRows) {
