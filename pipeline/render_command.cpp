@@ -12,6 +12,7 @@
 #include "farm/farm_run.hpp"
 #include "farm/frame_store.hpp"
 #include "farm/local_farm.hpp"
+#include "farm/memo_budget.hpp"
 #include "farm/mpi_master.hpp"
 #include "farm/mpi_session.hpp"
 #include "farm/mpi_worker.hpp"
@@ -183,7 +184,9 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
       // Enough scenes for every frame that can be open at once.
       farm::SceneCache scenes(*job.shot, job.rs.width, job.rs.height,
                               farm::open_frames_for(threads, job.layout.stripes()) + 2);
-      farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout, !cmd.no_reuse);
+      const auto refusal = cmd.no_reuse ? std::nullopt : farm::memo_refusal(job.rs, 1);
+      if (refusal) fmt::print(stderr, "render: {}\n", *refusal);
+      farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout, !cmd.no_reuse && !refusal);
       farm::run_local_farm(queue, run, renderer, threads, progress);
     }
     run.close();
@@ -228,7 +231,9 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
     // Enough scenes for the frames the sets in hand (two per thread) span.
     scenes = std::make_unique<farm::SceneCache>(*job.shot, job.rs.width, job.rs.height,
                                                 farm::open_frames_for(threads, job.layout.stripes()) + 2);
-    renderer = std::make_unique<farm::SceneStripeRenderer>(*scenes, job.rs, job.layout, !cmd.no_reuse);
+    // Each worker judges its own node's memory (the master cannot see it).
+    const bool reuse = !cmd.no_reuse && !farm::memo_refusal(job.rs, mpi.workers_on_node());
+    renderer = std::make_unique<farm::SceneStripeRenderer>(*scenes, job.rs, job.layout, reuse);
   }
   farm::run_mpi_worker(mpi, renderer.get(), job.rs, job.layout, threads, job.digest, setup_error);
   return 0;

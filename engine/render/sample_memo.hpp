@@ -72,6 +72,11 @@ class SampleMemo {
 
   // Samples per row: W N N grid samples and W centre rays.
   std::size_t row_size() const { return row_size_; }
+  // Bytes a memo for `rs` holds once every row has been used.
+  static std::size_t bytes_for(const RenderSettings& rs) {
+    return static_cast<std::size_t>(rs.height) * static_cast<std::size_t>(rs.width) *
+           (static_cast<std::size_t>(rs.supersample) * rs.supersample + 1) * sizeof(Kept);
+  }
 
  private:
   std::size_t row_size_;
