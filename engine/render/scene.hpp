@@ -261,12 +261,18 @@ inline StepHull step_hull(const RayStep& step) {
 // centres: the test both for "may meet the sphere now" (the centre's box
 // over the step's time range) and for "may depend on the sphere's motion"
 // (the box it never leaves).
-inline bool hull_near_centres(const StepHull& h, const Sphere& sphere, Vec3 lo, Vec3 hi) {
+// grow_by_reach grows such a box of centres in place (the tube sphere_entry
+// clips the step to).
+inline void grow_by_reach(const StepHull& h, const Sphere& sphere, Vec3& lo, Vec3& hi) {
   const double grow = 2.0 * sphere.spec.radius + h.margin;
   for (int k = 0; k < 3; ++k) {
     lo[k] -= grow;
     hi[k] += grow;
   }
+}
+
+inline bool hull_near_centres(const StepHull& h, const Sphere& sphere, Vec3 lo, Vec3 hi) {
+  grow_by_reach(h, sphere, lo, hi);
   return boxes_overlap(h.lo, h.hi, lo, hi);
 }
 
@@ -285,12 +291,8 @@ template <class S>
   const double chord2 = hull.chord2, quarter = hull.quarter, margin = hull.margin;
   Vec3 clo, chi;
   sphere.bounds(a[0], b[0], clo, chi);
-  if (!hull_near_centres(hull, sphere, clo, chi)) return std::nullopt;
-  const double grow = 2.0 * sphere.spec.radius + margin;
-  for (int k = 0; k < 3; ++k) {
-    clo[k] -= grow;
-    chi[k] += grow;
-  }
+  grow_by_reach(hull, sphere, clo, chi);
+  if (!boxes_overlap(hull.lo, hull.hi, clo, chi)) return std::nullopt;
 
   // Clip the step to the tube with the straight chord (widened each side by
   // the margin, for the bulge), then sample F = |xi|^2 - R^2 at spacing R/4

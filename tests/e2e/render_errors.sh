@@ -36,6 +36,8 @@ expect_error absurd_size "image size 100000x10 is out of range" -- "$LIGHTCONE" 
 expect_error bad_size "--size 'big': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size big
 expect_error bad_scale "--scale -1: must be a positive number" -- "$LIGHTCONE" render ok.lua --out out --scale -1
 expect_error bench_seconds "--seconds -1: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds -1
+expect_error bench_seconds_nan "--seconds nan: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds nan
+expect_error bench_seconds_long "--seconds 4000: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds 4000
 expect_error bad_frames "--frames '5:9': the shot has frames 0 to 0" -- "$LIGHTCONE" render ok.lua --out out --frames 5:9
 expect_error bad_frames2 "--frames 'x'" -- "$LIGHTCONE" render ok.lua --out out --frames x
 shot ergo "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 1.8, theta = 90, phi = 0},"

@@ -11,6 +11,7 @@
 #include "render/accuracy.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
+#include "test_scenes.hpp"
 
 namespace lc {
 namespace {
@@ -227,15 +228,7 @@ TEST(Render, SphereSimultaneityIsSolvedNearAMovingSphere) {
   FrameScene fs;
   fs.spacetime = Dihole(0.4, 0.4, 1.0);
   fs.observer.position = {200, 0, 80, 0};
-  WorldlineSpec w;
-  w.spacetime = fs.spacetime;
-  w.start = {0, 5, 0, 0};
-  w.duration = 200;
-  w.where = "test";
-  SphereSpec sp;
-  sp.radius = 1.0;
-  sp.worldline = w;
-  fs.spheres.push_back(sp);
+  fs.spheres.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 200, 1.0));
   ShotResources res;
   const Scene scene = build_scene(fs, 8, 8, res);
   const auto& sc = std::get<SceneOf<Dihole>>(scene);
@@ -269,16 +262,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   fs.spacetime = Minkowski{};
   fs.observer.position = {150, 0, 60, 0};  // at t = 150, on the y axis, looking at the origin
   fs.camera.fov = 90;
-  WorldlineSpec w;
-  w.spacetime = Minkowski{};
-  w.start = {0, -70, 0, 0};
-  w.velocity = {0.6, 0, 0};
-  w.duration = 300;
-  w.where = "test";
-  SphereSpec sp;
-  sp.radius = 3.0;
-  sp.worldline = w;
-  fs.spheres.push_back(sp);
+  fs.spheres.push_back(test::falling_sphere(Minkowski{}, {0, -70, 0, 0}, {0.6, 0, 0}, 300, 3.0));
   ShotResources res;
   const int W = 600, H = 600;
   const Scene scene = build_scene(fs, W, H, res);

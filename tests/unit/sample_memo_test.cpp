@@ -10,6 +10,7 @@
 #include "render/renderer.hpp"
 #include "render/sample_memo.hpp"
 #include "render/scene_builder.hpp"
+#include "test_scenes.hpp"
 
 namespace lc {
 namespace {
@@ -21,15 +22,7 @@ FrameScene dihole_at(double t) {
   fs.spacetime = Dihole(0.4, 0.4, 1.0);
   fs.observer.position = {t, 0, 40, 0};
   fs.camera.fov = 30;
-  WorldlineSpec w;
-  w.spacetime = fs.spacetime;
-  w.start = {0, 5, 0, 0};
-  w.duration = 300;
-  w.where = "test";
-  SphereSpec sp;
-  sp.radius = 1.0;
-  sp.worldline = w;
-  fs.spheres.push_back(sp);
+  fs.spheres.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
   return fs;
 }
 
