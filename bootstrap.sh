@@ -21,6 +21,9 @@ packages=(
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   libopenimageio-dev openimageio-tools libcli11-dev libfmt-dev libgtest-dev
 )
+# The end-to-end tests also read results back with tools a minimal Debian
+# lacks: python3 (PNG chunks, MP4 atoms, JSON) and procps (pgrep).
+if [ "$job" = test ]; then packages+=(python3 procps); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
