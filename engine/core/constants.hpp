@@ -63,6 +63,14 @@ inline constexpr double adaptive_sample_threshold = 1.0 / 256.0;
 // docs/performance.md, change 11.
 inline constexpr double free_flight_relaxation = 100.0;
 
+// An observer whose |sin(theta)| is below this is on the spin axis for the
+// Boyer–Lindquist–Mino rays: they leave along one meridian with p_phi = 0.
+// theta = 180 deg is pi rounded, whose sine is 1.2e-16, not 0; and rays
+// that start with p_phi ~ r sin(theta) != 0 turn at sin(theta) ~ 1e-9 and
+// below in steps too small to take (they gave up, measured).  Starting
+// them on the axis moves them by r |sin(theta)|: 3e-5 M at r = 30.
+inline constexpr double spin_axis_sine = 1e-6;
+
 // Default safety bound on the number of accepted steps of one ray.
 inline constexpr long default_max_steps = 100000;
 

@@ -670,7 +670,7 @@ class MinoRay {
     Vec4 p_bl{};
     for (int nu = 0; nu < 4; ++nu)
       for (int mu = 0; mu < 4; ++mu) p_bl[nu] += p_ks[mu] * sc.observer_jacobian[mu][nu];
-    if (std::sin(s0[2]) == 0.0) {
+    if (std::abs(std::sin(s0[2])) < spin_axis_sine) {
       // On the axis every phi names the observer's point, and the ray leaves it
       // along one meridian: p_theta at phi is A cos(phi) + B sin(phi) from the
       // meridians phi = 0 and pi/2, largest (the ray's own) at atan2(B, A).
