@@ -20,6 +20,23 @@
 // evaluation.  E, L and K are exact constants here; only U = (du/dl)^2 and
 // Theta = w^2 can drift.
 //
+// Coordinate time is passive (it steers no step), and dt/dl has poles where
+// rays end: ~E/u^2 as an escaping ray's u runs to 0 within one long step,
+// ~1/Delta at the horizon, and between them it grows like r^2 along legs
+// that u crosses in a few steps.  Steps sized by the other components
+// cannot follow that (t came out ~6000 M off at the escape radius and
+// ~2 M off at the capture radius).  The state carries instead
+//   tau = t - sgn(Pu) V,   dV/dl = |du/dl| (1 + a^2 u^2) / (u^2 D) = |dr*/dl|,
+// V the variation of the tortoise radius r* (dr*/dr = (r^2 + a^2)/Delta)
+// along the ray so far (Pu keeps its sign along a ray outside the horizon:
+// U^2 = Pu^2 - u^2 D K would be negative where it vanished).  With
+// |du/dl| = W = sqrt(Pu^2 - u^2 D K),
+//   dtau/dl = a (L - a E sin^2) + sgn(Pu) (1 + a^2 u^2) K / (|Pu| + W),
+// which has no pole at all: t comes out to ~1e-6 M (docs/layers.md).  (W
+// comes from u, not from the state's du/dl: a stage's du/dl is off by its
+// truncation error, which a 1/u^2 would multiply.)  V is exact: r* changes
+// monotonically between radial turning points, which MinoClock finds.
+//
 // Regular wherever rays go: L = 0 rays (all those from an observer on the
 // spin axis) cross the axis with sin th changing sign, which stands for the
 // same point at (-th, phi + pi); rays with L != 0 turn before the axis.  BL
@@ -32,11 +49,14 @@
 #include "core/constants.hpp"
 #include "geodesic/dormand_prince.hpp"
 #include "geodesic/null_ray.hpp"
+#include "geodesic/crossing.hpp"
 #include "geodesic/stop_reason.hpp"
+#include "spacetime/kerr.hpp"
 
 namespace lc {
 
-// t, u = 1/r, cos th, sin th, phi, du/dl, dth/dl, sigma (the affine parameter).
+// tau (coordinate time less sgn(E) V, see above), u = 1/r, cos th, sin th,
+// phi, du/dl, dth/dl, sigma (the affine parameter).
 using MinoState = std::array<double, 8>;
 using MinoStep = DenseStep<8>;
 
@@ -45,6 +65,7 @@ struct KerrMinoRhs {
   double M, a, E, L, K;
   double a2, aE, a2E2, L2, alpha;  // alpha = a (a E - L)
   double u_floor2;                 // t and sigma are followed out to r = 1 / u_floor only
+  double sign_P = 1.0;             // sgn(Pu): tau = t - sgn(Pu) V
 
   KerrMinoRhs(double mass, double spin, double energy, double ang_mom, double carter_k, double u_floor)
       : M(mass), a(spin), E(energy), L(ang_mom), K(carter_k), a2(spin * spin), aE(spin * energy),
@@ -65,7 +86,8 @@ struct KerrMinoRhs {
     const double inv_u2 = 1.0 / std::max(u2, u_floor2);
     const double s2 = s * s;
     const double L_s2 = L == 0.0 ? 0.0 : L / s2;  // L / sin^2 (0 on the axis when L = 0)
-    dy[0] = a * (L - aE * s2) + (1.0 + a2 * u2) * Pu * inv_D * inv_u2;
+    const double W = std::sqrt(std::max(0.0, Pu * Pu - u2 * (1.0 - 2.0 * M * u + a2 * u2) * K));
+    dy[0] = a * (L - aE * s2) + sign_P * (1.0 + a2 * u2) * K / (std::abs(Pu) + W);
     dy[1] = U;
     dy[2] = -s * w;
     dy[3] = c * w;
@@ -102,11 +124,15 @@ inline KerrMinoStart kerr_mino_start(double M, double a, const Vec4& s, const Ve
   const double Q = p[2] * p[2] - a * a * E * E * c * c + (L == 0.0 ? 0.0 : L * L * c * c / (sn * sn));
   const double K = Q + (L - a * E) * (L - a * E);
   // du/dl = -u^2 dr/dl = -u^2 Delta p_r = -D p_r.
-  return {KerrMinoRhs(M, a, E, L, K, 0.5 / escape_radius), {s[0], u, c, sn, s[3], -D * p[1], p[2], 0.0}};
+  KerrMinoRhs rhs(M, a, E, L, K, 0.5 / escape_radius);
+  rhs.sign_P = E + rhs.alpha * u * u < 0.0 ? -1.0 : 1.0;
+  // du/dl = -u^2 dr/dl = -u^2 Delta p_r = -D p_r.
+  return {rhs, {s[0], u, c, sn, s[3], -D * p[1], p[2], 0.0}};
 }
 
 // The BL event and covariant momentum of a state, with th in [0, pi] and
-// phi in [0, 2 pi) (a state with sin th < 0 is the point (-th, phi + pi)).
+// phi in [0, 2 pi) (a state with sin th < 0 is the point (-th, phi + pi)),
+// and s[0] = tau: MinoClock::time gives t.
 inline void kerr_mino_event(const KerrMinoRhs& k, const MinoState& y, Vec4& s, Vec4& p) {
   const bool flip = y[3] < 0.0;
   const double th = std::atan2(std::abs(y[3]), y[2]);
@@ -118,6 +144,53 @@ inline void kerr_mino_event(const KerrMinoRhs& k, const MinoState& y, Vec4& s, V
   s = {y[0], 1.0 / u, th, phi};
   p = {-k.E, -y[5] / D, flip ? -y[6] : y[6], k.L};
 }
+
+// Coordinate time along one Mino ray: t = tau + sgn(Pu) V (see above), V
+// kept leg by leg between radial turning points.  see() is shown every
+// accepted step before times in it are asked for; time() then holds for
+// any point of that step (before or after a turning point in it) and of the
+// steps before it on the same leg.
+class MinoClock {
+ public:
+  MinoClock(const KerrMinoRhs& k, double u0) : k_(k), u_leg_(u0), r_star_leg_(r_star(u0)) {}
+
+  // The step [step.t0, l1] (l1 <= its end): closes the previous step's turn
+  // and finds this one's, where du/dl changes sign (one per step at most:
+  // null rays turn once outside the photon region).
+  void see(const MinoStep& step, double l1) {
+    if (turn_) {
+      variation_ += std::abs(turn_r_star_ - r_star_leg_);
+      r_star_leg_ = turn_r_star_;
+      turn_ = false;
+    }
+    const double U0 = step.start()[5], U1 = step.component(5, l1);
+    if (U0 == 0.0 || (U0 > 0.0) == (U1 > 0.0)) return;
+    turn_lambda_ = locate_crossing(step, [](const MinoState& y) { return y[5]; }, step.t0, l1, U0, U1);
+    turn_r_star_ = r_star(step.component(1, turn_lambda_));
+    turn_ = true;
+  }
+
+  // t at the state y at Mino time lambda, in the step last seen.
+  double time(const MinoState& y, double lambda) const {
+    double v = variation_;
+    double from = r_star_leg_;
+    if (turn_ && lambda > turn_lambda_) {
+      v += std::abs(turn_r_star_ - from);
+      from = turn_r_star_;
+    }
+    return y[0] + k_.sign_P * (v + std::abs(r_star(y[1]) - from));
+  }
+
+ private:
+  double r_star(double u) const { return 1.0 / u + kerr_radial_time(k_.M, k_.a, 1.0 / u); }
+
+  const KerrMinoRhs& k_;
+  double u_leg_;
+  double r_star_leg_;        // r* where the current leg began
+  double variation_ = 0.0;   // V over the legs before it
+  bool turn_ = false;        // the step last seen turns at turn_lambda_
+  double turn_lambda_ = 0.0, turn_r_star_ = 0.0;
+};
 
 // Integrates from `start` with Dormand–Prince 5(4) until the ray is captured
 // (r below `capture_radius`), reaches infinity (u <= 0: StopReason::escaped;

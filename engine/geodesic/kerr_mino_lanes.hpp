@@ -19,7 +19,7 @@ namespace lc {
 using MinoLanes = std::array<LaneVec, 8>;  // component j, lane i: y[j][i]
 
 struct KerrMinoRhs4 {
-  LaneVec M{}, a{}, E{}, L{}, K{}, a2{}, aE{}, a2E2{}, alpha{}, u_floor2{};
+  LaneVec M{}, a{}, E{}, L{}, K{}, a2{}, aE{}, a2E2{}, alpha{}, u_floor2{}, sign_P{};
 
   // Lane i takes the constants of one ray.
   void set(int i, const KerrMinoRhs& r) {
@@ -33,6 +33,7 @@ struct KerrMinoRhs4 {
     a2E2[i] = r.a2E2;
     alpha[i] = r.alpha;
     u_floor2[i] = r.u_floor2;
+    sign_P[i] = r.sign_P;
   }
 
   // KerrMinoRhs::operator() lane by lane (the same formulas; see there).
@@ -45,7 +46,9 @@ struct KerrMinoRhs4 {
     const LaneVec inv_u2 = one / (u2 > u_floor2 ? u2 : u_floor2);
     const LaneVec s2 = s * s;
     const LaneVec L_s2 = L == zero ? zero : L / s2;
-    dy[0] = a * (L - aE * s2) + (one + a2 * u2) * Pu * inv_D * inv_u2;
+    const LaneVec W2 = Pu * Pu - u2 * (one - 2.0 * M * u + a2 * u2) * K;
+    const LaneVec W = sqrt_of(W2 > zero ? W2 : zero);
+    dy[0] = a * (L - aE * s2) + sign_P * (one + a2 * u2) * K / (abs_of(Pu) + W);
     dy[1] = U;
     dy[2] = -s * w;
     dy[3] = c * w;

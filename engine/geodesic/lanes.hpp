@@ -36,4 +36,7 @@ inline LaneVec sqrt_of(LaneVec x) {
 #endif
 }
 
+// The absolute value of every lane (its sign bit cleared).
+inline LaneVec abs_of(LaneVec x) { return x < 0.0 ? -x : x; }
+
 }  // namespace lc

@@ -9,6 +9,7 @@
 
 #include "core/constants.hpp"
 #include "core/tensor.hpp"
+#include "geodesic/crossing.hpp"
 #include "geodesic/dormand_prince.hpp"
 #include "geodesic/stop_reason.hpp"
 
@@ -53,6 +54,18 @@ struct RayResult {
 struct NoObjects {
   bool operator()(const RayStep&, RayResult&) const { return false; }
 };
+
+// Where within `step`, which ends captured (S::captured), the ray crossed
+// into the capture region: the data layers' event of a horizon pixel is on
+// the capture surface, not wherever the step happened to end (for
+// Schwarzschild that was inside the horizon).
+template <class S>
+double capture_crossing(const S& st, const RayStep& step) {
+  auto margin = [&st](const RayState& y) { return st.capture_margin({y[0], y[1], y[2], y[3]}); };
+  const double m0 = margin(step.start()), m1 = margin(step.at(step.t0 + step.h));
+  if (!(m0 > 0.0)) return step.t0;  // started captured (cannot happen from outside)
+  return locate_crossing(step, margin, m0, m1, 1e-12);
+}
 
 // Traces from x0 with covariant momentum p0 along increasing affine
 // parameter (pass a past-directed p0 to trace backwards in time).  After each
@@ -99,7 +112,12 @@ RayResult trace_null_ray(const S& st, const Vec4& x0, const Vec4& p0, const RayO
     const Vec4 x = {y[0], y[1], y[2], y[3]};
     if (st.captured(x)) {
       res.reason = StopReason::horizon;
-      break;
+      res.lambda = capture_crossing(st, step);
+      res.y = step.at(res.lambda);
+      Vec4 dx, dp_;
+      st.hamiltonian_rhs({res.y[0], res.y[1], res.y[2], res.y[3]}, {res.y[4], res.y[5], res.y[6], res.y[7]}, dx, dp_);
+      res.hamiltonian = 0.5 * (res.y[4] * dx[0] + res.y[5] * dx[1] + res.y[6] * dx[2] + res.y[7] * dx[3]);
+      return res;
     }
     const double rho2 = y[1] * y[1] + y[2] * y[2] + y[3] * y[3];
     if (!relaxed && rho2 > free2) {

@@ -159,7 +159,9 @@ void trace_hamiltonian_lanes(const SceneOf<S>& sc, const Rhs4& rhs, std::span<co
     const RayState yi = dp.y(i);
     if (st.captured({yi[0], yi[1], yi[2], yi[3]})) {
       l.res.reason = StopReason::horizon;
-      return end_ray(i, true);
+      l.res.lambda = capture_crossing(st, step);
+      l.res.y = step.at(l.res.lambda);
+      return end_ray(i, false);
     }
     const double rho2 = yi[1] * yi[1] + yi[2] * yi[2] + yi[3] * yi[3];
     const bool outward = yi[1] * dp.slope(i, 1) + yi[2] * dp.slope(i, 2) + yi[3] * dp.slope(i, 3) > 0.0;

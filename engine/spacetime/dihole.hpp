@@ -50,6 +50,8 @@ class Dihole : public CartesianScene {
   }
 
   bool captured(const Vec4& x) const { return potential(x) > dihole_capture_potential; }
+  // A smooth function negative exactly where captured() holds (see Kerr).
+  double capture_margin(const Vec4& x) const { return dihole_capture_potential - potential(x); }
   bool inside_horizon(const Vec4& x) const { return captured(x); }
 
   Mat4 metric(const Vec4& x) const;

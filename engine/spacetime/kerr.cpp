@@ -109,15 +109,16 @@ Mat4 Kerr::bl_metric(const Vec4& s) const {
   return g;
 }
 
-// T(r) = ∫ 2 M r / Delta dr and Phi(r) = ∫ a / Delta dr.
-double Kerr::time_shift(double r) const {
-  if (M_ == 0.0) return 0.0;
-  const double split = r_plus_ - r_minus_;
-  if (split < 1e-8 * M_)  // extremal limit of the expression below
-    return sense_ * (2.0 * M_ * std::log(std::abs(r - M_)) - 2.0 * M_ * M_ / (r - M_));
-  return sense_ * 2.0 * M_ / split *
-         (r_plus_ * std::log(std::abs(r - r_plus_)) - r_minus_ * std::log(std::abs(r - r_minus_)));
+double kerr_radial_time(double M, double a, double r) {
+  if (M == 0.0) return 0.0;
+  const double root = std::sqrt(std::max(0.0, M * M - a * a)), rp = M + root, rm = M - root;
+  if (rp - rm < 1e-8 * M)  // extremal limit of the expression below
+    return 2.0 * M * std::log(std::abs(r - M)) - 2.0 * M * M / (r - M);
+  return 2.0 * M / (rp - rm) * (rp * std::log(std::abs(r - rp)) - rm * std::log(std::abs(r - rm)));
 }
+
+// sense * T(r), and Phi(r) = sense * ∫ a / Delta dr.
+double Kerr::time_shift(double r) const { return sense_ * kerr_radial_time(M_, a_, r); }
 
 double Kerr::phi_shift(double r) const {
   if (M_ == 0.0 || a_ == 0.0) return 0.0;

@@ -29,6 +29,11 @@ namespace lc {
 
 enum class KerrSchildSense { ingoing, outgoing };
 
+// T(r) = ∫ 2 M r / Delta dr (zero for M = 0): the time a radial principal
+// null ray gains on flat space, so that r + T(r) is the tortoise radius r*,
+// dr*/dr = (r^2 + a^2) / Delta.  Integration constants in docs/physics.md.
+double kerr_radial_time(double M, double a, double r);
+
 class Kerr {
  public:
   // The metric does not depend on t (in either chart): frames that differ
@@ -97,6 +102,9 @@ class Kerr {
 
   // Captured: inside the capture radius (see constants.hpp).  Kerr–Schild point.
   bool captured(const Vec4& x) const { return M_ > 0.0 && bl_radius(x[1], x[2], x[3]) < r_capture_; }
+  // A smooth function negative exactly where captured() holds, to locate
+  // where a ray crossed into the capture region within a step.
+  double capture_margin(const Vec4& x) const { return M_ > 0.0 ? bl_radius(x[1], x[2], x[3]) - r_capture_ : 1.0; }
   // Inside (or on) the outer horizon.
   bool inside_horizon(const Vec4& x) const { return M_ > 0.0 && bl_radius(x[1], x[2], x[3]) <= r_plus_; }
 

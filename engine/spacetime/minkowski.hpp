@@ -15,6 +15,7 @@ class Minkowski : public CartesianScene {
   }
   double asymptotic_mass() const { return 0.0; }
   bool captured(const Vec4&) const { return false; }
+  double capture_margin(const Vec4&) const { return 1.0; }
   bool inside_horizon(const Vec4&) const { return false; }
   Mat4 metric(const Vec4&) const { return {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
   Vec4 diagonal_metric(const Vec4&) const { return {-1, 1, 1, 1}; }
