@@ -34,13 +34,7 @@ int run_trace(const TraceCommand& cmd) {
 
   const FrameScene fs = shot.frame(f);
   ShotResources resources(shot.asset_dirs());
-  const Scene scene = [&] {
-    try {
-      return build_scene(fs, width, height, resources);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(fmt::format("{}: frame {}: {}", cmd.shot.string(), f, e.what()));
-    }
-  }();
+  const Scene scene = build_frame_scene(fs, cmd.shot, f, width, height, resources);
 
   // The path, as the geodesic tool reports a curve integrated into the past:
   // lambda = -(affine parameter of the backward ray), tangent future-directed.

@@ -110,6 +110,30 @@ double far_field_escape_radius(const SceneOf<S>& sc) {
   return radius;
 }
 
+// A free-falling sphere's worldline must last as long as this frame's rays
+// may meet it: after its end the body would be nowhere (its centre is held
+// at the last event, whose time no ray point shares).  Light reaches the
+// observer at t from no earlier than t minus the Euclidean coordinate
+// distance, since in these charts (Kerr–Schild g = eta + f l l with f >= 0,
+// the dihole's isotropic U^2 >= 1) light is no faster than 1 in coordinates;
+// the sphere's coordinate extent is within its proper radius, so its
+// centre's box grown by 2R holds it.  Throws std::invalid_argument.
+void check_worldline_lasts(const Sphere& sp, const Vec4& observer) {
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double lo = sp.life_lo[k] - 2.0 * sp.spec.radius, hi = sp.life_hi[k] + 2.0 * sp.spec.radius;
+    const double out = std::max({lo - observer[k + 1], observer[k + 1] - hi, 0.0});
+    d2 += out * out;
+  }
+  const double latest = observer[0] - std::sqrt(d2);
+  const Worldline& w = *sp.worldline;
+  if (latest <= w.end_time()) return;
+  throw std::invalid_argument(fmt::format(
+      "a sphere's worldline ({}) ends {:.4g} M of coordinate time before this frame's rays may last meet the sphere "
+      "(after it the sphere would vanish): lengthen its duration ({:.6g} of proper time)",
+      sp.spec.worldline->where, latest - w.end_time(), w.duration()));
+}
+
 template <class S>
 Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResources& res, const RayOptions& rays) {
   const std::string here = describe(fs.spacetime);
@@ -164,6 +188,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
       }
     }
     sp.bounds(-1e300, 1e300, sp.life_lo, sp.life_hi);
+    if (sp.worldline) check_worldline_lasts(sp, sc.observer);
     sc.spheres.push_back(std::move(sp));
   }
   sc.rays.free_radius = free_radius(sc);
@@ -190,6 +215,15 @@ Scene build_scene(const FrameScene& fs, int width, int height, ShotResources& re
   Spacetime st = fs.spacetime;
   if (auto* k = std::get_if<Kerr>(&st)) *k = k->with_sense(KerrSchildSense::outgoing);
   return std::visit([&](const auto& s) { return build(s, fs, width, height, resources, rays); }, st);
+}
+
+Scene build_frame_scene(const FrameScene& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
+                        ShotResources& resources, const RayOptions& rays) {
+  try {
+    return build_scene(fs, width, height, resources, rays);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("{}: frame {}: {}", shot_file.string(), frame, e.what()));
+  }
 }
 
 }  // namespace lc

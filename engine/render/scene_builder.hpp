@@ -42,4 +42,9 @@ class ShotResources {
 Scene build_scene(const FrameScene& fs, int width, int height, ShotResources& resources,
                   const RayOptions& rays = RayOptions{});
 
+// build_scene for frame `frame` of the shot in `shot_file`: what render,
+// trace and inspect all do, errors naming the file and the frame.
+Scene build_frame_scene(const FrameScene& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
+                        ShotResources& resources, const RayOptions& rays = RayOptions{});
+
 }  // namespace lc

@@ -8,12 +8,27 @@
 
 namespace lc {
 
-namespace {
-
-std::string num(double v) {
+std::string json_number(double v) {
   if (!std::isfinite(v)) return "null";
   return fmt::format("{:.12g}", v);
 }
+
+std::string json_position(const Vec4& p, bool polar) {
+  const auto num = json_number;
+  if (polar)
+    return fmt::format("{{\"t\": {}, \"r\": {}, \"theta\": {}, \"phi\": {}}}", num(p[0]), num(p[1]), num(p[2] / degree),
+                       num(p[3] / degree));
+  return fmt::format("{{\"t\": {}, \"x\": {}, \"y\": {}, \"z\": {}}}", num(p[0]), num(p[1]), num(p[2]), num(p[3]));
+}
+
+std::string json_components(const Vec4& v) {
+  return fmt::format("[{}, {}, {}, {}]", json_number(v[0]), json_number(v[1]), json_number(v[2]), json_number(v[3]));
+}
+
+namespace {
+
+const auto num = json_number;
+const auto position = json_position;
 
 std::string color(const Color& c) { return fmt::format("[{}, {}, {}]", num(c[0]), num(c[1]), num(c[2])); }
 
@@ -28,13 +43,6 @@ std::string quoted(const std::string& s) {
     out += c;
   }
   return out + "\"";
-}
-
-std::string position(const Vec4& p, bool polar) {
-  if (polar)
-    return fmt::format("{{\"t\": {}, \"r\": {}, \"theta\": {}, \"phi\": {}}}", num(p[0]), num(p[1]), num(p[2] / degree),
-                       num(p[3] / degree));
-  return fmt::format("{{\"t\": {}, \"x\": {}, \"y\": {}, \"z\": {}}}", num(p[0]), num(p[1]), num(p[2]), num(p[3]));
 }
 
 std::string spacetime(const Spacetime& st) {
@@ -61,7 +69,7 @@ std::string worldline(const WorldlineSpec& w) {
 
 }  // namespace
 
-std::string to_json(const FrameScene& fs, int frame) {
+std::string to_json(const FrameScene& fs, int frame, const std::string& evaluated) {
   const bool polar = has_polar_scene(fs.spacetime);
   std::string out = fmt::format("{{\"frame\": {}, \"spacetime\": {}, ", frame, spacetime(fs.spacetime));
   const ObserverSpec& o = fs.observer;
@@ -100,7 +108,9 @@ std::string to_json(const FrameScene& fs, int frame) {
       out += fmt::format("\"worldline\": {}", worldline(*s.worldline));
     out += "}";
   }
-  return out + "]}";
+  out += "]";
+  if (!evaluated.empty()) out += ", \"evaluated\": " + evaluated;
+  return out + "}";
 }
 
 }  // namespace lc

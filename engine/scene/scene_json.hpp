@@ -8,6 +8,14 @@
 
 namespace lc {
 
-std::string to_json(const FrameScene& scene, int frame);
+// The frame's scene as the script gave it; `evaluated`, when not empty, is a
+// JSON object added as the field "evaluated" (what the engine made of it).
+std::string to_json(const FrameScene& scene, int frame, const std::string& evaluated = {});
+
+// Pieces for other JSON reports: a number (null when not finite), a scene
+// position (polar ones with angles in degrees), four components.
+std::string json_number(double v);
+std::string json_position(const Vec4& p, bool polar);
+std::string json_components(const Vec4& v);
 
 }  // namespace lc

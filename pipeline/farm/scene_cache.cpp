@@ -18,11 +18,7 @@ std::shared_ptr<const Scene> SceneCache::build(int frame) {
     std::lock_guard lock(lua_mutex_);
     fs = shot_.frame(frame);
   }
-  try {
-    return std::make_shared<const Scene>(build_scene(fs, width_, height_, resources_));
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(fmt::format("{}: frame {}: {}", shot_.file().string(), frame, e.what()));
-  }
+  return std::make_shared<const Scene>(build_frame_scene(fs, shot_.file(), frame, width_, height_, resources_));
 }
 
 std::shared_ptr<const Scene> SceneCache::get(int frame) {

@@ -44,6 +44,32 @@ shot ergo "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_obser
 expect_error ergo "ergo.lua: frame 0: observer: static observer: no static observer exists here (inside the ergoregion" -- "$LIGHTCONE" render ergo.lua --out out
 shot inside "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.zamo{r = 1.2, theta = 90, phi = 0},"
 expect_error inside "inside a horizon" -- "$LIGHTCONE" render inside.lua --out out
+# inspect refuses what render refuses (it builds each scene, short of tracing).
+expect_error inspect_ergo "ergo.lua: frame 0: observer: static observer: no static observer exists here" -- "$LIGHTCONE" inspect ergo.lua
+expect_error inspect_inside "inside.lua: frame 0: observer: ZAMO: the position is inside a horizon" -- "$LIGHTCONE" inspect inside.lua
+expect_error inspect_texture "sky image 'nope.png' not found" -- "$LIGHTCONE" inspect missing_texture.lua
+cat >"$WORK/spin_changed.lua" <<'LUA'
+local lc = require "lightcone"
+local fall = lc.worldline{spacetime = lc.kerr{mass = 1, spin = 0.9}, start = {r = 12, theta = 90, phi = 0}, duration = 20}
+return {name = "spin_changed", frames = 2, width = 8, height = 8, frame = function(i) return {
+  spacetime = lc.kerr{mass = 1, spin = 0.9 - 0.4 * i},
+  observer = lc.static_observer{r = 30, theta = 80, phi = 0},
+  objects = {lc.sphere{radius = 1, worldline = fall}},
+} end}
+LUA
+expect_error inspect_spin "spin_changed.lua: frame 1: spin_changed.lua:2: a sphere's worldline (spin_changed.lua:2) was made in kerr(mass=1, spin=0.9)" -- "$LIGHTCONE" inspect spin_changed.lua
+# A sphere whose worldline ends before the frame's rays may meet it would vanish.
+cat >"$WORK/short_worldline.lua" <<'LUA'
+local lc = require "lightcone"
+local flat = lc.minkowski()
+local drift = lc.worldline{spacetime = flat, start = {x = 5, y = 0, z = 0}, velocity = {x = 0, y = 0, z = 0.1}, duration = 10}
+return {name = "short_worldline", frames = 1, width = 8, height = 8, frame = function(i) return {
+  spacetime = flat, time = 100, observer = lc.static_observer{x = 0, y = 20, z = 0},
+  objects = {lc.sphere{radius = 1, worldline = drift}},
+} end}
+LUA
+expect_error short_worldline "short_worldline.lua: frame 0: a sphere's worldline (short_worldline.lua:3) ends" -- "$LIGHTCONE" render short_worldline.lua --out out
+expect_error short_worldline_hint "lengthen its duration" -- "$LIGHTCONE" inspect short_worldline.lua
 shot nan "$good_kerr camera = lc.camera{fov = 0/0},"
 expect_error nan "nan.lua:5: camera: field 'fov' is nan" -- "$LIGHTCONE" render nan.lua --out out
 shot wide "$good_kerr camera = lc.camera{fov = 200},"

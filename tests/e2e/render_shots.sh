@@ -51,6 +51,15 @@ assert [s['frame'] for s in d['scenes']] == [0, 5], [s['frame'] for s in d['scen
 th0 = d['scenes'][0]['observer']['position']['theta']
 assert abs(th0 - 10) < 1e-9, th0
 assert d['scenes'][1]['observer']['position']['theta'] > th0
+# What the engine made of it: the event, the tetrad, the camera's axes
+# (looking at the hole: forward = -e1, up = -e2, right = e3).
+for s in d['scenes']:
+  ev = s['evaluated']
+  assert ev['observer']['event'] == s['observer']['position'], ev['observer']['event']
+  t = ev['observer']['tetrad']
+  for axis, leg, sign in (('forward', 'e1', -1), ('up', 'e2', -1), ('right', 'e3', 1)):
+    assert all(abs(a - sign * b) < 1e-12 for a, b in zip(ev['camera'][axis], t[leg])), (axis, ev['camera'][axis], t[leg])
+  assert t['e0'][0] > 1 and t['e1'][1] > 0, t
 " || fail "inspect JSON"
 
 # trace: the centre pixel of the Kerr bench at 48x32 looks into the shadow.

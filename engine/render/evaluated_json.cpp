@@ -1,0 +1,37 @@
+#include "render/evaluated_json.hpp"
+
+#include <fmt/format.h>
+
+#include "scene/scene_json.hpp"
+
+namespace lc {
+
+namespace {
+
+template <class S>
+std::string evaluated(const SceneOf<S>& sc) {
+  const bool polar = std::is_same_v<S, Kerr>;
+  const S& st = sc.spacetime;
+  auto leg = [&](const Vec4& v) { return json_components(st.scene_vector(sc.observer, v)); };
+  // A camera axis (components on the spatial legs) as a vector.
+  auto axis = [&](const Vec3& d) {
+    Vec4 v{};
+    for (int i = 0; i < 3; ++i) v = v + d[i] * sc.frame.e[i + 1];
+    return leg(v);
+  };
+  return fmt::format(
+      "{{\"observer\": {{\"event\": {}, \"tetrad\": {{\"e0\": {}, \"e1\": {}, \"e2\": {}, \"e3\": {}}}}}, "
+      "\"camera\": {{\"forward\": {}, \"up\": {}, \"right\": {}}}, "
+      "\"rays\": {{\"escape_radius\": {}, \"free_radius\": {}}}}}",
+      json_position(sc.observer_scene, polar), leg(sc.frame.e[0]), leg(sc.frame.e[1]), leg(sc.frame.e[2]),
+      leg(sc.frame.e[3]), axis(sc.camera.forward()), axis(sc.camera.up()), axis(sc.camera.right()),
+      json_number(sc.rays.escape_radius), json_number(sc.rays.free_radius));
+}
+
+}  // namespace
+
+std::string evaluated_json(const Scene& scene) {
+  return std::visit([](const auto& sc) { return evaluated(sc); }, scene);
+}
+
+}  // namespace lc
