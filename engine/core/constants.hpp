@@ -2,6 +2,7 @@
 // Every numerical constant and default the engine uses lives here, so that a
 // tolerance or a threshold is changed in one place and cited from one place.
 
+#include <cstddef>
 #include <numbers>
 
 namespace lc {
@@ -70,6 +71,19 @@ inline constexpr double free_flight_relaxation = 100.0;
 // below in steps too small to take (they gave up, measured).  Starting
 // them on the axis moves them by r |sin(theta)|: 3e-5 M at r = 30.
 inline constexpr double spin_axis_sine = 1e-6;
+
+// What a shot may ask the engine to hold in memory (docs/shots.md, "Limits").
+// A process keeps the worldlines, sky images and star fields of the frames
+// it works on within shot_resource_budget, releasing those no scene uses,
+// least recently used first.  One worldline is held at ~9.5 KB per M of
+// proper time (~13.5 KB while it is integrated: 0.05 M samples with their
+// tetrads, and a coordinate-time table of twice as many), so the longest
+// costs ~270 MB; a star field or sky image 12 bytes a pixel (linear float
+// RGB), at most ~400 MB and 1.5 GiB.
+inline constexpr std::size_t shot_resource_budget = std::size_t{4} << 30;
+inline constexpr double max_worldline_duration = 20000.0;
+inline constexpr int max_star_field_width = 8192;
+inline constexpr long max_sky_image_pixels = 16384L * 8192L;
 
 // Default safety bound on the number of accepted steps of one ray.
 inline constexpr long default_max_steps = 100000;

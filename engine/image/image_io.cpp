@@ -265,7 +265,7 @@ FrameImage read_image_linear(const std::filesystem::path& path) {
 
 // Opens by content (any extension), checks the size before allocating,
 // reads at most four channels and converts them to linear RGB.
-FrameImage detail::read_linear_rgb(const std::filesystem::path& path, const char* what) {
+FrameImage detail::read_linear_rgb(const std::filesystem::path& path, const char* what, long max_pixels) {
   check_readable(path, what);
   // Ask for alpha as stored so it can be applied in linear light below
   // (OIIO would otherwise premultiply the sRGB-encoded values).
@@ -275,6 +275,12 @@ FrameImage detail::read_linear_rgb(const std::filesystem::path& path, const char
   if (!in) fail(what, path, "not an image OpenImageIO can read (" + oiio_reason(OIIO::geterror()) + ")");
   const OIIO::ImageSpec spec = in->spec();
   check_size(spec.width, spec.height, what, path);
+  if (long{spec.width} * spec.height > max_pixels)
+    fail(what, path,
+         "image too large (" + size_text(spec.width, spec.height) + "; at most " + std::to_string(max_pixels) +
+             " pixels, e.g. " + size_text(static_cast<long>(std::sqrt(2.0 * max_pixels)),
+                                          static_cast<long>(std::sqrt(0.5 * max_pixels))) +
+             ": it is held as float RGB, 12 bytes a pixel)");
   if (spec.depth != 1) fail(what, path, "a volume image, not a 2D image");
   if (spec.nchannels < 1) fail(what, path, "image has no channels");
 

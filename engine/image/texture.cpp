@@ -10,8 +10,8 @@
 namespace lc {
 
 // Everything format- and colour-related is the shared reader's job.
-Texture Texture::load(const std::filesystem::path& path) {
-  FrameImage image = detail::read_linear_rgb(path, "cannot load texture");
+Texture Texture::load(const std::filesystem::path& path, long max_pixels) {
+  FrameImage image = detail::read_linear_rgb(path, "cannot load texture", max_pixels);
   return Texture(image.width, image.height, std::move(image.rgb));
 }
 

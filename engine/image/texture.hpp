@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "image/frame_image.hpp"
+
 namespace lc {
 
 class Texture {
@@ -19,8 +21,9 @@ class Texture {
   // is sRGB and floating point is linear; grey is replicated; alpha
   // composites over black).  Throws std::runtime_error naming the file for a
   // missing or unreadable file, a file that is not an image, a zero-size
-  // image or one above max_image_side (frame_image.hpp) a side.
-  static Texture load(const std::filesystem::path& path);
+  // image or one above max_image_side (frame_image.hpp) a side, or one of
+  // more than max_pixels pixels (checked before any is read).
+  static Texture load(const std::filesystem::path& path, long max_pixels = long{max_image_side} * max_image_side);
 
   // A texture from linear RGB pixels (3 floats a pixel, row 0 at the top),
   // for procedural skies and tests.  Throws std::invalid_argument when the
@@ -29,6 +32,7 @@ class Texture {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  std::size_t bytes() const { return rgb_.size() * sizeof(float); }
 
   // Bilinear lookup at texture coordinates (u, v): u is periodic (any real
   // value wraps into [0, 1), so phi / 2 pi needs no care at the seam), v is

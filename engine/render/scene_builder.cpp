@@ -8,18 +8,45 @@
 
 namespace lc {
 
-ShotResources::ShotResources(std::vector<std::filesystem::path> asset_dirs) : asset_dirs_(std::move(asset_dirs)) {}
+ShotResources::ShotResources(std::vector<std::filesystem::path> asset_dirs, std::size_t budget)
+    : asset_dirs_(std::move(asset_dirs)), budget_(budget) {}
 
-std::shared_ptr<const Worldline> ShotResources::worldline(const WorldlineSpec& spec) {
-  const std::string key = spec.key();
+template <class T, class Make>
+std::shared_ptr<const T> ShotResources::get(const std::string& key, const char* what, Make&& make) {
   {
     std::lock_guard lock(mutex_);
-    if (auto it = worldlines_.find(key); it != worldlines_.end()) return it->second;
+    if (auto it = entries_.find(key); it != entries_.end()) {
+      it->second.last_use = ++uses_;
+      return std::static_pointer_cast<const T>(it->second.value);
+    }
   }
-  // Integrate outside the lock; a racing duplicate is harmless (same result).
-  auto w = std::make_shared<const Worldline>(Worldline::integrate(spec));
+  // Made outside the lock; a racing duplicate is harmless (the same result).
+  auto [value, bytes] = make();
   std::lock_guard lock(mutex_);
-  return worldlines_.emplace(key, std::move(w)).first->second;
+  if (auto it = entries_.find(key); it != entries_.end()) return std::static_pointer_cast<const T>(it->second.value);
+  while (bytes_ + bytes > budget_) {
+    auto lru = entries_.end();
+    for (auto it = entries_.begin(); it != entries_.end(); ++it)
+      if (it->second.value.use_count() == 1 && (lru == entries_.end() || it->second.last_use < lru->second.last_use))
+        lru = it;
+    if (lru == entries_.end())
+      throw std::invalid_argument(fmt::format(
+          "{} ({:.0f} MiB) does not fit beside the worldlines, sky images and star fields in use ({:.0f} MiB): a "
+          "process holds at most {:.0f} MiB of them (docs/shots.md, Limits)",
+          what, bytes / 1048576.0, bytes_ / 1048576.0, budget_ / 1048576.0));
+    bytes_ -= lru->second.bytes;
+    entries_.erase(lru);
+  }
+  bytes_ += bytes;
+  entries_[key] = Entry{value, bytes, ++uses_};
+  return value;
+}
+
+std::shared_ptr<const Worldline> ShotResources::worldline(const WorldlineSpec& spec) {
+  return get<Worldline>("worldline " + spec.key(), "a worldline", [&] {
+    auto w = std::make_shared<const Worldline>(Worldline::integrate(spec));
+    return std::pair{w, w->bytes()};
+  });
 }
 
 std::shared_ptr<const Texture> ShotResources::texture(const std::filesystem::path& file) {
@@ -40,30 +67,30 @@ std::shared_ptr<const Texture> ShotResources::texture(const std::filesystem::pat
   }
   {
     std::lock_guard lock(mutex_);
-    if (auto it = textures_.find(found); it != textures_.end()) return it->second;
+    files_.insert(found);
   }
-  auto t = std::make_shared<const Texture>(Texture::load(found));
-  std::lock_guard lock(mutex_);
-  return textures_.emplace(found, std::move(t)).first->second;
+  return get<Texture>("texture " + found.string(), "a sky image", [&] {
+    auto t = std::make_shared<const Texture>(Texture::load(found, max_sky_image_pixels));
+    return std::pair{t, t->bytes()};
+  });
 }
 
 std::shared_ptr<const Texture> ShotResources::starfield(std::uint32_t seed, int width) {
-  const auto key = std::pair{seed, width};
-  {
-    std::lock_guard lock(mutex_);
-    if (auto it = starfields_.find(key); it != starfields_.end()) return it->second;
-  }
-  FrameImage img = render_starfield(width, width / 2, seed);
-  auto t = std::make_shared<const Texture>(Texture::from_pixels(img.width, img.height, std::move(img.rgb)));
-  std::lock_guard lock(mutex_);
-  return starfields_.emplace(key, std::move(t)).first->second;
+  return get<Texture>(fmt::format("stars {} {}", seed, width), "a star field", [&] {
+    FrameImage img = render_starfield(width, width / 2, seed);
+    auto t = std::make_shared<const Texture>(Texture::from_pixels(img.width, img.height, std::move(img.rgb)));
+    return std::pair{t, t->bytes()};
+  });
 }
 
 std::vector<std::filesystem::path> ShotResources::files() const {
   std::lock_guard lock(mutex_);
-  std::vector<std::filesystem::path> out;
-  for (const auto& [path, tex] : textures_) out.push_back(path);
-  return out;
+  return {files_.begin(), files_.end()};
+}
+
+std::size_t ShotResources::bytes() const {
+  std::lock_guard lock(mutex_);
+  return bytes_;
 }
 
 namespace {

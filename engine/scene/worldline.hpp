@@ -50,6 +50,11 @@ class Worldline {
   void bounds(double t0, double t1, Vec3& lo, Vec3& hi) const;
 
   const Spacetime& spacetime() const { return spacetime_; }
+  // Memory held by the samples and tables (for ShotResources' budget).
+  std::size_t bytes() const {
+    return samples_.capacity() * sizeof(Sample) + by_time_.capacity() * sizeof(TimeSample) +
+           chunk_bounds_.capacity() * sizeof(chunk_bounds_[0]);
+  }
 
   // Events where the distance from the origin (Boyer–Lindquist r for Kerr,
   // |x| otherwise) has a local maximum, in order: the turning points of an

@@ -140,7 +140,7 @@ SkySpec read_sky(TableReader& t) {
   } else if (k == "sky_stars") {
     s.kind = SkyKind::stars;
     s.seed = static_cast<std::uint32_t>(count(t, "seed", 1, 0, 2147483647));
-    s.resolution = count(t, "resolution", s.resolution, 64, 16384);
+    s.resolution = count(t, "resolution", s.resolution, 64, max_star_field_width);
   } else {
     fail(t, "expected a value made by lc.sky_checker{...}, lc.sky_stars{...}, lc.sky_image{...} or lc.starfield{...}");
   }
@@ -161,6 +161,10 @@ WorldlineSpec read_worldline(TableReader& t) {
   if (!(norm3(w.velocity) < 1.0))
     fail(t, fmt::format("|velocity| = {} must be below the speed of light (1)", norm3(w.velocity)));
   w.duration = positive(t, "duration");
+  if (w.duration > max_worldline_duration)
+    fail(t, fmt::format("field 'duration' must be at most {:g} M of proper time, got {:g} (a worldline is held in "
+                        "memory, ~9.5 KB per M: docs/shots.md, Limits)",
+                        max_worldline_duration, w.duration));
   t.finish();
   return w;
 }

@@ -70,6 +70,18 @@ return {name = "short_worldline", frames = 1, width = 8, height = 8, frame = fun
 LUA
 expect_error short_worldline "short_worldline.lua: frame 0: a sphere's worldline (short_worldline.lua:3) ends" -- "$LIGHTCONE" render short_worldline.lua --out out
 expect_error short_worldline_hint "lengthen its duration" -- "$LIGHTCONE" inspect short_worldline.lua
+# What a shot may make the engine hold is bounded (docs/shots.md, Limits).
+cat >"$WORK/long_worldline.lua" <<'LUA'
+local lc = require "lightcone"
+local w = lc.worldline{spacetime = lc.minkowski(), start = {x = 5, y = 0, z = 0}, duration = 49000}
+return {name = "long_worldline", frames = 1, width = 8, height = 8, frame = function(i) return {
+  spacetime = lc.minkowski(), observer = lc.static_observer{x = 0, y = 20, z = 0},
+  objects = {lc.sphere{radius = 1, worldline = w}},
+} end}
+LUA
+expect_error long_worldline "long_worldline.lua:2: worldline: field 'duration' must be at most 20000 M of proper time, got 49000" -- "$LIGHTCONE" render long_worldline.lua --out out
+shot big_stars "$good_kerr sky = lc.sky_stars{resolution = 16384},"
+expect_error big_stars "big_stars.lua:5: sky_stars: field 'resolution' must be between 64 and 8192, got 16384" -- "$LIGHTCONE" render big_stars.lua --out out
 shot nan "$good_kerr camera = lc.camera{fov = 0/0},"
 expect_error nan "nan.lua:5: camera: field 'fov' is nan" -- "$LIGHTCONE" render nan.lua --out out
 shot wide "$good_kerr camera = lc.camera{fov = 200},"

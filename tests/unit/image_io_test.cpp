@@ -322,6 +322,14 @@ TEST(Texture, LoadErrorsNameTheFileAndTheReason) {
   msg = error_of([&] { Texture::load(huge); });
   EXPECT_NE(msg.find(huge.string()), std::string::npos) << msg;
   EXPECT_NE(msg.find("too large"), std::string::npos) << msg;
+
+  // A pixel budget (a shot's sky images: docs/shots.md, Limits) is checked
+  // from the header, before the pixels are read.
+  const fs::path wide = dir / "wide.png";
+  write_with_oiio(wide, 300, 100, 1, OIIO::TypeDesc::UINT8, std::vector<float>(30000, 0.5f));
+  msg = error_of([&] { Texture::load(wide, 20000); });
+  EXPECT_NE(msg.find("image too large (300 x 100; at most 20000 pixels, e.g. 200 x 100"), std::string::npos) << msg;
+  EXPECT_EQ(Texture::load(wide, 30000).width(), 300);
 }
 
 TEST(Texture, FromPixelsChecksItsInput) {
