@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "render/scene_builder.hpp"
-#include "render/trace_batch.hpp"
+#include "render/trace.hpp"
 #include "scene/shot.hpp"
 
 namespace lc {

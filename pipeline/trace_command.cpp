@@ -10,6 +10,7 @@
 #include "geodesic_csv.hpp"
 #include "render/scene_builder.hpp"
 #include "render_command.hpp"
+#include "render/trace.hpp"
 #include "scene/shot.hpp"
 
 namespace lc {

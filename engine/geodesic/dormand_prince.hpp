@@ -6,8 +6,12 @@
 // II.6 (DOPRI5), with Shampine's dense-output coefficients.  FSAL: six
 // right-hand-side evaluations per accepted step.
 //
-// Header-only and templated on the state size and the right-hand side so the
-// metric inlines into the stages; nothing is allocated per step.
+// Header-only and templated on the state size, the right-hand side and the
+// number of problems advanced at once (core/lanes.hpp: one in doubles, or
+// one per vector lane, each with its own time, step size, controller and
+// tolerances), so the metric inlines into the stages; nothing is allocated
+// per step.  The arithmetic is written once for both: a lane computes what
+// a single problem does.
 
 #include <algorithm>
 #include <array>
@@ -17,12 +21,14 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "core/lanes.hpp"
+
 namespace lc {
 
 namespace detail {
 
 // The controller's arithmetic is generic in T: double, or a GCC vector of
-// doubles (one independent problem per lane, dormand_prince_lanes.hpp).
+// doubles (one independent problem per lane, core/lanes.hpp).
 // Bits<T>: the signed 64-bit integer type of T's shape.
 template <class T>
 struct Bits {
@@ -121,19 +127,6 @@ inline constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 
                         d4 = -10690763975.0 / 1880347072.0, d5 = 701980252875.0 / 199316789632.0,
                         d6 = -1453857185.0 / 822651844.0, d7 = 69997945.0 / 29380423.0;
 inline constexpr double beta = 0.04, expo1 = 0.2 - beta * 0.75, safe = 0.9, fac_min = 0.2, fac_max = 10.0;
-
-// |x| and max for double and for vectors of lanes (GCC vector extensions,
-// whose comparisons select lane by lane).
-inline double abs_of(double x) { return std::abs(x); }
-inline double max_of(double x, double y) { return std::max(x, y); }
-template <class T>
-T abs_of(T x) {
-  return x < T{} ? -x : x;
-}
-template <class T>
-T max_of(T x, T y) {
-  return x > y ? x : y;
-}
 
 // The stages of one attempt from (t, y) with slope k1 and step h: the
 // 5th-order solution y7 and the slopes k3..k7 that the error estimate and
@@ -251,63 +244,174 @@ struct Controller {
 
 }  // namespace dp5
 
-// Rhs: void(double t, const State& y, State& dydt).  Weights: per-component
-// factor on the error estimate (0 excludes a component from step control).
-template <std::size_t N, class Rhs>
+// W problems of N components at once (core/lanes.hpp: W = 1 is one problem
+// in doubles).  Rhs: void(T t, const std::array<T, N>& y, std::array<T, N>&
+// dydt) with T = Lanes<W>; it may hold per-lane constants the caller sets
+// before start().  Weights: per-component factor on the error estimate (0
+// excludes a component from step control).
+template <std::size_t N, class Rhs, int W = 1>
 class DormandPrince5 {
  public:
+  using T = Lanes<W>;
+  using Vector = std::array<T, N>;
   using State = std::array<double, N>;
 
-  DormandPrince5(Rhs rhs, StepControl control, State weights) : rhs_(rhs), c_(control), w_(weights) {}
-
-  // Starts at (t, y) with a first trial step h (sign gives the direction).
-  void reset(double t, const State& y, double h) {
-    t_ = t;
-    y_ = y;
-    h_ = h;
-    control_.reset();
-    rhs_(t_, y_, k1_);
+  DormandPrince5(Rhs rhs, const StepControl& control, const State& weights) : rhs_(rhs), c_(control), w_(weights) {
+    atol_ = T{} + c_.atol;
+    rtol_ = T{} + c_.rtol;
   }
 
-  // New tolerances from the next step on (the state and step size are kept).
-  void set_control(const StepControl& control) { c_ = control; }
+  // Lane i starts at y0 with slope k0 and first trial step h (its sign gives
+  // the direction), at the control's tolerances.
+  void start(int i, const State& y0, const State& k0, double h) {
+    put(y_, i, y0);
+    put(k1_, i, k0);
+    t_[i] = 0.0;
+    h_[i] = h;
+    set_lane(atol_, i, c_.atol);
+    set_lane(rtol_, i, c_.rtol);
+    control_[i].reset();
+    live_[i] = true;
+  }
+  // Lane i idles at a state whose right-hand side is finite (k0 its slope).
+  void stop(int i, const State& idle, const State& k0) {
+    put(y_, i, idle);
+    put(k1_, i, k0);
+    live_[i] = false;
+  }
+  // Lane i's tolerances times `factor` from its next attempt on.
+  void relax(int i, double factor) {
+    set_lane(atol_, i, get_lane(atol_, i) * factor);
+    set_lane(rtol_, i, get_lane(rtol_, i) * factor);
+  }
 
-  double t() const { return t_; }
-  const State& y() const { return y_; }
-  const State& dydt() const { return k1_; }
-  double step_size() const { return h_; }
-  long rejected() const { return rejected_; }
+  double t(int i) const { return t_[i]; }
+  State y(int i) const {
+    State s;
+    for (std::size_t j = 0; j < N; ++j) s[j] = get_lane(y_[j], i);
+    return s;
+  }
+  // Component j of lane i's state and of its slope there.
+  double y(int i, std::size_t j) const { return get_lane(y_[j], i); }
+  double slope(int i, std::size_t j) const { return get_lane(k1_[j], i); }
 
-  // Advances by one accepted step and fills `dense`.  Returns false when the
-  // step size falls below h_min (the integrator gives up).
-  bool step(DenseStep<N>& dense) {
-    State y7, k3, k4, k5, k6, k7;
-    for (;;) {
-      const double h = h_;
-      if (std::abs(h) < c_.h_min) return false;
-      dp5::stages(rhs_, t_, y_, k1_, h, y7, k3, k4, k5, k6, k7);
-      const double err = std::sqrt(dp5::error_sum(y_, y7, k1_, k3, k4, k5, k6, k7, h, w_, c_.atol, c_.rtol) / static_cast<double>(N));
-      if (control_.decide(err, h, c_, h_)) {
-        dense.t0 = t_;
-        dense.h = h;
-        dp5::dense_coefficients(y_, y7, k1_, k3, k4, k5, k6, k7, h, dense.r1, dense.r2, dense.r3, dense.r4, dense.r5);
-        t_ += h;
-        y_ = y7;
-        k1_ = k7;
-        return true;
-      }
-      ++rejected_;
+  // One attempt on every live lane.  A lane whose step fell below h_min
+  // calls gave_up(i); an accepted step advances the lane and calls
+  // accepted(i, dense) (the callbacks may start() or stop() lane i); a
+  // rejected one only shrinks the lane's step.  Returns false when no lane
+  // is live.
+  template <class Accepted, class GaveUp>
+  bool attempt(Accepted&& accepted, GaveUp&& gave_up) {
+    bool any = false;
+    T tv{}, hv{};
+    for (int i = 0; i < W; ++i) {
+      any = any || live_[i];
+      set_lane(tv, i, t_[i]);
+      set_lane(hv, i, live_[i] ? h_[i] : 0.0);
     }
+    if (!any) return false;
+    dp5::stages(rhs_, tv, y_, k1_, hv, y7_, k3_, k4_, k5_, k6_, k7_);
+    const T e2 = dp5::error_sum(y_, y7_, k1_, k3_, k4_, k5_, k6_, k7_, hv, w_, atol_, rtol_);
+    dp5::dense_coefficients(y_, y7_, k1_, k3_, k4_, k5_, k6_, k7_, hv, r1_, r2_, r3_, r4_, r5_);
+    // The controllers' logarithms and powers for all lanes at once (a
+    // tenth of a dihole frame when each lane worked out its own).
+    T log2_err_old{};
+    for (int i = 0; i < W; ++i) set_lane(log2_err_old, i, control_[i].log2_err_old);
+    const dp5::ControllerFactors<T> f = dp5::controller_factors(sqrt_of(e2 / static_cast<double>(N)), log2_err_old);
+    for (int i = 0; i < W; ++i) {
+      if (!live_[i]) continue;
+      const double h = h_[i];
+      if (std::abs(h) < c_.h_min) {
+        gave_up(i);
+        continue;
+      }
+      StepControl c = c_;
+      c.atol = get_lane(atol_, i);
+      c.rtol = get_lane(rtol_, i);
+      double h_next = h;
+      if (!control_[i].decide({get_lane(f.err, i), get_lane(f.log2_err, i), get_lane(f.accept, i), get_lane(f.reject, i)},
+                              h, c, h_next)) {
+        h_[i] = h_next;
+        continue;
+      }
+      step_.t0 = t_[i];
+      step_.h = h;
+      for (std::size_t j = 0; j < N; ++j) {
+        step_.r1[j] = get_lane(r1_[j], i);
+        step_.r2[j] = get_lane(r2_[j], i);
+        step_.r3[j] = get_lane(r3_[j], i);
+        step_.r4[j] = get_lane(r4_[j], i);
+        step_.r5[j] = get_lane(r5_[j], i);
+        set_lane(y_[j], i, get_lane(y7_[j], i));
+        set_lane(k1_[j], i, get_lane(k7_[j], i));
+      }
+      t_[i] += h;
+      h_[i] = h_next;
+      accepted(i, step_);
+    }
+    return true;
+  }
+
+  // One problem (W = 1): starts at (t, y) with a first trial step h.
+  void reset(double t, const State& y, double h)
+    requires(W == 1)
+  {
+    State k;
+    rhs_(t, y, k);
+    start(0, y, k, h);
+    t_[0] = t;
+  }
+  // One problem (W = 1): advances by one accepted step and fills `dense`;
+  // false when the step size fell below h_min (the integrator gives up).
+  bool step(DenseStep<N>& dense)
+    requires(W == 1)
+  {
+    bool done = false, failed = false;
+    while (!done && !failed)
+      attempt(
+          [&](int, const DenseStep<N>& s) {
+            dense = s;
+            done = true;
+          },
+          [&](int) { failed = true; });
+    if (failed) live_[0] = false;
+    return done;
+  }
+  const State& y() const
+    requires(W == 1)
+  {
+    return y_;
+  }
+  const State& dydt() const
+    requires(W == 1)
+  {
+    return k1_;
+  }
+  double t() const
+    requires(W == 1)
+  {
+    return t_[0];
+  }
+  double step_size() const
+    requires(W == 1)
+  {
+    return h_[0];
   }
 
  private:
+  static void put(Vector& v, int i, const State& s) {
+    for (std::size_t j = 0; j < N; ++j) set_lane(v[j], i, s[j]);
+  }
+
   Rhs rhs_;
   StepControl c_;
   State w_;
-  double t_ = 0.0, h_ = 0.0;
-  dp5::Controller control_;
-  State y_{}, k1_{};
-  long rejected_ = 0;
+  Vector y_{}, k1_{}, y7_{}, k3_{}, k4_{}, k5_{}, k6_{}, k7_{}, r1_{}, r2_{}, r3_{}, r4_{}, r5_{};
+  T atol_{}, rtol_{};
+  std::array<double, W> t_{}, h_{};
+  std::array<dp5::Controller, W> control_{};
+  std::array<bool, W> live_{};
+  DenseStep<N> step_;
 };
 
 }  // namespace lc

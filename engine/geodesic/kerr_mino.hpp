@@ -47,8 +47,7 @@
 #include <cmath>
 
 #include "core/constants.hpp"
-#include "geodesic/dormand_prince.hpp"
-#include "geodesic/null_ray.hpp"
+#include "geodesic/ray_loop.hpp"
 #include "geodesic/crossing.hpp"
 #include "geodesic/stop_reason.hpp"
 #include "spacetime/kerr.hpp"
@@ -60,50 +59,70 @@ namespace lc {
 using MinoState = std::array<double, 8>;
 using MinoStep = DenseStep<8>;
 
-// The right-hand side for one ray: the spacetime and the ray's constants.
-struct KerrMinoRhs {
+// One ray's constants of motion and of the chart (doubles).
+struct KerrMinoConstants {
   double M, a, E, L, K;
   double a2, aE, a2E2, L2, alpha;  // alpha = a (a E - L)
   double u_floor2;                 // t and sigma are followed out to r = 1 / u_floor only
   double sign_P = 1.0;             // sgn(Pu): tau = t - sgn(Pu) V
 
-  KerrMinoRhs(double mass, double spin, double energy, double ang_mom, double carter_k, double u_floor)
+  KerrMinoConstants(double mass, double spin, double energy, double ang_mom, double carter_k, double u_floor)
       : M(mass), a(spin), E(energy), L(ang_mom), K(carter_k), a2(spin * spin), aE(spin * energy),
         a2E2(spin * spin * energy * energy), L2(ang_mom * ang_mom), alpha(spin * (spin * energy - ang_mom)),
         u_floor2(u_floor * u_floor) {}
+};
+
+// The right-hand side on T = double (one ray) or a vector of lanes
+// (core/lanes.hpp), lane i holding the constants of the ray set() there
+// (zeros before: a finite right-hand side for an idle lane).
+template <class T>
+struct KerrMinoRhs {
+  T M{}, a{}, E{}, L{}, K{}, a2{}, aE{}, a2E2{}, alpha{}, u_floor2{}, sign_P{};
+
+  void set(int i, const KerrMinoConstants& k) {
+    set_lane(M, i, k.M);
+    set_lane(a, i, k.a);
+    set_lane(E, i, k.E);
+    set_lane(L, i, k.L);
+    set_lane(K, i, k.K);
+    set_lane(a2, i, k.a2);
+    set_lane(aE, i, k.aE);
+    set_lane(a2E2, i, k.a2E2);
+    set_lane(alpha, i, k.alpha);
+    set_lane(u_floor2, i, k.u_floor2);
+    set_lane(sign_P, i, k.sign_P);
+  }
 
   // Inputs: Mino time (unused: Kerr is stationary) and the state; output
   // its derivative.  Assumes r outside the horizon and sin th != 0 unless
   // L = 0.  u may reach 0 and below: the motion in u, th and phi continues
   // analytically through infinity (which is how an escaping ray's direction
-  // at infinity is found), while t and sigma, which grow as 1/u there, stop
+  // at infinity is found), while sigma, which grows as 1/u there, stops
   // being followed beyond 1 / u_floor.
-  void operator()(double, const MinoState& y, MinoState& dy) const {
-    const double u = y[1], c = y[2], s = y[3], U = y[5], w = y[6];
-    const double u2 = u * u;
-    const double Pu = E + alpha * u2;
-    const double inv_D = 1.0 / (1.0 - 2.0 * M * u + a2 * u2);
-    const double inv_u2 = 1.0 / std::max(u2, u_floor2);
-    const double s2 = s * s;
-    const double L_s2 = L == 0.0 ? 0.0 : L / s2;  // L / sin^2 (0 on the axis when L = 0)
-    const double W = std::sqrt(std::max(0.0, Pu * Pu - u2 * (1.0 - 2.0 * M * u + a2 * u2) * K));
-    dy[0] = a * (L - aE * s2) + sign_P * (1.0 + a2 * u2) * K / (std::abs(Pu) + W);
+  void operator()(T, const std::array<T, 8>& y, std::array<T, 8>& dy) const {
+    const T zero = T{} + 0.0, one = T{} + 1.0;
+    const T u = y[1], c = y[2], s = y[3], U = y[5], w = y[6];
+    const T u2 = u * u;
+    const T Pu = E + alpha * u2;
+    const T inv_D = one / (one - 2.0 * M * u + a2 * u2);
+    const T inv_u2 = one / (u2 > u_floor2 ? u2 : u_floor2);
+    const T s2 = s * s;
+    const T L_s2 = L == zero ? zero : L / s2;  // L / sin^2 (0 on the axis when L = 0)
+    const T W2 = Pu * Pu - u2 * (one - 2.0 * M * u + a2 * u2) * K;
+    const T W = sqrt_of(W2 > zero ? W2 : zero);
+    dy[0] = a * (L - aE * s2) + sign_P * (one + a2 * u2) * K / (abs_of(Pu) + W);
     dy[1] = U;
     dy[2] = -s * w;
     dy[3] = c * w;
     dy[4] = L_s2 - aE + a * Pu * inv_D;
-    dy[5] = 2.0 * alpha * u * Pu - K * u * (1.0 - 3.0 * M * u + 2.0 * a2 * u2);
+    dy[5] = 2.0 * alpha * u * Pu - K * u * (one - 3.0 * M * u + 2.0 * a2 * u2);
     dy[6] = c * s * (L_s2 * L_s2 - a2E2);  // c (L^2 / s^3 - a^2 E^2 s)
     dy[7] = inv_u2 + a2 * c * c;           // d sigma / d lambda = Sigma
   }
 };
 
-struct MinoResult {
-  StopReason reason = StopReason::gave_up;
-  MinoState y{};
-  double lambda = 0.0;  // Mino time at the end
-  long steps = 0;
-};
+// Mino time, the end state in MinoState form: run_rays' result.
+using MinoResult = RayResult;
 
 // A ray's start: its constants and initial state, from a Boyer–Lindquist
 // event s = (t, r, th, phi) and covariant momentum p (BL components, any
@@ -111,8 +130,19 @@ struct MinoResult {
 // for any momentum there; it is then taken as exactly 0.  t and sigma are
 // followed out to twice `escape_radius`.
 struct KerrMinoStart {
-  KerrMinoRhs rhs;
+  KerrMinoConstants k;
   MinoState y0;
+  // The slope at the start.
+  MinoState slope() const {
+    KerrMinoRhs<double> rhs;
+    rhs.set(0, k);
+    MinoState dy;
+    rhs(0.0, y0, dy);
+    return dy;
+  }
+  // The first trial step in Mino time: ~1/r^2 of the affine parameter, so
+  // the same as the Kerr–Schild path's first step in sigma.
+  double first_step() const { return 1e-2 * std::min(1.0, y0[1]); }
 };
 inline KerrMinoStart kerr_mino_start(double M, double a, const Vec4& s, const Vec4& p,
                                      double escape_radius = default_escape_radius) {
@@ -123,17 +153,16 @@ inline KerrMinoStart kerr_mino_start(double M, double a, const Vec4& s, const Ve
   const double D = 1.0 - 2.0 * M * u + a * a * u * u;  // Delta / r^2
   const double Q = p[2] * p[2] - a * a * E * E * c * c + (L == 0.0 ? 0.0 : L * L * c * c / (sn * sn));
   const double K = Q + (L - a * E) * (L - a * E);
+  KerrMinoConstants k(M, a, E, L, K, 0.5 / escape_radius);
+  k.sign_P = E + k.alpha * u * u < 0.0 ? -1.0 : 1.0;
   // du/dl = -u^2 dr/dl = -u^2 Delta p_r = -D p_r.
-  KerrMinoRhs rhs(M, a, E, L, K, 0.5 / escape_radius);
-  rhs.sign_P = E + rhs.alpha * u * u < 0.0 ? -1.0 : 1.0;
-  // du/dl = -u^2 dr/dl = -u^2 Delta p_r = -D p_r.
-  return {rhs, {s[0], u, c, sn, s[3], -D * p[1], p[2], 0.0}};
+  return {k, {s[0], u, c, sn, s[3], -D * p[1], p[2], 0.0}};
 }
 
 // The BL event and covariant momentum of a state, with th in [0, pi] and
 // phi in [0, 2 pi) (a state with sin th < 0 is the point (-th, phi + pi)),
 // and s[0] = tau: MinoClock::time gives t.
-inline void kerr_mino_event(const KerrMinoRhs& k, const MinoState& y, Vec4& s, Vec4& p) {
+inline void kerr_mino_event(const KerrMinoConstants& k, const MinoState& y, Vec4& s, Vec4& p) {
   const bool flip = y[3] < 0.0;
   const double th = std::atan2(std::abs(y[3]), y[2]);
   double phi = std::fmod(y[4] + (flip ? pi : 0.0), two_pi);
@@ -152,7 +181,7 @@ inline void kerr_mino_event(const KerrMinoRhs& k, const MinoState& y, Vec4& s, V
 // steps before it on the same leg.
 class MinoClock {
  public:
-  MinoClock(const KerrMinoRhs& k, double u0) : k_(k), u_leg_(u0), r_star_leg_(r_star(u0)) {}
+  MinoClock(const KerrMinoConstants& k, double u0) : k_(k), u_leg_(u0), r_star_leg_(r_star(u0)) {}
 
   // The step [step.t0, l1] (l1 <= its end): closes the previous step's turn
   // and finds this one's, where du/dl changes sign (one per step at most:
@@ -184,7 +213,7 @@ class MinoClock {
  private:
   double r_star(double u) const { return 1.0 / u + kerr_radial_time(k_.M, k_.a, 1.0 / u); }
 
-  const KerrMinoRhs& k_;
+  const KerrMinoConstants& k_;
   double u_leg_;
   double r_star_leg_;        // r* where the current leg began
   double variation_ = 0.0;   // V over the legs before it
@@ -192,46 +221,69 @@ class MinoClock {
   double turn_lambda_ = 0.0, turn_r_star_ = 0.0;
 };
 
-// Integrates from `start` with Dormand–Prince 5(4) until the ray is captured
-// (r below `capture_radius`), reaches infinity (u <= 0: StopReason::escaped;
-// the last step spans u = 0, where the visitor finds the direction at
-// infinity), is stopped by the visitor (visit(const MinoStep&, MinoResult&)
-// returning true after an accepted step, having set the reason), or runs out
-// of steps.  Mino time runs the same way as the affine parameter of
-// `start`'s momentum.
-template <class Visitor>
-MinoResult trace_kerr_mino(const KerrMinoStart& start, double capture_radius, const RayOptions& opt, Visitor&& visit) {
-  // t and sigma are passive (nothing depends on them) and grow without
+// The BL–Mino formulation for run_rays (geodesic/ray_loop.hpp), with rays of
+// type RayT (each provides constants() besides start(), slope(),
+// first_step() and visit()).  A ray reaches infinity in the step where u
+// falls to 0 or below (its visitor finds the direction there) and is
+// captured below the capture radius; its visitor keeps the capture event
+// itself (the time needs MinoClock).  There is no free flight: the steps
+// out to infinity are few and long already.
+template <class RayT>
+struct MinoPath {
+  using Ray = RayT;
+  template <int W>
+  struct Rhs : KerrMinoRhs<Lanes<W>> {
+    explicit Rhs(const MinoPath&) {}
+    void load(int i, const Ray& r) { this->set(i, r.constants()); }
+  };
+  // tau and sigma are passive (nothing depends on them) and grow without
   // bound: they do not steer the step size.
-  const MinoState weights = {0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.0};
-  DormandPrince5<8, const KerrMinoRhs&> dp(start.rhs, opt.control, weights);
-  // Mino time runs ~ 1/r^2 of the affine parameter: the same first step as
-  // the Kerr–Schild path takes in sigma.
-  dp.reset(0.0, start.y0, 1e-2 * std::min(1.0, start.y0[1]));
-  const double u_capture = capture_radius > 0.0 ? 1.0 / capture_radius : 1e300;
-  MinoResult res;
-  MinoStep step;
-  while (true) {
-    if (res.steps >= opt.max_steps) {
-      res.reason = StopReason::step_limit;
-      break;
-    }
-    if (!dp.step(step)) {
-      res.reason = StopReason::gave_up;
-      break;
-    }
-    ++res.steps;
-    if (dp.y()[1] <= 0.0) res.reason = StopReason::escaped;  // the visitor sees the step that reaches infinity
-    if (visit(step, res)) return res;
-    if (res.reason == StopReason::escaped) break;
-    if (dp.y()[1] > u_capture) {
-      res.reason = StopReason::horizon;
-      break;
-    }
+  static constexpr MinoState weights = {0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.0};
+
+  double u_capture;  // 1 / capture radius (1e300: nothing is captured)
+
+  static MinoState idle() { return {0, 0.01, 0, 1, 0, 0, 0, 0}; }  // a finite right-hand side
+  static MinoState idle_slope() { return {}; }
+  template <class Y>
+  bool at_infinity(const Y& y) const {
+    return y(1) <= 0.0;
   }
-  res.y = dp.y();
-  res.lambda = dp.t();
-  return res;
+  template <class Y>
+  bool captured(const Y& y) const {
+    return y(1) > u_capture;
+  }
+  bool capture_crossing(const MinoStep&, RayResult&) const { return false; }
+  template <class Y, class D>
+  Flight flight(const Y&, const D&) const {
+    return {};
+  }
+};
+
+// One ray from `start` in the one ray loop, until it is captured (r below
+// `capture_radius`, 0: never), reaches infinity (u <= 0: StopReason::
+// escaped; the last step spans u = 0), is stopped by the visitor
+// (visit(const MinoStep&, MinoResult&) returning true after an accepted
+// step, having set the reason), or runs out of steps.  Mino time runs the
+// same way as the affine parameter of `start`'s momentum.  For tests; the
+// renderer's rays are render/trace.hpp's.
+template <class Visitor>
+MinoResult trace_kerr_mino(const KerrMinoStart& start, double capture_radius, const StepControl& control,
+                           long max_steps, Visitor&& visit) {
+  struct Ray {
+    const KerrMinoStart& s;
+    Visitor& v;
+    const KerrMinoConstants& constants() const { return s.k; }
+    MinoState start() const { return s.y0; }
+    MinoState slope() const { return s.slope(); }
+    double first_step() const { return s.first_step(); }
+    bool visit(const MinoStep& step, RayResult& res) { return v(step, res); }
+  };
+  const MinoPath<Ray> path{capture_radius > 0.0 ? 1.0 / capture_radius : 1e300};
+  MinoResult out;
+  run_rays<1>(
+      path, control, max_steps, 1, [&](std::size_t, std::optional<Ray>& slot) { slot.emplace(Ray{start, visit}); },
+      [&](std::size_t, const Ray&, const RayResult& res) { out = res; });
+  return out;
 }
 
 }  // namespace lc

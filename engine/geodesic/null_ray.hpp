@@ -1,22 +1,20 @@
 #pragma once
-// The per-pixel hot loop: one null geodesic in Hamiltonian form
-// (x^mu, p_mu), integrated with Dormand–Prince 5(4) until it is captured,
-// escapes, is stopped by the caller's visitor (an object hit), or runs out of
-// steps.  Templated on the concrete spacetime: no virtual call or allocation
-// per step.
+// Null geodesics in Hamiltonian form (x^mu, p_mu) in a spacetime's trace
+// chart, as run_rays (geodesic/ray_loop.hpp) integrates them: the right-hand
+// side is the spacetime's own (S::rhs, on doubles or lanes), a ray is
+// captured where S::captured holds (and ends on the capture surface), and
+// it has escaped beyond the escape radius moving outwards.  Templated on
+// the concrete spacetime: no virtual call or allocation per step.
 
 #include <cmath>
+#include <optional>
 
 #include "core/constants.hpp"
 #include "core/tensor.hpp"
 #include "geodesic/crossing.hpp"
-#include "geodesic/dormand_prince.hpp"
-#include "geodesic/stop_reason.hpp"
+#include "geodesic/ray_loop.hpp"
 
 namespace lc {
-
-using RayState = std::array<double, 8>;  // x^0..x^3, p_0..p_3
-using RayStep = DenseStep<8>;
 
 // How Kerr rays are integrated: in Boyer–Lindquist coordinates with Mino
 // time (geodesic/kerr_mino.hpp; the fast path, used when a scene has no
@@ -24,7 +22,7 @@ using RayStep = DenseStep<8>;
 enum class KerrChart { boyer_lindquist_mino, kerr_schild };
 
 // Where a ray moving outwards stops being integrated (the sky lookup then
-// adds the bending still to come, render/scene.hpp's sky_sample).
+// adds the bending still to come: the spacetime's escape direction).
 enum class EscapeRule {
   far_field,  // the scene builder may bring escape_radius in to where the rest is known (far_field_bending)
   fixed,      // always at escape_radius (references)
@@ -42,19 +40,6 @@ struct RayOptions {
   long max_steps = default_max_steps;
 };
 
-struct RayResult {
-  StopReason reason = StopReason::gave_up;
-  RayState y{};       // final state (at the hit for StopReason::hit, set by the visitor)
-  double lambda = 0.0;
-  long steps = 0;
-  double hamiltonian = 0.0;  // H = 1/2 g(k, k) at the end: 0 for light; its size is the drift
-};
-
-// No-op visitor: trace until capture or escape.
-struct NoObjects {
-  bool operator()(const RayStep&, RayResult&) const { return false; }
-};
-
 // Where within `step`, which ends captured (S::captured), the ray crossed
 // into the capture region: the data layers' event of a horizon pixel is on
 // the capture surface, not wherever the step happened to end (for
@@ -67,79 +52,104 @@ double capture_crossing(const S& st, const RayStep& step) {
   return locate_crossing(step, margin, m0, m1, 1e-12);
 }
 
-// Traces from x0 with covariant momentum p0 along increasing affine
-// parameter (pass a past-directed p0 to trace backwards in time).  After each
-// accepted step the visitor sees the step's dense output and may stop the ray
-// (return true) after filling in the result.  Assumes x0 is outside any
-// capture region.
-template <class S, class Visitor = NoObjects>
-RayResult trace_null_ray(const S& st, const Vec4& x0, const Vec4& p0, const RayOptions& opt,
-                         Visitor&& visit = Visitor{}) {
-  auto rhs = [&st](double, const RayState& y, RayState& dy) {
-    Vec4 dx, dp;
-    st.hamiltonian_rhs({y[0], y[1], y[2], y[3]}, {y[4], y[5], y[6], y[7]}, dx, dp);
-    dy = {dx[0], dx[1], dx[2], dx[3], dp[0], dp[1], dp[2], dp[3]};
+// The Hamiltonian formulation for run_rays, with rays of type RayT (each
+// provides start(), slope(), first_step() and visit()).
+template <class S, class RayT>
+struct HamiltonianPath {
+  using Ray = RayT;
+  // S's right-hand side on Lanes<W>; no per-ray constants.
+  template <int W>
+  struct Rhs {
+    const S& st;
+    explicit Rhs(const HamiltonianPath& p) : st(p.st) {}
+    void load(int, const Ray&) {}
+    void operator()(Lanes<W>, const std::array<Lanes<W>, 8>& y, std::array<Lanes<W>, 8>& dy) const { st.rhs(y, dy); }
   };
   // Coordinate time and p_t are passive in stationary spacetimes (nothing
   // depends on them and p_t is constant), so they do not steer the step size:
   // near a Kerr–Schild horizon t diverges logarithmically and would stall it.
-  const RayState weights = {0.0, 1.0, 1.0, 1.0, 0.0, 1.0, 1.0, 1.0};
-  DormandPrince5<8, decltype(rhs)> dp(rhs, opt.control, weights);
-  const RayState y0 = {x0[0], x0[1], x0[2], x0[3], p0[0], p0[1], p0[2], p0[3]};
-  const double rho0 = std::sqrt(x0[1] * x0[1] + x0[2] * x0[2] + x0[3] * x0[3]);
-  dp.reset(0.0, y0, 1e-2 * std::max(1.0, rho0));
+  static constexpr RayState weights = {0.0, 1.0, 1.0, 1.0, 0.0, 1.0, 1.0, 1.0};
 
-  RayResult res;
-  RayStep step;
-  const double R2 = opt.escape_radius * opt.escape_radius;
-  const double free2 = opt.free_radius > 0.0 ? opt.free_radius * opt.free_radius : 1e300;
-  StepControl relaxed_control = opt.control;
-  relaxed_control.rtol *= free_flight_relaxation;
-  relaxed_control.atol *= free_flight_relaxation;
-  bool relaxed = false;
-  while (true) {
-    if (res.steps >= opt.max_steps) {
-      res.reason = StopReason::step_limit;
-      break;
-    }
-    if (!dp.step(step)) {
-      res.reason = StopReason::gave_up;
-      break;
-    }
-    ++res.steps;
-    if (visit(step, res)) return res;
-    const RayState& y = dp.y();
-    const Vec4 x = {y[0], y[1], y[2], y[3]};
-    if (st.captured(x)) {
-      res.reason = StopReason::horizon;
-      res.lambda = capture_crossing(st, step);
-      res.y = step.at(res.lambda);
-      Vec4 dx, dp_;
-      st.hamiltonian_rhs({res.y[0], res.y[1], res.y[2], res.y[3]}, {res.y[4], res.y[5], res.y[6], res.y[7]}, dx, dp_);
-      res.hamiltonian = 0.5 * (res.y[4] * dx[0] + res.y[5] * dx[1] + res.y[6] * dx[2] + res.y[7] * dx[3]);
-      return res;
-    }
-    const double rho2 = y[1] * y[1] + y[2] * y[2] + y[3] * y[3];
-    if (!relaxed && rho2 > free2) {
-      const auto& d = dp.dydt();
-      if (y[1] * d[1] + y[2] * d[2] + y[3] * d[3] > 0.0) {
-        dp.set_control(relaxed_control);
-        relaxed = true;
-      }
-    }
-    if (rho2 > R2) {
-      const auto& d = dp.dydt();
-      if (y[1] * d[1] + y[2] * d[2] + y[3] * d[3] > 0.0) {
-        res.reason = StopReason::escaped;
-        break;
-      }
-    }
+  const S& st;
+  double escape2, free2;  // squared escape and free-flight radii
+
+  HamiltonianPath(const S& spacetime, const RayOptions& opt)
+      : st(spacetime), escape2(opt.escape_radius * opt.escape_radius),
+        free2(opt.free_radius > 0.0 ? opt.free_radius * opt.free_radius : 1e300) {}
+
+  // An idle lane's state: far out, moving on; its right-hand side is finite.
+  static RayState idle() { return {0, 0, 1e3, 0, 1, 0, 1, 0}; }
+  RayState idle_slope() const {
+    RayState dy;
+    st.rhs(idle(), dy);
+    return dy;
   }
-  res.y = dp.y();
-  res.lambda = dp.t();
-  const auto& d = dp.dydt();
-  res.hamiltonian = 0.5 * (res.y[4] * d[0] + res.y[5] * d[1] + res.y[6] * d[2] + res.y[7] * d[3]);
-  return res;
+  template <class Y>
+  bool at_infinity(const Y&) const {
+    return false;
+  }
+  template <class Y>
+  bool captured(const Y& y) const {
+    return st.captured({y(0), y(1), y(2), y(3)});
+  }
+  bool capture_crossing(const RayStep& step, RayResult& res) const {
+    res.lambda = lc::capture_crossing(st, step);
+    res.y = step.at(res.lambda);
+    return true;
+  }
+  template <class Y, class D>
+  Flight flight(const Y& y, const D& dy) const {
+    const double rho2 = y(1) * y(1) + y(2) * y(2) + y(3) * y(3);
+    const bool outward = y(1) * dy(1) + y(2) * dy(2) + y(3) * dy(3) > 0.0;
+    return {rho2 > free2 && outward, rho2 > escape2 && outward};
+  }
+};
+
+// No-op visitor: trace until capture or escape.
+struct NoObjects {
+  bool operator()(const RayStep&, RayResult&) const { return false; }
+};
+
+// What trace_null_ray gives: the result, and H = 1/2 g(k, k) at the end (0
+// for light; its size is the drift).
+struct NullRayResult : RayResult {
+  double hamiltonian = 0.0;
+};
+
+// One ray from x0 with covariant momentum p0 along increasing affine
+// parameter (pass a past-directed p0 to trace backwards in time), in the
+// one ray loop.  After each accepted step the visitor sees the step's dense
+// output and may stop the ray (return true) after filling in the result.
+// Assumes x0 is outside any capture region.  For tests and tools; the
+// renderer's rays are render/trace.hpp's.
+template <class S, class Visitor = NoObjects>
+NullRayResult trace_null_ray(const S& st, const Vec4& x0, const Vec4& p0, const RayOptions& opt,
+                             Visitor&& visit = Visitor{}) {
+  struct Ray {
+    const S& st;
+    RayState y0;
+    Visitor& v;
+    RayState start() const { return y0; }
+    RayState slope() const {
+      RayState dy;
+      st.rhs(y0, dy);
+      return dy;
+    }
+    double first_step() const { return 1e-2 * std::max(1.0, std::sqrt(y0[1] * y0[1] + y0[2] * y0[2] + y0[3] * y0[3])); }
+    bool visit(const RayStep& step, RayResult& res) { return v(step, res); }
+  };
+  const HamiltonianPath<S, Ray> path(st, opt);
+  NullRayResult out;
+  run_rays<1>(
+      path, opt.control, opt.max_steps, 1,
+      [&](std::size_t, std::optional<Ray>& slot) {
+        slot.emplace(Ray{st, {x0[0], x0[1], x0[2], x0[3], p0[0], p0[1], p0[2], p0[3]}, visit});
+      },
+      [&](std::size_t, const Ray&, const RayResult& res) { static_cast<RayResult&>(out) = res; });
+  RayState dy;
+  st.rhs(out.y, dy);
+  out.hamiltonian = 0.5 * (out.y[4] * dy[0] + out.y[5] * dy[1] + out.y[6] * dy[2] + out.y[7] * dy[3]);
+  return out;
 }
 
 }  // namespace lc

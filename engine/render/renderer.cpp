@@ -3,7 +3,7 @@
 #include "core/constants.hpp"
 #include "image/srgb.hpp"
 #include "render/sample_memo.hpp"
-#include "render/trace_batch.hpp"
+#include "render/trace.hpp"
 
 #include <algorithm>
 #include <array>

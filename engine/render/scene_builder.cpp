@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "scene/still_key.hpp"
+#include "spacetime/scene_polar.hpp"
 
 namespace lc {
 

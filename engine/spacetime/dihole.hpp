@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "core/lanes.hpp"
 #include "spacetime/cartesian_scene.hpp"
 
 namespace lc {
@@ -38,15 +39,35 @@ class Dihole : public CartesianScene {
     return U;
   }
 
-  // Hamilton's equations for H = 1/2 (-U^2 p_t^2 + U^-2 |p|^2).
+  // Hamilton's equations for H = 1/2 (-U^2 p_t^2 + U^-2 |p|^2) on the state
+  // y = (x^mu, p_mu).  T is double or a vector of lanes (core/lanes.hpp),
+  // one ray each: the potential's algebra inline, as potential() has it.
+  template <class T>
+  void rhs(const std::array<T, 8>& y, std::array<T, 8>& dy) const {
+    const T X = y[1], Y = y[2], z1 = y[3] - d_, z2 = y[3] + d_;
+    const T rho2 = X * X + Y * Y;
+    const T i1 = 1.0 / sqrt_of(rho2 + z1 * z1), i2 = 1.0 / sqrt_of(rho2 + z2 * z2);
+    const T U = 1.0 + m1_ * i1 + m2_ * i2;
+    const T c1 = m1_ * i1 * i1 * i1, c2 = m2_ * i2 * i2 * i2;
+    const T gx = -(c1 + c2) * X, gy = -(c1 + c2) * Y, gz = -(c1 * z1 + c2 * z2);
+    const T iU2 = 1.0 / (U * U);
+    const T p2 = y[5] * y[5] + y[6] * y[6] + y[7] * y[7];
+    dy[0] = -U * U * y[4];
+    dy[1] = iU2 * y[5];
+    dy[2] = iU2 * y[6];
+    dy[3] = iU2 * y[7];
+    const T k = U * y[4] * y[4] + iU2 / U * p2;  // -dH/dU
+    dy[4] = T{};
+    dy[5] = k * gx;
+    dy[6] = k * gy;
+    dy[7] = k * gz;
+  }
+  // The same for one ray with x and p apart.
   void hamiltonian_rhs(const Vec4& x, const Vec4& p, Vec4& dx, Vec4& dp) const {
-    Vec3 g;
-    const double U = potential(x, &g);
-    const double iU2 = 1.0 / (U * U);
-    const double p2 = p[1] * p[1] + p[2] * p[2] + p[3] * p[3];
-    dx = {-U * U * p[0], iU2 * p[1], iU2 * p[2], iU2 * p[3]};
-    const double k = U * p[0] * p[0] + iU2 / U * p2;  // -dH/dU
-    dp = {0.0, k * g[0], k * g[1], k * g[2]};
+    std::array<double, 8> d;
+    rhs<double>({x[0], x[1], x[2], x[3], p[0], p[1], p[2], p[3]}, d);
+    dx = {d[0], d[1], d[2], d[3]};
+    dp = {d[4], d[5], d[6], d[7]};
   }
 
   bool captured(const Vec4& x) const { return potential(x) > dihole_capture_potential; }

@@ -23,6 +23,7 @@
 
 #include <cmath>
 
+#include "core/lanes.hpp"
 #include "core/tensor.hpp"
 
 namespace lc {
@@ -63,41 +64,52 @@ class Kerr {
     return std::sqrt(r2);
   }
 
-  // Hamilton's equations for H = 1/2 g^{mu nu} p_mu p_nu: outputs
-  // dx^mu/dlambda = g^{mu nu} p_nu and dp_mu/dlambda = -dH/dx^mu.  The hot path
-  // of every Kerr ray; uses g^{mu nu} = eta^{mu nu} - f l^mu l^nu, so H needs
-  // only f, l and their gradients.  Assumes the point is off the ring singularity.
-  void hamiltonian_rhs(const Vec4& x, const Vec4& p, Vec4& dx, Vec4& dp) const {
-    const double X = x[1], Y = x[2], Z = x[3];
+  // Hamilton's equations for H = 1/2 g^{mu nu} p_mu p_nu on the state
+  // y = (x^mu, p_mu): outputs dx^mu/dlambda = g^{mu nu} p_nu and dp_mu/dlambda
+  // = -dH/dx^mu.  The hot path of every Kerr ray; uses g^{mu nu} = eta^{mu nu}
+  // - f l^mu l^nu, so H needs only f, l and their gradients.  T is double or
+  // a vector of lanes (core/lanes.hpp), one ray each.  Assumes the point is
+  // off the ring singularity.
+  template <class T>
+  void rhs(const std::array<T, 8>& y, std::array<T, 8>& dy) const {
+    const T X = y[1], Y = y[2], Z = y[3];
     const double a = ak_, a2 = a_ * a_;
-    const double r = bl_radius(X, Y, Z);
-    const double r2 = r * r;
-    const double inv_r = 1.0 / r;
-    const double q = 1.0 / (r2 + a2);
-    const double den = 1.0 / (r2 * r2 + a2 * Z * Z);
-    const double f = 2.0 * M_ * r2 * r * den;
-    const double lx = (r * X + a * Y) * q, ly = (r * Y - a * X) * q, lz = Z * inv_r;
+    const T w = X * X + Y * Y + Z * Z - a2;
+    const T r = sqrt_of(0.5 * (w + sqrt_of(w * w + 4.0 * a2 * Z * Z)));  // bl_radius
+    const T r2 = r * r;
+    const T inv_r = 1.0 / r;
+    const T q = 1.0 / (r2 + a2);
+    const T den = 1.0 / (r2 * r2 + a2 * Z * Z);
+    const T f = 2.0 * M_ * r2 * r * den;
+    const T lx = (r * X + a * Y) * q, ly = (r * Y - a * X) * q, lz = Z * inv_r;
     // L = l^mu p_mu with l^mu = (-l_t, lx, ly, lz), l_t = +1 ingoing, -1 outgoing.
-    const double L = -sense_ * p[0] + lx * p[1] + ly * p[2] + lz * p[3];
-    dx[0] = -p[0] + sense_ * f * L;
-    dx[1] = p[1] - f * L * lx;
-    dx[2] = p[2] - f * L * ly;
-    dx[3] = p[3] - f * L * lz;
+    const T L = -sense_ * y[4] + lx * y[5] + ly * y[6] + lz * y[7];
+    dy[0] = -y[4] + sense_ * f * L;
+    dy[1] = y[5] - f * L * lx;
+    dy[2] = y[6] - f * L * ly;
+    dy[3] = y[7] - f * L * lz;
     // Gradient of r (implicit differentiation of the defining quartic).
-    const double r3den = r2 * r * den;
-    const double drx = X * r3den, dry = Y * r3den, drz = Z * (r2 + a2) * r * den;
+    const T r3den = r2 * r * den;
+    const T drx = X * r3den, dry = Y * r3den, drz = Z * (r2 + a2) * r * den;
     // f(r, z): partial derivatives, then chain rule.
-    const double dfdr = 2.0 * M_ * r2 * (3.0 * a2 * Z * Z - r2 * r2) * den * den;
-    const double dfz_r = -4.0 * M_ * r2 * r * a2 * Z * den * den;
+    const T dfdr = 2.0 * M_ * r2 * (3.0 * a2 * Z * Z - r2 * r2) * den * den;
+    const T dfz_r = -4.0 * M_ * r2 * r * a2 * Z * den * den;
     // dL/dx^j = sum_i (d l_i/dx^j) p_i = (dr/dx^j) A + B_j, where A collects
     // every term through r and B_j the explicit x, y, z dependence of l.
-    const double A = q * (X * p[1] + Y * p[2]) - 2.0 * r * q * (lx * p[1] + ly * p[2]) - lz * inv_r * p[3];
-    const double Bx = q * (r * p[1] - a * p[2]), By = q * (r * p[2] + a * p[1]), Bz = p[3] * inv_r;
-    const double half_L2 = 0.5 * L * L, fL = f * L;
-    dp[0] = 0.0;
-    dp[1] = dfdr * drx * half_L2 + fL * (drx * A + Bx);
-    dp[2] = dfdr * dry * half_L2 + fL * (dry * A + By);
-    dp[3] = (dfdr * drz + dfz_r) * half_L2 + fL * (drz * A + Bz);
+    const T A = q * (X * y[5] + Y * y[6]) - 2.0 * r * q * (lx * y[5] + ly * y[6]) - lz * inv_r * y[7];
+    const T Bx = q * (r * y[5] - a * y[6]), By = q * (r * y[6] + a * y[5]), Bz = y[7] * inv_r;
+    const T half_L2 = 0.5 * L * L, fL = f * L;
+    dy[4] = T{};
+    dy[5] = dfdr * drx * half_L2 + fL * (drx * A + Bx);
+    dy[6] = dfdr * dry * half_L2 + fL * (dry * A + By);
+    dy[7] = (dfdr * drz + dfz_r) * half_L2 + fL * (drz * A + Bz);
+  }
+  // The same for one ray with x and p apart.
+  void hamiltonian_rhs(const Vec4& x, const Vec4& p, Vec4& dx, Vec4& dp) const {
+    std::array<double, 8> d;
+    rhs<double>({x[0], x[1], x[2], x[3], p[0], p[1], p[2], p[3]}, d);
+    dx = {d[0], d[1], d[2], d[3]};
+    dp = {d[4], d[5], d[6], d[7]};
   }
 
   // Captured: inside the capture radius (see constants.hpp).  Kerr–Schild point.

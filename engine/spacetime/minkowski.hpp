@@ -9,6 +9,11 @@ namespace lc {
 class Minkowski : public CartesianScene {
  public:
   static constexpr bool stationary = true;  // see Kerr::stationary
+  // Hamilton's equations on y = (x^mu, p_mu), T double or lanes: straight lines.
+  template <class T>
+  void rhs(const std::array<T, 8>& y, std::array<T, 8>& dy) const {
+    dy = {-y[4], y[5], y[6], y[7], T{}, T{}, T{}, T{}};
+  }
   void hamiltonian_rhs(const Vec4&, const Vec4& p, Vec4& dx, Vec4& dp) const {
     dx = {-p[0], p[1], p[2], p[3]};
     dp = {0.0, 0.0, 0.0, 0.0};

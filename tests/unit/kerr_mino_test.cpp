@@ -2,6 +2,7 @@
 // its first integrals, and cases known in closed form.
 
 #include "geodesic/kerr_mino.hpp"
+#include "geodesic/null_ray.hpp"
 #include "spacetime/kerr.hpp"
 
 #include <gtest/gtest.h>
@@ -13,11 +14,11 @@ namespace {
 
 // U(u) = Pu^2 - u^2 D K and Theta for the state's constants: (du/dl)^2 and
 // w^2 must match them.
-double radial_potential(const KerrMinoRhs& k, double u) {
+double radial_potential(const KerrMinoConstants& k, double u) {
   const double Pu = k.E + k.alpha * u * u;
   return Pu * Pu - u * u * (1 - 2 * k.M * u + k.a2 * u * u) * k.K;
 }
-double polar_potential(const KerrMinoRhs& k, double c, double s) {
+double polar_potential(const KerrMinoConstants& k, double c, double s) {
   const double Q = k.K - (k.L - k.aE) * (k.L - k.aE);
   return Q + k.a2E2 * c * c - (k.L == 0 ? 0.0 : k.L2 * c * c / (s * s));
 }
@@ -25,7 +26,7 @@ double polar_potential(const KerrMinoRhs& k, double c, double s) {
 // A ray from r0 in the given BL direction constants, moving inwards.
 KerrMinoStart inward_ray(double M, double a, double r0, double theta, double L, double p_theta) {
   KerrMinoStart st = kerr_mino_start(M, a, {0, r0, theta, 0}, {-1, 0, p_theta, L});
-  st.y0[5] = std::sqrt(radial_potential(st.rhs, 1 / r0));  // du/dl > 0: r falls
+  st.y0[5] = std::sqrt(radial_potential(st.k, 1 / r0));  // du/dl > 0: r falls
   return st;
 }
 
@@ -44,12 +45,12 @@ TEST(KerrMino, FirstIntegralsHoldAlongRaysThatWindRoundTheHole) {
       o.control.rtol = o.control.atol = 1e-10;
       auto check = [&](const MinoStep& step, MinoResult&) {
         const MinoState y = step.at(step.t0 + step.h);
-        worst_u = std::max(worst_u, std::abs(y[5] * y[5] - radial_potential(st.rhs, y[1])));
-        worst_th = std::max(worst_th, std::abs(y[6] * y[6] - polar_potential(st.rhs, y[2], y[3])) / std::max(1.0, st.rhs.K));
+        worst_u = std::max(worst_u, std::abs(y[5] * y[5] - radial_potential(st.k, y[1])));
+        worst_th = std::max(worst_th, std::abs(y[6] * y[6] - polar_potential(st.k, y[2], y[3])) / std::max(1.0, st.k.K));
         worst_th = std::max(worst_th, std::abs(y[2] * y[2] + y[3] * y[3] - 1.0));
         return false;
       };
-      const MinoResult res = trace_kerr_mino(st, Kerr(M, a).capture_radius(), o, check);
+      const MinoResult res = trace_kerr_mino(st, Kerr(M, a).capture_radius(), o.control, o.max_steps, check);
       ASSERT_TRUE(res.reason == StopReason::escaped || res.reason == StopReason::horizon) << "b " << b << " p_theta " << pth << " " << to_string(res.reason) << " steps " << res.steps;
       (res.reason == StopReason::escaped ? escaped : captured)++;
       EXPECT_LT(worst_u, 1e-8) << "b " << b << " p_theta " << pth;
@@ -78,7 +79,7 @@ TEST(KerrMino, FlatSpaceIsAHarmonicOscillationInU) {
     }
     return false;
   };
-  const MinoResult res = trace_kerr_mino(st, 0.0, o, check);
+  const MinoResult res = trace_kerr_mino(st, 0.0, o.control, o.max_steps, check);
   EXPECT_EQ(res.reason, StopReason::escaped);
   // A smooth oscillation, no pole to crawl towards: ~1.5 rad of phase at
   // the step a 5th-order method allows at 1e-10 (in r it took ~350 steps).
@@ -103,7 +104,7 @@ TEST(KerrMino, SchwarzschildPeriapsisOfAnEquatorialRay) {
     for (int k = 0; k <= 256; ++k) u_max = std::max(u_max, step.component(1, step.t0 + step.h * k / 256));
     return false;
   };
-  const MinoResult res = trace_kerr_mino(st, 2.0, o, track);
+  const MinoResult res = trace_kerr_mino(st, 2.0, o.control, o.max_steps, track);
   EXPECT_EQ(res.reason, StopReason::escaped);
   // Sampled at 1/256 of a step near a flat maximum: the miss is second order.
   EXPECT_NEAR(1 / u_max, lo, 1e-7);

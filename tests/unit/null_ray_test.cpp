@@ -87,7 +87,7 @@ TEST(NullRay, KerrConstantsOfMotionAreConserved) {
       RayOptions o;
       o.kerr_chart = KerrChart::kerr_schild;
       o.control.rtol = o.control.atol = conservation_ray_tolerance;
-      const RayResult r = trace_null_ray(k, x, p, o, check);
+      const NullRayResult r = trace_null_ray(k, x, p, o, check);
       (r.reason == StopReason::horizon ? captured : escaped)++;
       EXPECT_LT(std::abs(r.hamiltonian), 1e-8 * c0.E * c0.E);  // the null condition holds
       EXPECT_TRUE(r.reason == StopReason::horizon || r.reason == StopReason::escaped);
@@ -105,7 +105,7 @@ TEST(NullRay, MasslessDiholeRaysAreStraight) {
   const Dihole d(0.0, 0.0, 1.0);
   const Vec4 x = {0, 0, 50, 0};
   const Vec4 p = backward_ray_momentum(d.metric(x), static_cartesian_tetrad(d, x), {0.1, -1.0, 0.2});
-  const RayResult r = trace_null_ray(d, x, p, RayOptions{});
+  const NullRayResult r = trace_null_ray(d, x, p, RayOptions{});
   ASSERT_EQ(r.reason, StopReason::escaped);
   const double s = (r.y[2] - x[2]) / -1.0;  // distance along -y per unit direction component
   EXPECT_NEAR(r.y[1], x[1] + 0.1 * s, 1e-9 * s);
@@ -119,7 +119,7 @@ TEST(NullRay, FlatSpaceRaysAreStraight) {
   const Tetrad t = static_polar_tetrad(flat, s);
   const Vec3 n = {-0.8, 0.3, 0.52};
   const Vec4 p = backward_ray_momentum(flat.metric(x), t, n);
-  const RayResult r = trace_null_ray(flat, x, p, RayOptions{});
+  const NullRayResult r = trace_null_ray(flat, x, p, RayOptions{});
   ASSERT_EQ(r.reason, StopReason::escaped);
   // Spatial direction of the backward ray: dx^i/dlambda = p_i (flat).
   const Vec3 d = {p[1], p[2], p[3]};

@@ -1,0 +1,97 @@
+#pragma once
+// Camera rays through a scene: trace_sample follows one (for `lightcone
+// trace` and tests, with a path recorder), trace_batch a row's worth for the
+// renderer and the bench, lane_count at a time (core/lanes.hpp).  Both run
+// the one ray loop (geodesic/ray_loop.hpp), and which formulation of the ray
+// equations a scene's rays take is chosen here, in one place.
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <type_traits>
+
+#include "core/lanes.hpp"
+#include "geodesic/ray_loop.hpp"
+#include "render/hamiltonian_ray.hpp"
+#include "render/mino_ray.hpp"
+#include "render/scene.hpp"
+
+namespace lc {
+
+// Whether a scene's rays take the Boyer–Lindquist–Mino fast path: Kerr
+// scenes without spheres (a sphere's worldline and frame live in the trace
+// chart), unless the options ask for Kerr–Schild.  Everything else takes the
+// Hamiltonian in the trace chart.
+template <class S>
+bool takes_mino_path(const SceneOf<S>& sc) {
+  if constexpr (std::is_same_v<S, Kerr>)
+    return sc.spheres.empty() && sc.rays.kerr_chart == KerrChart::boyer_lindquist_mino;
+  else
+    return false;
+}
+
+namespace detail {
+
+// The rays of local directions `dirs` (on the observer's legs) into `out`,
+// W at a time; on_step records paths (NoPath: none).
+template <int W, class S, class OnStep>
+void trace_rays(const SceneOf<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out, OnStep& on_step) {
+  auto run = [&](const auto& path) {
+    using Ray = typename std::decay_t<decltype(path)>::Ray;
+    run_rays<W>(
+        path, sc.rays.control, sc.rays.max_steps, dirs.size(),
+        [&](std::size_t k, std::optional<Ray>& slot) { slot.emplace(sc, dirs[k], on_step); },
+        [&](std::size_t k, Ray& ray, const RayResult& res) { out[k] = ray.finish(res); });
+  };
+  if constexpr (std::is_same_v<S, Kerr>) {
+    if (takes_mino_path(sc)) {
+      const double cr = mino_capture_radius(sc);
+      return run(MinoPath<MinoRay<OnStep>>{cr > 0.0 ? 1.0 / cr : 1e300});
+    }
+  }
+  run(HamiltonianPath<S, HamiltonianRay<S, OnStep>>(sc.spacetime, sc.rays));
+}
+
+// Calls f (which must not be inlined here) with the stack moved to the same
+// offset within a 4 KiB page, whoever the caller.  The lane integrators keep
+// ~10 KB of state on the stack, and where it falls within a page is worth up
+// to 18% of a Kerr frame: a change to the renderer's row loop that moved it
+// by 16 bytes did that (the same code took 9.0 s or 10.8 s for six
+// kerr_accrDisk frames; 4K aliasing is the likely cause, the machine's
+// counters could not show it).  Pinned, the integrator's placement no
+// longer depends on its callers' frames.
+template <class F>
+[[gnu::noinline]] void on_pinned_stack(F&& f) {
+  constexpr std::uintptr_t page = 4096, offset = 0;
+  const auto sp = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
+  volatile char* pad = static_cast<char*>(__builtin_alloca((sp - offset) % page + 1));
+  pad[0] = 0;
+  f();
+  pad[0] = 1;  // keeps the pad alive across the call
+}
+
+}  // namespace detail
+
+// Traces the camera ray along local direction n (on the observer's legs).
+// OnStep(const RayState& y, double sigma) sees the start of every accepted
+// step in trace coordinates with its affine parameter (for `lightcone
+// trace`; NoPath when rendering).
+template <class S, class OnStep>
+RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
+  RaySample out;
+  detail::trace_rays<1>(sc, std::span<const Vec3>(&n, 1), std::span<RaySample>(&out, 1), on_step);
+  return out;
+}
+
+// Traces the camera rays of local directions `dirs` into `out` (same size),
+// lane_count at a time: each sample as trace_sample gives it
+// (Render.LanesGiveWhatOneRayGives).
+template <class S>
+void trace_batch(const SceneOf<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out) {
+  detail::on_pinned_stack([&]() __attribute__((noinline)) {
+    NoPath no_path;
+    detail::trace_rays<lane_count>(sc, dirs, out, no_path);
+  });
+}
+
+}  // namespace lc
