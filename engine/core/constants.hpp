@@ -16,7 +16,7 @@ inline constexpr double degree = std::numbers::pi / 180.0;  // radians per degre
 // remaining bending only changes the escape direction (by about 2M/r).
 inline constexpr double default_escape_radius = 1000.0;
 // Where the far field is a known monopole (the dihole's isotropic
-// coordinates, flat space; geodesic/weak_field_tail.hpp), rays escape
+// coordinates, flat space; spacetime/weak_field_tail.hpp), rays escape
 // earlier: beyond the objects, once the multipoles beyond the monopole
 // (the dihole's dipole |m1 - m2| d / r^2, or for equal holes its quadrupole
 // M d^2 / r^3) bend light by less than this, in radians.

@@ -18,7 +18,7 @@ namespace lc {
 
 enum class CurveKind { null, timelike };
 enum class StopParameter { affine, proper_time, coordinate_time };
-enum class TimeDirection { future, past };
+// TimeDirection: spacetime/chart.hpp.
 enum class GslStepper { rk8pd, rkf45 };
 
 struct GeodesicProblem {

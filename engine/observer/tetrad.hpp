@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/tensor.hpp"
+#include "spacetime/chart.hpp"
 
 namespace lc {
 
@@ -79,6 +80,18 @@ Tetrad static_cartesian_tetrad(const S& st, const Vec4& x) {
   if (st.inside_horizon(x)) throw ObserverError("static observer: the position is inside a horizon");
   return orthonormalize(st.metric(x), {Vec4{1, 0, 0, 0}, Vec4{0, 1, 0, 0}, Vec4{0, 0, 1, 0}, Vec4{0, 0, 0, 1}},
                         "static observer");
+}
+
+// The static frame whose legs a scene's directions and velocities refer to
+// (a sphere at rest, a worldline's start, a geodesic spec's start): the
+// polar one (e_r, e_theta, e_phi) in a polar chart, else the Cartesian one
+// (e_x, e_y, e_z).  At a scene point.
+template <class S>
+Tetrad static_frame(const S& st, const Vec4& scene_point) {
+  if constexpr (S::chart == SceneChart::polar)
+    return static_polar_tetrad(st, scene_point);
+  else
+    return static_cartesian_tetrad(st, st.trace_from_scene(scene_point));
 }
 
 }  // namespace lc

@@ -10,7 +10,7 @@ namespace {
 
 template <class S>
 std::string evaluated(const SceneOf<S>& sc) {
-  const bool polar = std::is_same_v<S, Kerr>;
+  const bool polar = S::chart == SceneChart::polar;
   const S& st = sc.spacetime;
   auto leg = [&](const Vec4& v) { return json_components(st.scene_vector(sc.observer, v)); };
   // A camera axis (components on the spatial legs) as a vector.

@@ -13,12 +13,12 @@
 #include <type_traits>
 
 #include "geodesic/crossing.hpp"
-#include "geodesic/weak_field_tail.hpp"
+#include "spacetime/weak_field_tail.hpp"
 #include "observer/ray_direction.hpp"
 #include "render/hit.hpp"
 #include "render/scene.hpp"
 #include "render/sphere_test.hpp"
-#include "spacetime/scene_polar.hpp"
+#include "spacetime/chart.hpp"
 
 namespace lc {
 
@@ -35,34 +35,13 @@ template <class S>
 void sky_sample(const SceneOf<S>& sc, const Vec4& x, const Vec4& p, RaySample& out) {
   const S& st = sc.spacetime;
   // Escape direction: the spatial tangent, bent by the deflection still to
-  // come between here and infinity.  The dihole's far field is the
-  // isotropic monopole of weak_field_tail.hpp, exact to O(M d^2 / r^3);
-  // elsewhere (Kerr–Schild) its first order, (2M/r) tan(psi/2) towards the
-  // centre (psi: angle between position and direction).  Without it the sky
-  // would sit ~2M/R radians off at the escape radius R.
+  // come between here and infinity (the spacetime's far field).
   Vec4 dx, dp;
   st.hamiltonian_rhs(x, p, dx, dp);
   Vec3 d = {dx[1], dx[2], dx[3]};
   const double dn = norm3(d);
   for (auto& c : d) c /= dn;
-  const double M = st.asymptotic_mass();
-  if constexpr (std::is_same_v<S, Dihole>) {
-    d = isotropic_escape_direction({x[1], x[2], x[3]}, d, M);
-  } else if (M > 0.0) {
-    const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
-    const Vec3 rh = {x[1] / rho, x[2] / rho, x[3] / rho};
-    const double c = std::clamp(rh[0] * d[0] + rh[1] * d[1] + rh[2] * d[2], -1.0, 1.0);
-    const double psi = std::acos(c);
-    if (psi > 1e-9) {
-      const double delta = 2.0 * M / rho * std::tan(0.5 * psi);
-      // Unit vector in the plane, perpendicular to d, pointing away from the centre side.
-      Vec3 w = {rh[0] - c * d[0], rh[1] - c * d[1], rh[2] - c * d[2]};
-      const double wn = norm3(w);
-      for (auto& q : w) q /= wn;
-      const double cd = std::cos(delta), sd = std::sin(delta);
-      d = {cd * d[0] - sd * w[0], cd * d[1] - sd * w[1], cd * d[2] - sd * w[2]};
-    }
-  }
+  d = st.escape_direction(x, d);
   out.kind = HitKind::sky;
   const double theta = std::acos(std::clamp(d[2], -1.0, 1.0));
   double sphi = std::atan2(d[1], d[0]);

@@ -32,8 +32,10 @@ inline double mino_capture_radius(const SceneOf<Kerr>& sc) {
 template <class OnStep>
 class MinoRay {
  public:
-  MinoRay(const SceneOf<Kerr>& sc, const Vec3& n, OnStep& on_step)
-      : sc_(sc), on_step_(on_step), start_(make_start(sc, n)), clock_(start_.k, start_.y0[1]),
+  // observer_jacobian: Kerr–Schild over Boyer–Lindquist at the observer
+  // (trace_jacobian of sc.observer_scene), worked out once for a batch.
+  MinoRay(const SceneOf<Kerr>& sc, const Mat4& observer_jacobian, const Vec3& n, OnStep& on_step)
+      : sc_(sc), on_step_(on_step), start_(make_start(sc, observer_jacobian, n)), clock_(start_.k, start_.y0[1]),
         u_escape_(1.0 / sc.rays.escape_radius), u_capture_(capture_radius() > 0.0 ? 1.0 / capture_radius() : 1e300),
         at_escape_{start_.y0, start_.y0[0]} {}
 
@@ -137,7 +139,7 @@ class MinoRay {
     return {y, clock_.time(y, lambda)};
   }
 
-  static KerrMinoStart make_start(const SceneOf<Kerr>& sc, const Vec3& n) {
+  static KerrMinoStart make_start(const SceneOf<Kerr>& sc, const Mat4& observer_jacobian, const Vec3& n) {
     const Kerr& st = sc.spacetime;
     const Vec4 p_ks = backward_ray_momentum(sc.metric, sc.frame, n);
     auto bl_momentum = [&](const Vec4& s) {
@@ -150,7 +152,7 @@ class MinoRay {
     Vec4 s0 = sc.observer_scene;
     Vec4 p_bl{};
     for (int nu = 0; nu < 4; ++nu)
-      for (int mu = 0; mu < 4; ++mu) p_bl[nu] += p_ks[mu] * sc.observer_jacobian[mu][nu];
+      for (int mu = 0; mu < 4; ++mu) p_bl[nu] += p_ks[mu] * observer_jacobian[mu][nu];
     if (std::abs(std::sin(s0[2])) < spin_axis_sine) {
       // On the axis every phi names the observer's point, and the ray leaves it
       // along one meridian: p_theta at phi is A cos(phi) + B sin(phi) from the

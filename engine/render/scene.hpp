@@ -29,7 +29,6 @@ struct SceneOf {
   std::vector<Sphere> spheres;
   RayOptions rays;
   Vec4 observer_scene{};  // the observer's event in scene coordinates, exact where the shot gave it (on the axis)
-  Mat4 observer_jacobian{};  // Kerr: trace_jacobian(observer_scene), once per frame for the BL–Mino path
   // still_key() of the frame's scene where the spacetime is stationary, else
   // empty: frames with equal non-empty keys may share the samples of rays
   // that stay clear of moving objects (render/sample_memo.hpp).

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "scene/still_key.hpp"
-#include "spacetime/scene_polar.hpp"
+#include "spacetime/chart.hpp"
 
 namespace lc {
 
@@ -96,46 +96,17 @@ std::size_t ShotResources::bytes() const {
 
 namespace {
 
-template <class S>
-Tetrad rest_frame_for_object(const S& st, const Vec4& scene) {
-  if constexpr (std::is_same_v<S, Kerr>)
-    return static_polar_tetrad(st, scene);
-  else
-    return static_cartesian_tetrad(st, st.trace_from_scene(scene));
-}
-
 // A coordinate radius beyond which a ray moving outwards meets nothing more:
-// twice the largest of the objects' reach and the holes' photon region
-// (Kerr: photon orbits lie within 4M; a dihole's within 4(m1 + m2) of its
-// holes at +-d).  The factor 2 keeps the relaxed integration well clear.
+// twice the largest of the objects' reach and the spacetime's photon
+// region.  The factor 2 keeps the relaxed integration well clear.
 template <class S>
 double free_radius(const SceneOf<S>& sc) {
-  double reach = 0.0;
-  if constexpr (std::is_same_v<S, Kerr>) reach = 4.0 * sc.spacetime.mass() + std::abs(sc.spacetime.spin());
-  if constexpr (std::is_same_v<S, Dihole>)
-    reach = 4.0 * sc.spacetime.asymptotic_mass() + sc.spacetime.separation();
+  double reach = sc.spacetime.photon_reach();
   if (sc.disk) reach = std::max(reach, sc.disk->spec.outer + std::abs(sc.spacetime.asymptotic_mass()));
   for (const Sphere& sp : sc.spheres)
     for (int k = 0; k < 3; ++k)
       reach = std::max({reach, std::abs(sp.life_lo[k]) + 2.0 * sp.spec.radius, std::abs(sp.life_hi[k]) + 2.0 * sp.spec.radius});
   return 2.0 * std::max(reach, 1.0);
-}
-
-// Where a dihole's (or flat space's) rays may stop: beyond the free-flight
-// radius, where the multipoles beyond the monopole bend light by less than
-// far_field_bending; the monopole's share comes from weak_field_tail.hpp.
-// Unequal holes have a dipole, (m1 - m2) d / r^2, bending ~|m1 - m2| d / r^2;
-// equal ones a quadrupole, ~M d^2 / r^3.  The paper's dihole: ~93 M instead
-// of 1000 M; masses 0.6 and 0.2: ~630 M.
-template <class S>
-double far_field_escape_radius(const SceneOf<S>& sc) {
-  double radius = sc.rays.free_radius;
-  if constexpr (std::is_same_v<S, Dihole>) {
-    const Dihole& h = sc.spacetime;
-    const double M = h.asymptotic_mass(), d = h.separation(), dm = std::abs(h.mass1() - h.mass2());
-    radius = std::max({radius, std::cbrt(M * d * d / far_field_bending), std::sqrt(dm * d / far_field_bending)});
-  }
-  return radius;
 }
 
 // A free-falling sphere's worldline must last as long as this frame's rays
@@ -210,7 +181,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
     } else {
       sp.rest_position = st.trace_from_scene(*spec.position);
       try {
-        sp.rest_frame = rest_frame_for_object(st, *spec.position);
+        sp.rest_frame = static_frame(st, *spec.position);
       } catch (const ObserverError& e) {
         throw std::invalid_argument(fmt::format("sphere at rest: {}", e.what()));
       }
@@ -220,10 +191,12 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
     sc.spheres.push_back(std::move(sp));
   }
   sc.rays.free_radius = free_radius(sc);
-  if constexpr (!std::is_same_v<S, Kerr>)
-    if (rays.escape == EscapeRule::far_field)
-      sc.rays.escape_radius = std::min(sc.rays.escape_radius, far_field_escape_radius(sc));
-  if constexpr (std::is_same_v<S, Kerr>) sc.observer_jacobian = st.trace_jacobian(sc.observer_scene);
+  // Where the spacetime's far field is known (far_field_radius), rays
+  // escape there, or beyond the objects; the sky lookup adds the rest of
+  // the bending (escape_direction).
+  if (rays.escape == EscapeRule::far_field)
+    sc.rays.escape_radius =
+        std::min(sc.rays.escape_radius, std::max(sc.rays.free_radius, st.far_field_radius()));
   if constexpr (S::stationary) {
     // With what the rays are traced by: frames share rays only if these
     // agree too.
@@ -240,8 +213,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
 }  // namespace
 
 Scene build_scene(const FrameScene& fs, int width, int height, ShotResources& resources, const RayOptions& rays) {
-  Spacetime st = fs.spacetime;
-  if (auto* k = std::get_if<Kerr>(&st)) *k = k->with_sense(KerrSchildSense::outgoing);
+  const Spacetime st = trace_chart(fs.spacetime);
   return std::visit([&](const auto& s) { return build(s, fs, width, height, resources, rays); }, st);
 }
 

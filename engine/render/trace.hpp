@@ -36,17 +36,20 @@ namespace detail {
 // W at a time; on_step records paths (NoPath: none).
 template <int W, class S, class OnStep>
 void trace_rays(const SceneOf<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out, OnStep& on_step) {
-  auto run = [&](const auto& path) {
+  // path: the formulation; args: what each ray is made from besides the
+  // scene, its direction and the path recorder.
+  auto run = [&](const auto& path, const auto&... args) {
     using Ray = typename std::decay_t<decltype(path)>::Ray;
     run_rays<W>(
         path, sc.rays.control, sc.rays.max_steps, dirs.size(),
-        [&](std::size_t k, std::optional<Ray>& slot) { slot.emplace(sc, dirs[k], on_step); },
+        [&](std::size_t k, std::optional<Ray>& slot) { slot.emplace(sc, args..., dirs[k], on_step); },
         [&](std::size_t k, Ray& ray, const RayResult& res) { out[k] = ray.finish(res); });
   };
   if constexpr (std::is_same_v<S, Kerr>) {
     if (takes_mino_path(sc)) {
       const double cr = mino_capture_radius(sc);
-      return run(MinoPath<MinoRay<OnStep>>{cr > 0.0 ? 1.0 / cr : 1e300});
+      return run(MinoPath<MinoRay<OnStep>>{cr > 0.0 ? 1.0 / cr : 1e300},
+                 sc.spacetime.trace_jacobian(sc.observer_scene));
     }
   }
   run(HamiltonianPath<S, HamiltonianRay<S, OnStep>>(sc.spacetime, sc.rays));

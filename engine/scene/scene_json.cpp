@@ -45,17 +45,15 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
+// {"kind": name, <each declared parameter>: value}.
 std::string spacetime(const Spacetime& st) {
   return std::visit(
-      [](const auto& s) -> std::string {
+      [](const auto& s) {
         using S = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<S, Kerr>)
-          return fmt::format("{{\"kind\": \"kerr\", \"mass\": {}, \"spin\": {}}}", num(s.mass()), num(s.spin()));
-        else if constexpr (std::is_same_v<S, Dihole>)
-          return fmt::format("{{\"kind\": \"dihole\", \"m1\": {}, \"m2\": {}, \"d\": {}}}", num(s.mass1()),
-                             num(s.mass2()), num(s.separation()));
-        else
-          return "{\"kind\": \"minkowski\"}";
+        const typename S::Params p = s.params();
+        std::string out = fmt::format("{{\"kind\": \"{}\"", S::name);
+        for_each_field<typename S::Params>([&](const auto& f) { out += fmt::format(", \"{}\": {}", f.name, num(p.*(f.member))); });
+        return out + "}";
       },
       st);
 }

@@ -13,16 +13,6 @@ namespace lc {
 
 namespace {
 
-// Static frame whose legs the worldline's velocity and tetrad refer to:
-// polar (e_r, e_theta, e_phi) for Boyer–Lindquist scenes, Cartesian otherwise.
-template <class S>
-Tetrad static_frame(const S& st, const Vec4& scene) {
-  if constexpr (std::is_same_v<S, Kerr>)
-    return static_polar_tetrad(st, scene);
-  else
-    return static_cartesian_tetrad(st, st.trace_from_scene(scene));
-}
-
 // Cubic Hermite basis on [0,1].
 inline void hermite(double s, double& h00, double& h10, double& h01, double& h11) {
   const double s2 = s * s, s3 = s2 * s;
@@ -45,8 +35,7 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
   if (!(spec.duration > 0.0))
     throw std::invalid_argument(fmt::format("{}: worldline duration must be > 0", spec.where));
   Worldline w;
-  w.spacetime_ = spec.spacetime;
-  if (auto* k = std::get_if<Kerr>(&w.spacetime_)) *k = k->with_sense(KerrSchildSense::outgoing);
+  w.spacetime_ = trace_chart(spec.spacetime);
   GeodesicProblem pb;
   pb.spacetime = w.spacetime_;
   pb.kind = CurveKind::timelike;
@@ -253,10 +242,9 @@ std::vector<WorldlineEvent> Worldline::apocentres() const {
   auto radius = [&](const Vec4& x) {
     return std::visit(
         [&](const auto& st) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(st)>, Kerr>)
-            return st.bl_radius(x[1], x[2], x[3]);
-          else
-            return std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+          double t, r, phi;
+          scene_polar(st, x, t, r, phi);
+          return r;
         },
         spacetime_);
   };

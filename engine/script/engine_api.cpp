@@ -5,7 +5,7 @@
 #include "lua/table_reader.hpp"
 #include "script/scene_reader.hpp"
 #include "scene/worldline.hpp"
-#include "spacetime/scene_polar.hpp"
+#include "spacetime/chart.hpp"
 #include "script/spacetime_reader.hpp"
 
 namespace lc {

@@ -23,8 +23,10 @@
 
 #include <cmath>
 
+#include "core/fields.hpp"
 #include "core/lanes.hpp"
 #include "core/tensor.hpp"
+#include "spacetime/model.hpp"
 
 namespace lc {
 
@@ -37,11 +39,34 @@ double kerr_radial_time(double M, double a, double r);
 
 class Kerr {
  public:
+  static constexpr std::string_view name = "kerr";
+  static constexpr SceneChart chart = SceneChart::polar;  // Boyer–Lindquist
   // The metric does not depend on t (in either chart): frames that differ
   // only by the observer's time may share rays (scene/still_key.hpp).
   static constexpr bool stationary = true;
+  struct Params {
+    double mass = 0.0, spin = 0.0;
+    static constexpr auto fields = std::tuple{
+        field("mass", &Params::mass, std::optional<double>{}, at_least(0.0), std::nullopt, "the mass M"),
+        field("spin", &Params::spin, std::optional<double>{0.0}, std::nullopt, std::nullopt,
+              "the spin a = J/M, |a| <= M; a > 0 turns towards +phi"),
+    };
+  };
   // Throws std::invalid_argument when M < 0 or |a| > M or either is not finite.
   Kerr(double mass, double spin, KerrSchildSense sense = KerrSchildSense::outgoing);
+  explicit Kerr(const Params& p) : Kerr(p.mass, p.spin) {}
+  Params params() const { return {M_, a_}; }
+  // In the outgoing chart (regular on the past horizon) for curves traced
+  // into the past, the ingoing one for the future.
+  Kerr for_tracing(TimeDirection d) const {
+    return with_sense(d == TimeDirection::future ? KerrSchildSense::ingoing : KerrSchildSense::outgoing);
+  }
+  static std::vector<SpacetimeExample<Kerr>> examples() {
+    std::vector<SpacetimeExample<Kerr>> out;
+    for (auto sense : {KerrSchildSense::ingoing, KerrSchildSense::outgoing})
+      for (double a : {0.0, 0.6, -0.9, 1.0}) out.push_back({Kerr(1.0, a, sense), 2.1, 40.0});
+    return out;
+  }
 
   KerrSchildSense sense() const { return sense_ == 1.0 ? KerrSchildSense::ingoing : KerrSchildSense::outgoing; }
   // The same spacetime in the other Kerr–Schild chart.
@@ -55,6 +80,12 @@ class Kerr {
   double horizon_radius() const { return r_plus_; }
   // Boyer–Lindquist radius below which rays are taken as captured.
   double capture_radius() const { return r_capture_; }
+  // Photon orbits lie within r <= 4M; in Kerr–Schild's Cartesian radius,
+  // sqrt(r^2 + a^2 sin^2) at most, within 4M + |a|.
+  double photon_reach() const { return 4.0 * M_ + std::abs(a_); }
+  // No far-field shortcut: rays are integrated out to the escape radius.
+  double far_field_radius() const { return std::numeric_limits<double>::infinity(); }
+  Vec3 escape_direction(const Vec4& x, const Vec3& d) const { return first_order_escape_direction(x, d, M_); }
 
   // Boyer–Lindquist radius of a Kerr–Schild point.
   double bl_radius(double x, double y, double z) const {

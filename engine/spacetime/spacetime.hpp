@@ -1,17 +1,18 @@
 #pragma once
-// The closed set of spacetimes.  Each alternative is a concrete class with the
-// same member set (no virtual dispatch): the ray integrator is instantiated
-// per alternative, so the metric inlines into the step.  Members every
-// alternative provides:
-//   hamiltonian_rhs(x, p, dx, dp)   Hamilton's equations, trace coordinates
-//   captured(x), inside_horizon(x)  stop tests
-//   metric, inverse_metric, metric_derivatives (∂_alpha g_{mu nu})
-//   trace_from_scene, scene_from_trace, scene_vector, scene_time_gradient,
-//   polar_basis                     scene <-> trace coordinates
-// Scene coordinates are Boyer–Lindquist for Kerr, Cartesian otherwise.
+// The registry of spacetimes: every one lightcone knows, one line each in
+// the variant below, each a class satisfying SpacetimeModel
+// (spacetime/model.hpp) in its own files.  Everything that works with "a
+// spacetime" — the Lua constructors lc.<name>{...}, the scene reader, the
+// descriptions and JSON, the geodesic spec reader, the scene builder, the
+// generic self-test — goes through this variant and the model's members;
+// none asks which spacetime it holds.
 
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <variant>
+
+#include <fmt/format.h>
 
 #include "spacetime/dihole.hpp"
 #include "spacetime/kerr.hpp"
@@ -21,14 +22,64 @@ namespace lc {
 
 using Spacetime = std::variant<Minkowski, Kerr, Dihole>;
 
-// Short lowercase name ("minkowski", "kerr", "dihole") for messages and output.
-std::string spacetime_name(const Spacetime& s);
+namespace detail {
+template <class V>
+struct AllModels;
+template <class... S>
+struct AllModels<std::variant<S...>> : std::bool_constant<(SpacetimeModel<S> && ...)> {};
+}  // namespace detail
+static_assert(detail::AllModels<Spacetime>::value, "every registered spacetime must satisfy SpacetimeModel");
+
+// A type tag: for_each_spacetime_type calls f(TypeTag<S>{}) for each.
+template <class T>
+struct TypeTag {
+  using type = T;
+};
+template <class F>
+void for_each_spacetime_type(F&& f) {
+  [&]<class... S>(std::variant<S...>*) { (f(TypeTag<S>{}), ...); }(static_cast<Spacetime*>(nullptr));
+}
+
+// Its name ("minkowski", "kerr", "dihole"): the Lua constructor's, in
+// messages and output.
+inline std::string_view spacetime_name(const Spacetime& s) {
+  return std::visit([](const auto& st) { return std::decay_t<decltype(st)>::name; }, s);
+}
+
+inline SceneChart scene_chart(const Spacetime& s) {
+  return std::visit([](const auto& st) { return std::decay_t<decltype(st)>::chart; }, s);
+}
+
+// The same spacetime in the chart regular where curves traced in direction
+// d go (Kerr: its ingoing or outgoing Kerr–Schild form).
+inline Spacetime for_tracing(const Spacetime& s, TimeDirection d) {
+  return std::visit([d](const auto& st) -> Spacetime { return st.for_tracing(d); }, s);
+}
+
+// The chart camera rays are traced in: backwards in time.
+inline Spacetime trace_chart(const Spacetime& s) { return for_tracing(s, TimeDirection::past); }
+
+// Whether scene positions are polar {r, theta, phi}.
+inline bool has_polar_scene(const Spacetime& s) { return scene_chart(s) == SceneChart::polar; }
 
 // The spacetime and its exact parameters, e.g. "kerr(mass=1, spin=0.9)";
 // equal strings mean the same spacetime (hex-float exact with exact = true).
-std::string describe(const Spacetime& s, bool exact = false);
-
-// True when scene coordinates are Boyer–Lindquist (t, r, theta, phi).
-inline bool has_polar_scene(const Spacetime& s) { return std::holds_alternative<Kerr>(s); }
+inline std::string describe(const Spacetime& s, bool exact = false) {
+  return std::visit(
+      [exact](const auto& st) {
+        using P = typename std::decay_t<decltype(st)>::Params;
+        const P p = st.params();
+        std::string out(std::decay_t<decltype(st)>::name);
+        out += '(';
+        bool first = true;
+        for_each_field<P>([&](const auto& f) {
+          const double v = p.*(f.member);
+          out += fmt::format("{}{}={}", first ? "" : ", ", f.name, exact ? fmt::format("{:a}", v) : fmt::format("{:g}", v));
+          first = false;
+        });
+        return out + ')';
+      },
+      s);
+}
 
 }  // namespace lc

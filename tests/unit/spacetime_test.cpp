@@ -70,6 +70,47 @@ void expect_hamilton_equations(const S& st, const std::vector<Vec4>& pts) {
   }
 }
 
+// The self-test every registered spacetime gets, with no line of its own
+// here: on its examples(), the metric times its inverse, the analytic
+// derivatives against finite differences, Hamilton's equations against the
+// inverse metric and finite differences of H, and its right-hand side on
+// vector lanes against the one on doubles (the ray loop runs both: the same
+// arithmetic, to the last bits or a few ulps where the compiler fuses
+// multiply-adds differently).
+TEST(Spacetime, EveryRegisteredSpacetimePassesTheSelfTest) {
+  int checked = 0;
+  for_each_spacetime_type([&](auto tag) {
+    using S = typename decltype(tag)::type;
+    const auto examples = S::examples();
+    ASSERT_FALSE(examples.empty()) << S::name;
+    for (const SpacetimeExample<S>& ex : examples) {
+      SCOPED_TRACE(describe(ex.spacetime));
+      const auto pts = test::cartesian_points(60, ex.r_min, ex.r_max);
+      expect_inverse(ex.spacetime, pts);
+      expect_derivatives(ex.spacetime, pts);
+      expect_hamilton_equations(ex.spacetime, pts);
+      const auto ps = test::momenta(static_cast<int>(pts.size()));
+      for (std::size_t k = 0; k + lane_count <= pts.size(); k += lane_count) {
+        std::array<LaneVec, 8> yl{}, dyl{};
+        for (int i = 0; i < lane_count; ++i)
+          for (int c = 0; c < 4; ++c) {
+            yl[c][i] = pts[k + i][c];
+            yl[4 + c][i] = ps[k + i][c];
+          }
+        ex.spacetime.rhs(yl, dyl);
+        for (int i = 0; i < lane_count; ++i) {
+          std::array<double, 8> y{}, dy{};
+          for (int c = 0; c < 8; ++c) y[c] = yl[c][i];
+          ex.spacetime.rhs(y, dy);
+          for (int c = 0; c < 8; ++c) EXPECT_NEAR(dyl[c][i], dy[c], 4e-16 * std::max(1.0, std::abs(dy[c]))) << "component " << c;
+        }
+      }
+      ++checked;
+    }
+  });
+  EXPECT_GE(checked, 3);
+}
+
 constexpr KerrSchildSense both_senses[] = {KerrSchildSense::ingoing, KerrSchildSense::outgoing};
 
 TEST(Kerr, MetricTimesInverseIsIdentity) {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "geodesic/null_ray.hpp"
-#include "geodesic/weak_field_tail.hpp"
+#include "spacetime/weak_field_tail.hpp"
 #include "render/scene_builder.hpp"
 #include "spacetime/dihole.hpp"
 

@@ -1,0 +1,86 @@
+#pragma once
+// Fields declared once.  A plain struct that a shot script fills lists its
+// fields as a `static constexpr auto fields = std::tuple{...}` of Field
+// descriptors — name, member, default, range, one line of documentation —
+// and from that one list come the Lua reader (script/field_reader.hpp), the
+// text and JSON a scene is described in, the exact key frames are compared
+// by (scene/still_key.hpp), and the tables of docs/shots.md (`lightcone
+// fields`).  Gyoto's GYOTO_PROPERTY_* lines are the model.
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+
+#include <fmt/format.h>
+
+namespace lc {
+
+// A closed or open end of a numeric range.
+struct Bound {
+  double value;
+  bool inclusive;
+};
+inline constexpr Bound at_least(double v) { return {v, true}; }
+inline constexpr Bound above(double v) { return {v, false}; }
+inline constexpr Bound at_most(double v) { return {v, true}; }
+inline constexpr Bound below(double v) { return {v, false}; }
+
+// One field of Owner, of type T (double, int, std::uint32_t or a Color of
+// three floats; textual fields are read by hand).  fallback: the default,
+// nullopt when the field is required.  lo, hi: the allowed range (for
+// numbers).
+template <class Owner, class T>
+struct Field {
+  using Value = T;
+  std::string_view name;
+  T Owner::*member;
+  std::optional<T> fallback;
+  std::optional<Bound> lo = std::nullopt, hi = std::nullopt;
+  std::string_view doc = {};
+};
+
+template <class Owner, class T>
+constexpr Field<Owner, T> field(std::string_view name, T Owner::*member, std::optional<T> fallback,
+                                std::optional<Bound> lo, std::optional<Bound> hi, std::string_view doc) {
+  return {name, member, fallback, lo, hi, doc};
+}
+
+// Whether a struct declares its fields.
+template <class S>
+concept HasFields = requires { S::fields; };
+
+// f(field) for every field of S, in declaration order.
+template <HasFields S, class F>
+constexpr void for_each_field(F&& f) {
+  std::apply([&](const auto&... fd) { (f(fd), ...); }, S::fields);
+}
+
+// "must be between 0 and 180 (exclusive)" style text for a range, or "".
+inline std::string range_text(const std::optional<Bound>& lo, const std::optional<Bound>& hi) {
+  auto num = [](double v) { return fmt::format("{:g}", v); };
+  if (lo && hi) {
+    if (lo->inclusive && hi->inclusive) return fmt::format("between {} and {}", num(lo->value), num(hi->value));
+    if (!lo->inclusive && !hi->inclusive)
+      return fmt::format("greater than {} and less than {}", num(lo->value), num(hi->value));
+    return fmt::format("{} {} and {} {}", lo->inclusive ? "at least" : "greater than", num(lo->value),
+                       hi->inclusive ? "at most" : "less than", num(hi->value));
+  }
+  if (lo) return fmt::format("{} {}", lo->inclusive ? "at least" : "greater than", num(lo->value));
+  if (hi) return fmt::format("{} {}", hi->inclusive ? "at most" : "less than", num(hi->value));
+  return {};
+}
+
+// Whether v lies in the range (NaN never does).
+inline bool in_range(double v, const std::optional<Bound>& lo, const std::optional<Bound>& hi) {
+  if (std::isnan(v)) return false;
+  if (lo && (lo->inclusive ? v < lo->value : v <= lo->value)) return false;
+  if (hi && (hi->inclusive ? v > hi->value : v >= hi->value)) return false;
+  return true;
+}
+
+}  // namespace lc

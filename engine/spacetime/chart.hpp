@@ -1,0 +1,41 @@
+#pragma once
+// What a spacetime's scene coordinates are — the coordinates shots, data
+// layers and reports use — and the event of a trace-coordinate point in
+// them.  Each spacetime declares its chart (S::chart); code that differs by
+// chart asks that, never which spacetime it is.
+
+#include <cmath>
+
+#include "core/constants.hpp"
+#include "core/tensor.hpp"
+
+namespace lc {
+
+enum class SceneChart {
+  polar,      // (t, r, theta, phi) like Boyer–Lindquist: positions {r, theta, phi} in degrees
+  cartesian,  // (t, x, y, z): positions {x, y, z}
+};
+
+// Which way in time curves are traced (a chart may be chosen to be regular
+// where they go: Kerr::for_tracing).
+enum class TimeDirection { future, past };
+
+// Scene time, radius and longitude of a trace-coordinate event: the chart's
+// own t, r and phi where it is polar, else t and the spherical r and phi
+// about the origin; phi in [0, 2 pi).
+template <class S>
+inline void scene_polar(const S& st, const Vec4& x, double& t, double& r, double& phi) {
+  if constexpr (S::chart == SceneChart::polar) {
+    const Vec4 s = st.scene_from_trace(x);
+    t = s[0];
+    r = s[1];
+    phi = s[3];
+  } else {
+    t = st.scene_from_trace(x)[0];
+    r = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    phi = std::atan2(x[2], x[1]);
+    if (phi < 0) phi += two_pi;
+  }
+}
+
+}  // namespace lc

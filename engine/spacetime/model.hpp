@@ -1,0 +1,115 @@
+#pragma once
+// What every spacetime is: the C++ concept a class must satisfy to be
+// registered (spacetime/spacetime.hpp), so that a spacetime that forgets
+// one of these is a compile error rather than a quietly wrong picture.
+// No virtual calls: the ray loop is instantiated per spacetime and the
+// metric inlines into the integrator.
+//
+//   name, chart, stationary   static: its Lua constructor lc.<name>{...}, its
+//                             scene coordinates (spacetime/chart.hpp), whether
+//                             the metric is independent of t (frames that
+//                             differ only in time may then share rays)
+//   Params                    its parameters as a plain struct with declared
+//                             fields (core/fields.hpp): the Lua reader, the
+//                             description, the JSON and the docs come from them;
+//                             S(Params) validates (std::invalid_argument),
+//                             params() gives them back
+//   rhs<T>(y, dy)             Hamilton's equations in the trace chart on
+//                             y = (x^mu, p_mu), T double or lanes
+//   hamiltonian_rhs(x, p, dx, dp)   the same for one ray, x and p apart
+//   metric, inverse_metric, metric_derivatives   in the trace chart
+//   captured(x), capture_margin(x), inside_horizon(x)   where rays stop
+//   asymptotic_mass()         the mass seen from far away
+//   photon_reach()            a coordinate radius within which all of its
+//                             photon orbits lie (rays beyond it, moving out,
+//                             never turn back)
+//   far_field_radius()        where its far field is known well enough
+//                             (far_field_bending) for the escape direction
+//                             to be computed instead of integrated; infinity
+//                             where it is not
+//   escape_direction(x, d)    the direction at infinity of a ray leaving x
+//                             along unit spatial direction d (the bending
+//                             still to come)
+//   trace_from_scene, scene_from_trace, scene_vector, scene_time_gradient,
+//   polar_basis               scene <-> trace coordinates
+//   for_tracing(direction)    itself in the chart regular where curves traced
+//                             that way go
+//   examples()                parameter sets with the radii between which
+//                             the generic self-test may sample events
+
+#include <array>
+#include <concepts>
+#include <string_view>
+#include <vector>
+
+#include "core/fields.hpp"
+#include "core/lanes.hpp"
+#include "core/tensor.hpp"
+#include "spacetime/chart.hpp"
+
+namespace lc {
+
+// A spacetime and where events may be sampled in it (trace coordinates,
+// Cartesian radius in [r_min, r_max]), for the generic self-test.
+template <class S>
+struct SpacetimeExample {
+  S spacetime;
+  double r_min, r_max;
+};
+
+template <class S>
+concept SpacetimeModel =
+    requires(const S& s, const typename S::Params& params, const Vec4& x, const Vec3& d, const std::array<double, 8>& y,
+             std::array<double, 8>& dy, const std::array<LaneVec, 8>& yl, std::array<LaneVec, 8>& dyl, Vec4& out) {
+      requires std::same_as<std::remove_cv_t<decltype(S::name)>, std::string_view>;
+      requires std::same_as<std::remove_cv_t<decltype(S::chart)>, SceneChart>;
+      requires std::same_as<std::remove_cv_t<decltype(S::stationary)>, bool>;
+      requires HasFields<typename S::Params>;
+      S(params);
+      { s.params() } -> std::same_as<typename S::Params>;
+      s.rhs(y, dy);
+      s.rhs(yl, dyl);
+      s.hamiltonian_rhs(x, x, out, out);
+      { s.metric(x) } -> std::same_as<Mat4>;
+      { s.inverse_metric(x) } -> std::same_as<Mat4>;
+      { s.metric_derivatives(x) } -> std::same_as<Mat4Derivs>;
+      { s.captured(x) } -> std::same_as<bool>;
+      { s.capture_margin(x) } -> std::same_as<double>;
+      { s.inside_horizon(x) } -> std::same_as<bool>;
+      { s.asymptotic_mass() } -> std::same_as<double>;
+      { s.photon_reach() } -> std::same_as<double>;
+      { s.far_field_radius() } -> std::same_as<double>;
+      { s.escape_direction(x, d) } -> std::same_as<Vec3>;
+      { s.trace_from_scene(x) } -> std::same_as<Vec4>;
+      { s.scene_from_trace(x) } -> std::same_as<Vec4>;
+      { s.scene_vector(x, x) } -> std::same_as<Vec4>;
+      { s.scene_time_gradient(x) } -> std::same_as<Vec4>;
+      { s.polar_basis(x) } -> std::same_as<std::array<Vec4, 4>>;
+      { s.for_tracing(TimeDirection::past) } -> std::same_as<S>;
+      { S::examples() } -> std::same_as<std::vector<SpacetimeExample<S>>>;
+    };
+
+// The direction at infinity of a ray leaving the Kerr–Schild-like point x
+// along unit direction d, in a far field of mass M to first order:
+// deflected by (2M/r) tan(psi/2) towards the centre (psi: the angle between
+// position and direction).  Without it the sky would sit ~2M/R radians off
+// at the escape radius R.
+inline Vec3 first_order_escape_direction(const Vec4& x, Vec3 d, double M) {
+  if (!(M > 0.0)) return d;
+  const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+  const Vec3 rh = {x[1] / rho, x[2] / rho, x[3] / rho};
+  const double c = std::clamp(rh[0] * d[0] + rh[1] * d[1] + rh[2] * d[2], -1.0, 1.0);
+  const double psi = std::acos(c);
+  if (psi > 1e-9) {
+    const double delta = 2.0 * M / rho * std::tan(0.5 * psi);
+    // Unit vector in the plane, perpendicular to d, pointing away from the centre side.
+    Vec3 w = {rh[0] - c * d[0], rh[1] - c * d[1], rh[2] - c * d[2]};
+    const double wn = norm3(w);
+    for (auto& q : w) q /= wn;
+    const double cd = std::cos(delta), sd = std::sin(delta);
+    d = {cd * d[0] - sd * w[0], cd * d[1] - sd * w[1], cd * d[2] - sd * w[2]};
+  }
+  return d;
+}
+
+}  // namespace lc
