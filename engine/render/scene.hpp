@@ -35,7 +35,14 @@ struct SceneOf {
   std::string still_key{};
 };
 
-using Scene = std::variant<SceneOf<Minkowski>, SceneOf<Kerr>, SceneOf<Dihole>>;
+// A scene in any registered spacetime (spacetime/spacetime.hpp).
+template <class V>
+struct ScenesIn;
+template <class... S>
+struct ScenesIn<std::variant<S...>> {
+  using type = std::variant<SceneOf<S>...>;
+};
+using Scene = ScenesIn<Spacetime>::type;
 
 
 }  // namespace lc
