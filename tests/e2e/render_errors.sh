@@ -75,5 +75,28 @@ expect_error bad_name "name '../evil' may only use letters, digits" -- "$LIGHTCO
 touch not_a_dir
 expect_error out_is_file "--out not_a_dir: cannot create the output directory" -- "$LIGHTCONE" render ok.lua --out not_a_dir
 
+# script NAME BEFORE [FRAME-BODY]: a one-frame shot with BEFORE on line 2
+# and FRAME-BODY (then a good scene) in frame(i), from line 5.
+script() {
+  cat >"$WORK/$1.lua" <<LUA
+local lc = require "lightcone"
+$2
+return {name = "$1", frames = 3, width = 8, height = 8,
+  frame = function(i)
+    ${3:-}
+    return {spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 30, theta = 80, phi = 0}}
+  end}
+LUA
+}
+# Recursion through C functions overflowed the C stack (SIGSEGV, no message),
+# also under MPI and in the render threads.
+script wrap_nest "local function f() coroutine.wrap(f)() end" "if i == 2 then f() end"
+expect_error wrap_nest "wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" render wrap_nest.lua --out out
+expect_error wrap_nest_inspect "wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" inspect wrap_nest.lua
+if command -v mpirun >/dev/null; then
+  use_mpirun
+  expect_error wrap_nest_mpi "wrap_nest.lua:2: too deeply nested" -- mpi 2 "$LIGHTCONE" render wrap_nest.lua --out out
+fi
+
 [ ! -e out ] || [ -z "$(ls -A out)" ] || fail "failed renders left files in out/: $(ls out)"
 e2e_end

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "scratch_dir.hpp"
+#include <pthread.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -15,6 +17,8 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -551,6 +555,180 @@ TEST(LuaSandbox, MovedSandboxKeepsWorking) {
   ASSERT_EQ(b.loaded_files().size(), 9u);
   EXPECT_EQ(b.loaded_files()[1], fs::canonical(kDir1 / "bad_module.lua"));
   EXPECT_EQ(b.loaded_files()[8], fs::canonical(kDir1 / "returns_nothing.lua"));
+}
+
+// Writes `code` to dir/name and returns the path.
+fs::path script(const ScratchDir& dir, const std::string& name, const std::string& code) {
+  const fs::path file = dir / name;
+  write_file(file, code);
+  return file;
+}
+
+// Runs f on a new thread with a C stack of exactly `bytes` (render threads
+// run shot code; their stacks may be smaller than the main thread's). The
+// stack is mapped here: glibc would reuse a cached larger one for a thread
+// asking for a small size.
+template <class F>
+void on_thread_with_stack(std::size_t bytes, F f) {
+  struct Call {
+    F* f;
+    static void* run(void* p) {
+      (*static_cast<Call*>(p)->f)();
+      return nullptr;
+    }
+  } call{&f};
+  void* stack = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_STACK, -1, 0);
+  ASSERT_NE(stack, MAP_FAILED);
+  pthread_attr_t attr;
+  pthread_attr_init(&attr);
+  pthread_attr_setstack(&attr, stack, bytes);
+  pthread_t thread;
+  ASSERT_EQ(pthread_create(&thread, &attr, &Call::run, &call), 0);
+  pthread_join(thread, nullptr);
+  pthread_attr_destroy(&attr);
+  ::munmap(stack, bytes);
+}
+
+// Each recursion runs through a C function that calls back into Lua, so
+// LuaJIT's own (Lua) stack check does not see the C stack it uses; these
+// were SIGSEGVs. The first ("wrap") is a reported one.
+const std::vector<std::pair<std::string, std::string>> kNestingScripts = {
+    {"wrap", "local function f() coroutine.wrap(f)() end\nf()\n"},
+    {"resume",
+     "local function f()\n  local ok, e = coroutine.resume(coroutine.create(f))\n  if not ok then error(e, 0) end\nend\n"
+     "f()\n"},
+    {"sort", "local function f(a, b) table.sort({3, 2, 1}, f) return a < b end\ntable.sort({3, 2, 1}, f)\n"},
+    {"print", "local t = setmetatable({}, {__tostring = print})\nprint(t)\n"},
+};
+
+TEST(LuaSandbox, NestedCallsThroughCFunctionsFailCleanly) {
+  ScratchDir dir;
+  for (const auto& [name, code] : kNestingScripts) {
+    const fs::path file = script(dir, name + ".lua", code);
+    Sandbox sandbox({});
+    const std::string msg = script_error([&] { sandbox.run_file(file); });
+    EXPECT_EQ(msg.rfind(file.string() + ":", 0), 0u) << msg;
+    EXPECT_NE(msg.find(": too deeply nested: more than 200 calls back into Lua from C functions"), std::string::npos)
+        << msg;
+    EXPECT_EQ(lua_gettop(sandbox.state()), 0);
+    sandbox.run_file(kData / "allowed_globals.lua");  // every level was released
+    EXPECT_TRUE(lua_toboolean(sandbox.state(), -1));
+  }
+}
+
+// The count makes the limit the same on every thread with room for it: a
+// script nesting 190 levels runs, one nesting 210 fails, on the main thread
+// as on a 2 MiB one. On a thread with less room the C stack check fails it
+// first, still cleanly; on one without the sandbox's reserve nothing starts.
+TEST(LuaSandbox, NestingLimitIsTheSameOnEveryThread) {
+  ScratchDir dir;
+  const auto nesting = [&](int levels) {
+    return script(dir, fmt::format("nest{}.lua", levels),
+                  fmt::format("local function f(n)\n  if n > 0 then coroutine.wrap(f)(n - 1) end\nend\nf({})\n",
+                              levels));
+  };
+  const fs::path ok = nesting(190);
+  const fs::path deep = nesting(210);
+  const auto check = [&](const char* where) {
+    Sandbox sandbox({});
+    EXPECT_NO_THROW(sandbox.run_file(ok, 0)) << where;
+    const std::string msg = script_error([&] { sandbox.run_file(deep, 0); });
+    EXPECT_NE(msg.find("too deeply nested: more than 200 calls"), std::string::npos) << where << ": " << msg;
+  };
+  check("main thread");
+  on_thread_with_stack(2u << 20, [&] { check("2 MiB thread"); });
+
+  on_thread_with_stack(512u << 10, [&] {
+    for (const auto& [name, code] : kNestingScripts) {
+      const fs::path file = script(dir, name + ".lua", code);
+      Sandbox sandbox({});
+      const std::string msg = script_error([&] { sandbox.run_file(file); });
+      EXPECT_NE(msg.find(": too deeply nested: "), std::string::npos) << msg;
+    }
+    // No count in between: the hook's look at the stack stops this one.
+    const fs::path format = script(
+        dir, "format.lua",
+        "local mt = {}\nmt.__tostring = function(s) return string.format('%s', s) end\n"
+        "local s = string.format('%s', setmetatable({}, mt))\n");
+    Sandbox sandbox({});
+    const std::string msg = script_error([&] { sandbox.run_file(format); });
+    EXPECT_NE(msg.find("format.lua:2: too deeply nested: this thread's C stack is nearly used up"), std::string::npos)
+        << msg;
+  });
+
+  on_thread_with_stack(256u << 10, [&] {
+    Sandbox sandbox({});
+    const std::string msg = script_error([&] { sandbox.run_file(ok); });
+    EXPECT_NE(msg.find("cannot evaluate " + ok.string() + ": this thread has "), std::string::npos) << msg;
+    EXPECT_NE(msg.find("KiB of C stack left, the sandbox needs 384 KiB"), std::string::npos) << msg;
+  });
+}
+
+// LuaJIT before 2023 does not check the Lua stack when pcall is a value's
+// own __call metamethod (it overran it: SIGSEGV).
+TEST(LuaSandbox, PcallAsCallMetamethodDoesNotCrash) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "pcall_call.lua",
+                               "local ok, e = pcall(setmetatable({}, {__call = pcall}))\n"
+                               "local ok2, e2 = xpcall(setmetatable({}, {__call = xpcall}), function(e) return e end)\n"
+                               "return tostring(ok) .. ' ' .. tostring(ok2)\n");
+  Sandbox sandbox({});
+  sandbox.run_file(file);
+  EXPECT_EQ(top_string(sandbox.state()), "true false");
+}
+
+// The guarded functions behave as LuaJIT's for scripts within the limits.
+TEST(LuaSandbox, GuardedLibraryFunctionsBehaveAsLuaJits) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "library.lua", R"lua(local out = {}
+local gen = coroutine.wrap(function(a) local b = coroutine.yield(a + 1) return b * 2 end)
+out[#out + 1] = gen(1) .. " " .. gen(5)
+out[#out + 1] = select(2, pcall(gen))
+local co = coroutine.create(function(x) coroutine.yield(x) error("inner", 0) end)
+out[#out + 1] = table.concat({tostring(coroutine.resume(co, 7)), select(2, coroutine.resume(co, 7))}, " ")
+out[#out + 1] = tostring(coroutine.resume(co))
+out[#out + 1] = select(2, pcall(coroutine.wrap(function() error("in wrap") end)))
+local t = {5, 3, 9, 1}
+table.sort(t, function(a, b) return a > b end)
+out[#out + 1] = table.concat(t, ",")
+table.sort(t)
+out[#out + 1] = table.concat(t, ",")
+out[#out + 1] = select(2, pcall(function() table.sort(t, function() error("cmp") end) end))
+out[#out + 1] = tostring(nil) .. tostring(12) .. select("#", pcall(tostring))
+out[#out + 1] = select(2, pcall(function() coroutine.resume(42) end))
+out[#out + 1] = select(2, pcall(function() table.sort(nil) end))
+local wrapped = coroutine.wrap(function() return 1 end)
+wrapped()
+out[#out + 1] = select(2, pcall(function() wrapped() end))
+return table.concat(out, "\n")
+)lua");
+  Sandbox sandbox({});
+  sandbox.run_file(file);
+  // Lua's own messages name a long path by its tail, the sandbox's in full.
+  const std::string raw = top_string(sandbox.state());
+  std::string out;  // each path of library.lua, whole or not, as "F"
+  std::size_t word = 0;
+  for (std::size_t at = 0; (at = raw.find("library.lua", at)) != std::string::npos; at += 11) {
+    std::size_t from = at;
+    while (from > word && raw[from - 1] != '\n' && raw[from - 1] != ' ') --from;
+    out += raw.substr(word, from - word);
+    out += 'F';
+    word = at + 11;
+  }
+  out += raw.substr(word);
+  EXPECT_EQ(out,
+            "2 10\n"
+            "F:4: cannot resume dead coroutine\n"
+            "true inner\n"
+            "false\n"
+            "F:8: in wrap\n"
+            "9,5,3,1\n"
+            "1,3,5,9\n"
+            "F:14: cmp\n"
+            "nil122\n"
+            "F:16: bad argument #1 to 'resume' (coroutine expected)\n"
+            "F:17: bad argument #1 to 'sort' (table expected, got nil)\n"
+            "F:20: cannot resume dead coroutine");
 }
 
 }  // namespace
