@@ -11,8 +11,9 @@
 // - pcall: LuaJIT 2.1 (before 2023) does not check the Lua stack when pcall
 //   is a value's own __call metamethod; called through a Lua function it is.
 //
-// print and require are the sandbox's own and hold NestedCalls themselves
-// (sandbox.cpp).
+// print, require and the string library's pattern functions are the
+// sandbox's own and hold NestedCalls themselves (sandbox.cpp,
+// string_patterns.cpp).
 
 #include <lua.hpp>
 

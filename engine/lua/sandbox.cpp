@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "lua/library_guards.hpp"
+#include "lua/string_patterns.hpp"
 
 namespace lc::lua {
 
@@ -619,6 +620,7 @@ Sandbox::Sandbox(std::vector<std::filesystem::path> require_dirs, SandboxLimits 
   lua_pushcfunction(L, &print_to_stderr);
   lua_setglobal(L, "print");
   install_library_guards(L);
+  install_string_patterns(L);
 
   lua_pushcfunction(L, &Impl::message_handler);
   s.handler_ref = luaL_ref(L, LUA_REGISTRYINDEX);
@@ -755,6 +757,14 @@ bool NestedCall::allowed(lua_State* L) {
   Sandbox::Impl& s = Sandbox::Impl::of(L);
   std::size_t left = 0;
   return s.nested_calls < kMaxNestedCalls && s.stack_has_room(left);
+}
+
+void check_time(lua_State* L) {
+  Sandbox::Impl& s = Sandbox::Impl::of(L);
+  if (s.depth == 0 || (!s.timed_out && Clock::now() < s.deadline)) return;
+  s.fail_every_instruction();
+  s.push_at_calling_line(L, s.time_limit_message());
+  lua_error(L);
 }
 
 }  // namespace detail

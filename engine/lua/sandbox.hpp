@@ -7,8 +7,8 @@
 // runs under a wall-clock limit and the whole state under a memory cap; calls
 // nested through C functions are bounded (detail::NestedCall), and the
 // library functions that could escape these limits are replaced
-// (library_guards.hpp). Every failure surfaces in C++ as ScriptError with the
-// script's file:line.
+// (library_guards.hpp, string_patterns.hpp). Every failure surfaces in C++ as
+// ScriptError with the script's file:line.
 
 #include <lua.hpp>
 
@@ -24,6 +24,7 @@ namespace lc::lua {
 
 namespace detail {
 class NestedCall;
+void check_time(lua_State* L);
 }  // namespace detail
 
 // A script failed to load or run. what() starts with the `file:line: message`
@@ -37,8 +38,9 @@ class ScriptError : public std::runtime_error {
 // script is being evaluated; seconds is the wall-clock budget of each single
 // evaluation (one run_file or one call). set_by is quoted in the limit
 // messages so an author learns where the limit comes from (e.g. a CLI flag).
-// The clock is checked between VM instructions, so one long C library call
-// (a pathological string.match pattern) overruns it until it returns.
+// The clock is checked between VM instructions and inside the string
+// library's pattern matching, the one place where a script can make C code
+// run for long.
 struct SandboxLimits {
   std::size_t memory_bytes = 512u << 20;
   double seconds = 30.0;
@@ -93,6 +95,7 @@ class Sandbox {
  private:
   struct Impl;
   friend class detail::NestedCall;
+  friend void detail::check_time(lua_State* L);
   std::unique_ptr<Impl> impl_;
 };
 
@@ -112,8 +115,9 @@ namespace detail {
 void push_located_message(lua_State* L, const char* what);
 
 // The rest of this namespace is for the C functions of the sandbox's own
-// library (sandbox.cpp, library_guards.cpp): they find their Sandbox through
-// the state's allocator, so they only work in states that a Sandbox made.
+// library (sandbox.cpp, library_guards.cpp, string_patterns.cpp): they find
+// their Sandbox through the state's allocator, so they only work in states
+// that a Sandbox made.
 
 // How many C functions may be calling back into Lua at once (a gsub or sort
 // callback, a coroutine resumed, print's __tostring, require, an error
@@ -141,6 +145,11 @@ class NestedCall {
  private:
   lua_State* L_;
 };
+
+// Raises the time-limit error at the calling script line once the running
+// evaluation is past its deadline: for C code that may run long without
+// returning to the VM, where the clock is checked between instructions.
+void check_time(lua_State* L);
 
 }  // namespace detail
 

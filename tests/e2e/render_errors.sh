@@ -90,6 +90,8 @@ LUA
 }
 # Recursion through C functions overflowed the C stack (SIGSEGV, no message),
 # also under MPI and in the render threads.
+script gsub_nest "local function f(s) return (s:gsub('.', f)) end f('a')"
+expect_error gsub_nest "gsub_nest.lua:2: too deeply nested: more than 200 calls back into Lua" -- "$LIGHTCONE" render gsub_nest.lua --out out
 script wrap_nest "local function f() coroutine.wrap(f)() end" "if i == 2 then f() end"
 expect_error wrap_nest "wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" render wrap_nest.lua --out out
 expect_error wrap_nest_inspect "wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" inspect wrap_nest.lua

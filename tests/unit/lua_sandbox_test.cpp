@@ -591,12 +591,15 @@ void on_thread_with_stack(std::size_t bytes, F f) {
 
 // Each recursion runs through a C function that calls back into Lua, so
 // LuaJIT's own (Lua) stack check does not see the C stack it uses; these
-// were SIGSEGVs. The first ("wrap") is a reported one.
+// were SIGSEGVs. The first two are the reported ones.
 const std::vector<std::pair<std::string, std::string>> kNestingScripts = {
+    {"gsub", "local function f(s) return (s:gsub('.', f)) end\nf('a')\n"},
     {"wrap", "local function f() coroutine.wrap(f)() end\nf()\n"},
     {"resume",
      "local function f()\n  local ok, e = coroutine.resume(coroutine.create(f))\n  if not ok then error(e, 0) end\nend\n"
      "f()\n"},
+    {"gsub_table",
+     "local t = setmetatable({}, {__index = function(t, k) return (k:gsub('.', t)) end})\nlocal r = ('a'):gsub('.', t)\n"},
     {"sort", "local function f(a, b) table.sort({3, 2, 1}, f) return a < b end\ntable.sort({3, 2, 1}, f)\n"},
     {"print", "local t = setmetatable({}, {__tostring = print})\nprint(t)\n"},
 };
