@@ -66,14 +66,40 @@ int wrap(lua_State* L) {
   return 1;
 }
 
+// xpcall's handler h made safe: skipped once the evaluation has timed out
+// or when no more calls may nest (the error then passes on as it is),
+// otherwise run holding a NestedCall. Upvalue 1 is h.
+int run_handler(lua_State* L) {
+  lua_settop(L, 1);
+  if (detail::timed_out(L) || !detail::NestedCall::allowed(L)) return 1;
+  const detail::NestedCall nested(L);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, 1, 1);
+  return 1;
+}
+
+// guard_handler(h) -> run_handler for h.
+int guard_handler(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TFUNCTION);
+  lua_settop(L, 1);
+  lua_pushcclosure(L, &run_handler, 1);
+  return 1;
+}
+
 // The replacements written in Lua: they tail-call LuaJIT's functions, so
 // errors those raise still name the function and the script line, and
-// coroutines may still yield across pcall. `type` is captured: a script may
-// reassign the global.
+// coroutines may still yield across pcall and xpcall. `type` is captured:
+// a script may reassign the global.
 constexpr const char* kPrelude = R"lua(
-local pcall_builtin, sort_builtin, nested = ...
+local pcall_builtin, xpcall_builtin, tostring_builtin, sort_builtin, nested, guard_handler = ...
 local type = type
 function pcall(...) return pcall_builtin(...) end
+function xpcall(f, handler, ...)
+  if type(handler) ~= "function" then return xpcall_builtin(f, handler, ...) end
+  return xpcall_builtin(f, guard_handler(handler), ...)
+end
+function tostring(...) return tostring_builtin(...) end
 function table.sort(t, comp, ...)
   if type(comp) == "function" then comp = nested(comp) end
   return sort_builtin(t, comp, ...)
@@ -96,11 +122,14 @@ void install_library_guards(lua_State* L) {
     throw std::logic_error(lua_tostring(L, -1));
   }
   lua_getglobal(L, "pcall");
+  lua_getglobal(L, "xpcall");
+  lua_getglobal(L, "tostring");
   lua_getglobal(L, LUA_TABLIBNAME);
   lua_getfield(L, -1, "sort");
   lua_remove(L, -2);
   lua_pushcfunction(L, &make_nested);
-  lua_call(L, 3, 0);
+  lua_pushcfunction(L, &guard_handler);
+  lua_call(L, 6, 0);
 }
 
 }  // namespace lc::lua

@@ -8,8 +8,16 @@
 //   (LuaJIT has no check): they hold a detail::NestedCall while it runs.
 // - table.sort calls its comparator from C: the comparator is wrapped in a
 //   function that holds a NestedCall.
+// - xpcall: LuaJIT runs the handler of an error raised by the time limit
+//   with the instruction hook disabled, so a looping handler was never
+//   stopped; once the time is up, handlers are skipped (the error passes on
+//   unchanged). A handler also holds a NestedCall (one may raise and catch
+//   inside another).
 // - pcall: LuaJIT 2.1 (before 2023) does not check the Lua stack when pcall
 //   is a value's own __call metamethod; called through a Lua function it is.
+// - tostring tail-calls a __tostring metamethod without running an
+//   instruction, so `__tostring = tostring` looped where the hook never
+//   fired; through a Lua function it runs instructions.
 //
 // print, require and the string library's pattern functions are the
 // sandbox's own and hold NestedCalls themselves (sandbox.cpp,

@@ -767,6 +767,8 @@ void check_time(lua_State* L) {
   lua_error(L);
 }
 
+bool timed_out(lua_State* L) { return Sandbox::Impl::of(L).timed_out; }
+
 }  // namespace detail
 
 }  // namespace lc::lua

@@ -25,6 +25,7 @@ namespace lc::lua {
 namespace detail {
 class NestedCall;
 void check_time(lua_State* L);
+bool timed_out(lua_State* L);
 }  // namespace detail
 
 // A script failed to load or run. what() starts with the `file:line: message`
@@ -96,6 +97,7 @@ class Sandbox {
   struct Impl;
   friend class detail::NestedCall;
   friend void detail::check_time(lua_State* L);
+  friend bool detail::timed_out(lua_State* L);
   std::unique_ptr<Impl> impl_;
 };
 
@@ -151,6 +153,11 @@ class NestedCall {
 // returning to the VM, where the clock is checked between instructions.
 void check_time(lua_State* L);
 
+// True once the running evaluation has hit its time limit. From then on it
+// fails at every instruction, and no script error handler may run: LuaJIT
+// runs handlers of an error raised by the limit with its instruction hook
+// disabled, so a handler would run on without limit.
+bool timed_out(lua_State* L);
 }  // namespace detail
 
 // Runs f(L) (returning the number of Lua results) inside a lua_CFunction and

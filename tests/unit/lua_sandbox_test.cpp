@@ -680,6 +680,69 @@ TEST(LuaSandbox, PcallAsCallMetamethodDoesNotCrash) {
   EXPECT_EQ(top_string(sandbox.state()), "true false");
 }
 
+// Iterations per second of a counting loop in the sandbox here, to size
+// work that must outlast a time limit wherever the test runs.
+double loop_rate() {
+  Sandbox sandbox({});
+  sandbox.run_file(kData / "frames.lua");
+  lua_getfield(sandbox.state(), 1, "work");
+  lua_pushnumber(sandbox.state(), 2e7);
+  const auto t0 = std::chrono::steady_clock::now();
+  sandbox.call(1, 0);
+  return 2e7 / std::max(seconds_since(t0), 1e-3);
+}
+
+// LuaJIT runs an xpcall handler for an error the limit raised with the
+// instruction hook disabled: a handler that loops was never stopped (the
+// reported form: xpcall(loop, loop)). Here the handlers do ~5 s of work and
+// then return, so the defect shows as a late failure, not a hang; now the
+// limit (0.5 s) holds, however the calls are nested.
+TEST(LuaSandbox, TimeLimitHoldsInErrorHandlers) {
+  ScratchDir dir;
+  const double work = 5 * loop_rate();
+  const std::string head = fmt::format(
+      "local function forever() while true do end end\n"
+      "local function handler(e) local n = 0 while n < {:.0f} do n = n + 1 end return e end\n",
+      work);
+  const std::vector<std::string> bodies = {
+      "xpcall(forever, handler)\n",
+      "coroutine.wrap(function() xpcall(forever, handler) end)()\n",
+      "xpcall(function() xpcall(forever, handler) end, handler)\n",
+      "pcall(xpcall, forever, handler)\n",
+      "xpcall(forever, function(e) return select(2, pcall(handler, e)) end)\n",
+      "local co = coroutine.create(function() xpcall(forever, handler) end)\ncoroutine.resume(co)\n",
+  };
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const fs::path file = script(dir, fmt::format("handler{}.lua", i), head + bodies[i]);
+    Sandbox sandbox({}, SandboxLimits{.seconds = 0.5});
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string msg = script_error([&] { sandbox.run_file(file); });
+    EXPECT_LT(seconds_since(t0), 2.5) << bodies[i];
+    EXPECT_NE(msg.find("time limit of 0.5 s exceeded"), std::string::npos) << msg;
+  }
+  // Before the time is up, handlers run as ever.
+  const fs::path normal = script(dir, "normal.lua",
+                                 "local ok, e = xpcall(function() error('boom', 0) end, function(e) return e .. '!' end)\n"
+                                 "local ok2, a, b = xpcall(function(x, y) return x + y, 'sum' end, print, 1, 2)\n"
+                                 "return table.concat({tostring(ok), e, tostring(ok2), a, b}, ' ')\n");
+  Sandbox sandbox({}, SandboxLimits{.seconds = 0.5});
+  sandbox.run_file(normal);
+  EXPECT_EQ(top_string(sandbox.state()), "false boom! true 3 sum");
+}
+
+// tostring tail-calls a __tostring metamethod without running an
+// instruction: `__tostring = tostring` looped where the hook never fired.
+TEST(LuaSandbox, TimeLimitHoldsInTostringLoops) {
+  ScratchDir dir;
+  const fs::path file =
+      script(dir, "tostring_loop.lua", "local t = setmetatable({}, {__tostring = tostring})\nlocal s = tostring(t)\n");
+  Sandbox sandbox({}, SandboxLimits{.seconds = 0.5});
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string msg = script_error([&] { sandbox.run_file(file); });
+  EXPECT_LT(seconds_since(t0), 2.5);
+  EXPECT_EQ(msg.rfind(file.string() + ":2: time limit of 0.5 s exceeded", 0), 0u) << msg;
+}
+
 // The guarded functions behave as LuaJIT's for scripts within the limits.
 TEST(LuaSandbox, GuardedLibraryFunctionsBehaveAsLuaJits) {
   ScratchDir dir;
