@@ -68,6 +68,20 @@ constexpr std::size_t kFramesTail = 3;
 // matching, the message handler and its traceback.
 constexpr std::size_t kStackReserve = 384u << 10;
 
+// The time an error object's __tostring gets from the message handler: it
+// only has to produce a line of text.
+constexpr double kTostringSeconds = 0.1;
+
+// The longest error message kept (a script may raise a string of hundreds
+// of MiB, which would be copied into the traceback, the exception, stderr).
+constexpr std::size_t kMaxMessageBytes = 4096;
+
+// `text`, cut to kMaxMessageBytes.
+std::string clipped(std::string_view text) {
+  if (text.size() <= kMaxMessageBytes) return std::string(text);
+  return fmt::format("{}... ({} more bytes)", text.substr(0, kMaxMessageBytes), text.size() - kMaxMessageBytes);
+}
+
 // Reads a whole file. Returns the OS error, if any (ENOENT, EISDIR, ...).
 std::error_code read_whole_file(const std::filesystem::path& path, std::string& out) {
   out.clear();
@@ -350,9 +364,70 @@ struct Sandbox::Impl {
                                   what, left >> 10, kStackReserve >> 10));
   }
 
+  // Runs lua_pcall(L, nargs, 1, 0) with at most `seconds` of the
+  // evaluation's time. `over` tells whether that ran out; if the
+  // evaluation's own deadline has not passed, it goes on normally.
+  int call_with_budget(lua_State* L, int nargs, double seconds, bool& over) {
+    const Clock::time_point outer = deadline;
+    deadline = std::min(outer, Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                  std::chrono::duration<double>(seconds)));
+    const int status = lua_pcall(L, nargs, 1, 0);
+    over = timed_out;
+    deadline = outer;
+    if (timed_out && Clock::now() < outer) {
+      timed_out = false;
+      lua_sethook(L, &time_hook, LUA_MASKCOUNT, kHookInstructions);
+    }
+    return status;
+  }
+
+  // The message for an error value that is no string, at index 1: its
+  // __tostring's text if that returns a string within kTostringSeconds;
+  // else what the value is, where it was raised, and what went wrong.
+  // A handler must not run script code without a budget: LuaJIT calls it
+  // for an error already raised, where a second error (the time limit)
+  // only leaves "error in error handling".
+  std::string describe_error_object(lua_State* L) {
+    const std::string where = nearest_script_line(L, 1);
+    const std::string object = fmt::format("error object (a {} value)", luaL_typename(L, 1));
+    std::string what;
+    if (luaL_getmetafield(L, 1, "__tostring") == 0) {
+      what = fmt::format("error object is a {} value", luaL_typename(L, 1));
+    } else if (timed_out) {
+      what = object + ": its __tostring was not run, the time limit had passed";
+    } else if (!detail::NestedCall::allowed(L)) {
+      what = object + ": its __tostring was not run, calls were nested too deeply";
+    } else {
+      lua_pushvalue(L, 1);
+      bool over = false;
+      int status = 0;
+      {
+        const detail::NestedCall nested(L);
+        status = call_with_budget(L, 1, kTostringSeconds, over);
+      }
+      std::size_t len = 0;
+      const char* text = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &len) : nullptr;
+      if (status == 0 && text != nullptr) return clipped(std::string_view(text, len));
+      if (over) {
+        what = fmt::format("{}: its __tostring did not return within {:g} s", object, kTostringSeconds);
+      } else if (status == LUA_ERRMEM) {
+        what = object + ": its __tostring ran out of memory";
+      } else if (status != 0) {
+        what = fmt::format("{}: its __tostring failed: {}", object,
+                           text != nullptr ? clipped(std::string_view(text, len)) : luaL_typename(L, -1));
+      } else {
+        what = fmt::format("{}: its __tostring returned a {} value, not a string", object, luaL_typename(L, -1));
+      }
+    }
+    lua_settop(L, 1);
+    return where.empty() ? what : fmt::format("{}: {}", where, what);
+  }
+
   // Message handler of every protected call: error value -> string with a
   // traceback. Passes through the memory sentinel and a message it already
   // traced (an error re-raised by require carries the module's frames).
+  // error() adds no position to non-strings: their messages name the first
+  // Lua frame (the line that raised them).
   static int message_handler(lua_State* L) {
     Impl& s = of(L);
     if (lua_type(L, 1) == LUA_TLIGHTUSERDATA && lua_touserdata(L, 1) == &s.memory_sentinel) {
@@ -362,30 +437,23 @@ struct Sandbox::Impl {
     lua_rawgeti(L, LUA_REGISTRYINDEX, s.last_trace_ref);
     if (lua_rawequal(L, 1, 2)) return 1;
     lua_settop(L, 1);
-    if (lua_type(L, 1) != LUA_TSTRING && lua_type(L, 1) != LUA_TNUMBER) {
-      if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) {
-        lua_replace(L, 1);
-      } else {
-        lua_settop(L, 1);
-        // error() adds no position to non-strings: name the first Lua frame.
-        std::string msg = fmt::format("error object is a {} value", luaL_typename(L, 1));
-        for (int level = 1; level < 100; ++level) {
-          lua_Debug ar;
-          if (lua_getstack(L, level, &ar) == 0) break;
-          const std::string loc = Sandbox::where(L, level);
-          if (loc != "?") {
-            msg = fmt::format("{}: {}", loc, msg);
-            break;
-          }
-        }
-        lua_pushlstring(L, msg.data(), msg.size());
-        lua_replace(L, 1);
-      }
+    std::string text;
+    if (lua_type(L, 1) == LUA_TSTRING || lua_type(L, 1) == LUA_TNUMBER) {
+      std::size_t len = 0;
+      const char* p = lua_tolstring(L, 1, &len);
+      if (len > kMaxMessageBytes) text = clipped(std::string_view(p, len));
+    } else {
+      text = s.describe_error_object(L);
     }
     {
       // A script that fails close to the cap still gets its message: the
-      // few bytes of a traceback may exceed the cap.
+      // few (at most kMaxMessageBytes) bytes of it and of a traceback may
+      // exceed the cap.
       const CapLift lift(s);
+      if (!text.empty()) {
+        lua_pushlstring(L, text.data(), text.size());
+        lua_replace(L, 1);
+      }
       luaL_traceback(L, L, lua_tostring(L, 1), 1);
     }
     lua_pushvalue(L, -1);

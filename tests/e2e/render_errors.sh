@@ -99,6 +99,10 @@ if command -v mpirun >/dev/null; then
   use_mpirun
   expect_error wrap_nest_mpi "wrap_nest.lua:2: too deeply nested" -- mpi 2 "$LIGHTCONE" render wrap_nest.lua --out out
 fi
+# An error object whose __tostring loops gave "error in error handling" after 30 s.
+script tostring_loop "error(setmetatable({}, {__tostring = function() while true do end end}))"
+expect_error tostring_loop "tostring_loop.lua:2: error object (a table value): its __tostring did not return within 0.1 s" -- \
+  timeout 20 "$LIGHTCONE" render tostring_loop.lua --out out
 
 [ ! -e out ] || [ -z "$(ls -A out)" ] || fail "failed renders left files in out/: $(ls out)"
 e2e_end

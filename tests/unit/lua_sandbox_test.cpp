@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -741,6 +742,49 @@ TEST(LuaSandbox, TimeLimitHoldsInTostringLoops) {
   const std::string msg = script_error([&] { sandbox.run_file(file); });
   EXPECT_LT(seconds_since(t0), 2.5);
   EXPECT_EQ(msg.rfind(file.string() + ":2: time limit of 0.5 s exceeded", 0), 0u) << msg;
+}
+
+// The message handler ran an error object's __tostring with no limit but
+// the evaluation's: a loop there ended, at the time limit, as "error in
+// error handling". It gets 0.1 s; what went wrong is said at the line that
+// raised the object.
+TEST(LuaSandbox, ErrorObjectTostringIsBudgeted) {
+  ScratchDir dir;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"function() while true do end end", "its __tostring did not return within 0.1 s"},
+      {"function() error('boom') end", "its __tostring failed: "},
+      {"function() return 42 end", "its __tostring returned a number value, not a string"},
+      {"function(o) error(o) end", "its __tostring failed: table"},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const fs::path file = script(dir, fmt::format("object{}.lua", i),
+                                 "local object = setmetatable({}, {__tostring = " + cases[i].first +
+                                     "})\nerror(object)\n");
+    Sandbox sandbox({}, SandboxLimits{.seconds = 2});
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string msg = script_error([&] { sandbox.run_file(file); });
+    EXPECT_LT(seconds_since(t0), 1.0) << cases[i].first;
+    EXPECT_EQ(msg.rfind(file.string() + ":2: error object (a table value): " + cases[i].second, 0), 0u) << msg;
+    // The budget's expiry is not the evaluation's: the next one runs.
+    sandbox.run_file(kData / "allowed_globals.lua");
+    EXPECT_TRUE(lua_toboolean(sandbox.state(), -1));
+  }
+}
+
+// A script may raise a string of hundreds of MiB; the message keeps 4096
+// bytes of it.
+TEST(LuaSandbox, LongErrorMessagesAreCut) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "long.lua", "error(string.rep('x', 1e6))\n");
+  Sandbox sandbox({});
+  const std::string msg = script_error([&] { sandbox.run_file(file); });
+  const std::size_t x = msg.find("long.lua:1: xxx");
+  ASSERT_NE(x, std::string::npos) << msg.substr(0, 200);
+  const std::size_t kept = 4096 - (x + std::strlen("long.lua:1: "));  // of the x's
+  EXPECT_NE(msg.find(std::string(kept, 'x') + "... (" + std::to_string(1000000 - kept) + " more bytes)\nstack traceback:"),
+            std::string::npos)
+      << msg.substr(4000);
+  EXPECT_LT(msg.size(), 5000u);
 }
 
 // The guarded functions behave as LuaJIT's for scripts within the limits.
