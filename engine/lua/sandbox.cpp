@@ -1,7 +1,10 @@
 #include "lua/sandbox.hpp"
 
+#include <fcntl.h>
 #include <luajit.h>
 #include <pthread.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -16,6 +19,7 @@
 #include <system_error>
 #include <utility>
 
+#include "core/file_checks.hpp"
 #include "lua/library_guards.hpp"
 #include "lua/string_patterns.hpp"
 
@@ -82,24 +86,42 @@ std::string clipped(std::string_view text) {
   return fmt::format("{}... ({} more bytes)", text.substr(0, kMaxMessageBytes), text.size() - kMaxMessageBytes);
 }
 
-// Reads a whole file. Returns the OS error, if any (ENOENT, EISDIR, ...).
-std::error_code read_whole_file(const std::filesystem::path& path, std::string& out) {
+// Reads a whole Lua source file into `out`. Returns "" or why it cannot:
+// the OS error ("No such file or directory", ...), or that it is no regular
+// file (a FIFO or /dev/zero would block or never end; the type is checked
+// on the opened file, which a non-blocking open makes safe for FIFOs), or
+// that it is larger than `max_bytes` (its text must fit in the capped heap
+// anyway; reading it first would not be capped).
+std::string read_source_file(const std::filesystem::path& path, std::size_t max_bytes, std::string& out) {
   out.clear();
-  errno = 0;
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr) return {errno != 0 ? errno : EIO, std::generic_category()};
-  std::error_code ec;
-  char buf[1 << 14];
-  for (;;) {
-    const std::size_t n = std::fread(buf, 1, sizeof buf, f);
-    out.append(buf, n);
-    if (n < sizeof buf) {
-      if (std::ferror(f)) ec = {errno != 0 ? errno : EIO, std::generic_category()};
-      break;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) return std::generic_category().message(errno);
+  std::string problem;
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) {
+    problem = std::generic_category().message(errno);
+  } else if (S_ISDIR(st.st_mode)) {
+    problem = std::generic_category().message(EISDIR);
+  } else if (!S_ISREG(st.st_mode)) {
+    problem = fmt::format("{}, not a regular file", file_kind(st.st_mode));
+  } else if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
+    problem = fmt::format("{} bytes, more than the memory limit of {} bytes", st.st_size, max_bytes);
+  } else {
+    out.resize(static_cast<std::size_t>(st.st_size));
+    std::size_t done = 0;
+    while (problem.empty()) {
+      if (done == out.size()) out.resize(done + (1 << 14));  // it grew since fstat
+      const ssize_t n = ::read(fd, out.data() + done, out.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) problem = std::generic_category().message(errno);
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+      if (done > max_bytes) problem = fmt::format("more than the memory limit of {} bytes", max_bytes);
     }
+    out.resize(done);
   }
-  std::fclose(f);
-  return ec;
+  ::close(fd);
+  return problem;
 }
 
 // The stack level of the nearest line of a script at `level` or below, or
@@ -223,6 +245,7 @@ struct Sandbox::Impl {
   pthread_t stack_thread{};
   bool stack_known = false;
   std::uintptr_t stack_floor = 0;
+  std::vector<std::filesystem::path> require_roots;  // require_dirs, canonical
   std::vector<std::string> loading;  // the chain of modules being required
   std::vector<std::string> loading_files;  // their paths, for locating errors
   std::string main_file;                   // the outermost run_file's script
@@ -485,9 +508,10 @@ struct Sandbox::Impl {
   }
 
   // Our `require(name)`: loads name.lua (dots are folders) from the first
-  // require directory holding it, once per sandbox, as Lua source. Runs
-  // inside protect(), so failures are C++ exceptions located at the calling
-  // line.
+  // require directory holding it, once per sandbox, as Lua source. Only
+  // regular files whose real path (links resolved) lies inside one of the
+  // require directories are read. Runs inside protect(), so failures are C++
+  // exceptions located at the calling line.
   int require_module(lua_State* L) {
     // Level 1 is unknown when require is called by pcall, or by a tail call
     // (`return require(...)`: LuaJIT drops the caller's frame). Then name the
@@ -532,16 +556,32 @@ struct Sandbox::Impl {
     std::string source;
     for (const auto& dir : require_dirs) {
       std::filesystem::path candidate = dir / relative;
-      const std::error_code ec = read_whole_file(candidate, source);
-      if (!ec) {
-        found = std::move(candidate);
-        break;
+      std::error_code ec;
+      const std::filesystem::path real = std::filesystem::canonical(candidate, ec);
+      if (ec == std::errc::no_such_file_or_directory || ec == std::errc::not_a_directory) {
+        searched.push_back(candidate.string());
+        continue;
       }
-      if (ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory) {
+      if (ec) {
         throw failure(
             fmt::format("cannot read module '{}' from {}: {}", name, candidate.string(), ec.message()));
       }
-      searched.push_back(candidate.string());
+      // Checked before anything is read: a link in the shot's folder to
+      // /etc/shadow would otherwise be parsed, and a line of it quoted in
+      // the syntax error.
+      if (std::none_of(require_roots.begin(), require_roots.end(),
+                       [&](const auto& root) { return is_within(real, root); })) {
+        std::vector<std::string> dirs;
+        for (const auto& d : require_dirs) dirs.push_back(d.string());
+        throw failure(fmt::format(
+            "module '{}' ({}) leads through a link to {}, outside the folders modules are read from ({})", name,
+            candidate.string(), real.string(), join(dirs, ", ")));
+      }
+      if (const std::string problem = read_source_file(real, limits.memory_bytes, source); !problem.empty()) {
+        throw failure(fmt::format("cannot read module '{}' from {}: {}", name, candidate.string(), problem));
+      }
+      found = std::move(candidate);
+      break;
     }
     if (found.empty()) {
       throw failure(fmt::format("module '{}' not found (searched: {})", name,
@@ -643,6 +683,12 @@ Sandbox::Sandbox(std::vector<std::filesystem::path> require_dirs, SandboxLimits 
   }
   Impl& s = *impl_;
   s.require_dirs = std::move(require_dirs);
+  for (const auto& dir : s.require_dirs) {
+    std::error_code ec;
+    std::filesystem::path root = std::filesystem::canonical(dir, ec);
+    if (ec) root = std::filesystem::weakly_canonical(std::filesystem::absolute(dir, ec), ec);
+    s.require_roots.push_back(std::move(root));
+  }
   s.limits = std::move(limits);
   lua_State* L = lua_newstate(&Impl::allocate, &s);
   if (L == nullptr) {
@@ -711,8 +757,8 @@ void Sandbox::run_file(const std::filesystem::path& file, int nresults) {
   Impl& s = *impl_;
   lua_State* L = s.L;
   std::string source;
-  if (const std::error_code ec = read_whole_file(file, source)) {
-    throw ScriptError(fmt::format("cannot read script {}: {}", file.string(), ec.message()));
+  if (const std::string problem = read_source_file(file, s.limits.memory_bytes, source); !problem.empty()) {
+    throw ScriptError(fmt::format("cannot read script {}: {}", file.string(), problem));
   }
   if (looks_like_bytecode(source)) {
     throw ScriptError(fmt::format(

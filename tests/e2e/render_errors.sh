@@ -103,6 +103,15 @@ fi
 script tostring_loop "error(setmetatable({}, {__tostring = function() while true do end end}))"
 expect_error tostring_loop "tostring_loop.lua:2: error object (a table value): its __tostring did not return within 0.1 s" -- \
   timeout 20 "$LIGHTCONE" render tostring_loop.lua --out out
+# require followed a link out of the shot's folder, parsed the file and quoted it.
+ln -s /etc/passwd "$WORK/passwd.lua"
+script require_link "local m = require 'passwd'"
+expect_error require_link "require_link.lua:2: module 'passwd' (./passwd.lua) leads through a link to /etc/passwd, outside the folders" -- \
+  "$LIGHTCONE" render require_link.lua --out out
+! grep -q "root" require_link.err || fail "require_link: a line of /etc/passwd is in the message"
+# The shot itself must be a regular file too.
+mkfifo "$WORK/fifo_shot.lua"
+expect_error fifo_shot "fifo_shot.lua: a FIFO, not a regular file" -- timeout 60 "$LIGHTCONE" inspect fifo_shot.lua
 
 [ ! -e out ] || [ -z "$(ls -A out)" ] || fail "failed renders left files in out/: $(ls out)"
 e2e_end

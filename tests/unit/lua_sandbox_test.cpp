@@ -8,16 +8,20 @@
 #include <gtest/gtest.h>
 
 #include "scratch_dir.hpp"
+#include <fcntl.h>
 #include <pthread.h>
 #include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -839,6 +843,68 @@ return table.concat(out, "\n")
             "F:16: bad argument #1 to 'resume' (coroutine expected)\n"
             "F:17: bad argument #1 to 'sort' (table expected, got nil)\n"
             "F:20: cannot resume dead coroutine");
+}
+
+// require only reads regular files whose real path lies in its folders: a
+// link in the shot's folder to a file elsewhere was parsed, and a line of
+// it quoted in the syntax error.
+TEST(LuaSandbox, RequireRefusesLinksOutOfItsFolders) {
+  ScratchDir dir;
+  fs::create_directories(dir / "shot" / "lib");
+  fs::create_directories(dir / "elsewhere");
+  write_file(dir / "elsewhere" / "secret.lua", "SECRET_TOKEN is not Lua\n");
+  write_file(dir / "shot" / "inside.lua", "return 'inside'\n");
+  fs::create_symlink(dir / "elsewhere" / "secret.lua", dir / "shot" / "secret.lua");
+  fs::create_directory_symlink(dir / "elsewhere", dir / "shot" / "linked");
+  fs::create_symlink(dir / "shot" / "inside.lua", dir / "shot" / "lib" / "alias.lua");
+  const fs::path main = script(dir, "shot/main.lua",
+                               "local ok1, e1 = pcall(require, 'secret')\nlocal ok2, e2 = pcall(require, 'linked.secret')\n"
+                               "return e1 .. '\\n' .. e2 .. '\\n' .. require('lib.alias')\n");
+  Sandbox sandbox({dir / "shot"});
+  sandbox.run_file(main);
+  const std::string out = top_string(sandbox.state());
+  const std::string real = fs::canonical(dir / "elsewhere" / "secret.lua").string();
+  EXPECT_NE(out.find(":1: module 'secret' (" + (dir / "shot" / "secret.lua").string() + ") leads through a link to " +
+                     real + ", outside the folders modules are read from (" + (dir / "shot").string() + ")"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find(":2: module 'linked.secret' (" + (dir / "shot" / "linked" / "secret.lua").string() +
+                     ") leads through a link to " + real),
+            std::string::npos)
+      << out;
+  EXPECT_EQ(out.find("SECRET_TOKEN"), std::string::npos) << out;
+  EXPECT_TRUE(out.ends_with("\ninside")) << out;  // a link that stays inside is fine
+}
+
+// Scripts and modules must be regular files: a FIFO blocked the read until
+// something wrote to it (and /dev/zero never ends). A helper thread opens
+// the FIFO after 5 s if the test is still waiting, so that a regression
+// fails instead of hanging.
+TEST(LuaSandbox, ScriptsAndModulesAreRegularFiles) {
+  ScratchDir dir;
+  const fs::path fifo = dir / "fifo.lua";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::atomic<bool> done{false};
+  std::thread unblock([&] {
+    for (int i = 0; i < 50 && !done; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (!done) ::close(::open(fifo.c_str(), O_RDWR));
+  });
+  const fs::path main = script(dir, "main.lua", "return select(2, pcall(require, 'fifo'))\n");
+  Sandbox sandbox({dir.path()});
+  const auto t0 = std::chrono::steady_clock::now();
+  sandbox.run_file(main);
+  const std::string module_msg = top_string(sandbox.state());
+  const std::string script_msg = script_error([&] { sandbox.run_file(fifo); });
+  done = true;
+  unblock.join();
+  EXPECT_LT(seconds_since(t0), 4.0);
+  EXPECT_NE(module_msg.find("main.lua:1: cannot read module 'fifo' from " + fifo.string() +
+                            ": a FIFO, not a regular file"),
+            std::string::npos)
+      << module_msg;
+  EXPECT_EQ(script_msg, "cannot read script " + fifo.string() + ": a FIFO, not a regular file");
+  const std::string zero_msg = script_error([&] { sandbox.run_file("/dev/zero"); });
+  EXPECT_EQ(zero_msg, "cannot read script /dev/zero: a character device, not a regular file");
 }
 
 }  // namespace
