@@ -42,7 +42,12 @@ FrameScene Shot::frame(int i) {
     throw lua::FieldError(fmt::format("{}: no such frame (the shot has frames 0 to {})", ctx, info_.frames - 1));
   lua_rawgeti(L, LUA_REGISTRYINDEX, frame_ref_);
   lua_pushinteger(L, i);
-  sandbox_.call(1, 1);
+  try {
+    sandbox_.call(1, 1);
+  } catch (const lua::ScriptError& e) {
+    // The script's line alone does not say which of its frames failed.
+    throw lua::ScriptError(fmt::format("{}: {}", ctx, e.what()));
+  }
   if (!lua_istable(L, -1)) {
     const std::string got = luaL_typename(L, -1);
     lua_pop(L, 1);

@@ -93,16 +93,22 @@ LUA
 script gsub_nest "local function f(s) return (s:gsub('.', f)) end f('a')"
 expect_error gsub_nest "gsub_nest.lua:2: too deeply nested: more than 200 calls back into Lua" -- "$LIGHTCONE" render gsub_nest.lua --out out
 script wrap_nest "local function f() coroutine.wrap(f)() end" "if i == 2 then f() end"
-expect_error wrap_nest "wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" render wrap_nest.lua --out out
-expect_error wrap_nest_inspect "wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" inspect wrap_nest.lua
+expect_error wrap_nest "wrap_nest.lua: frame 2: wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" render wrap_nest.lua --out out
+expect_error wrap_nest_inspect "wrap_nest.lua: frame 2: wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" inspect wrap_nest.lua
 if command -v mpirun >/dev/null; then
   use_mpirun
-  expect_error wrap_nest_mpi "wrap_nest.lua:2: too deeply nested" -- mpi 2 "$LIGHTCONE" render wrap_nest.lua --out out
+  expect_error wrap_nest_mpi "wrap_nest.lua: frame 2: wrap_nest.lua:2: too deeply nested" -- mpi 2 "$LIGHTCONE" render wrap_nest.lua --out out
 fi
 # An error object whose __tostring loops gave "error in error handling" after 30 s.
 script tostring_loop "error(setmetatable({}, {__tostring = function() while true do end end}))"
 expect_error tostring_loop "tostring_loop.lua:2: error object (a table value): its __tostring did not return within 0.1 s" -- \
   timeout 20 "$LIGHTCONE" render tostring_loop.lua --out out
+# A Lua error in frame(i) named the line, not the frame.
+script frame_err "" "if i == 2 then local x = nil return x.y end"
+for cmd in "render frame_err.lua --out out" "inspect frame_err.lua" "trace frame_err.lua --frame 2 --pixel 0,0"; do
+  expect_error "frame_err_${cmd%% *}" "frame_err.lua: frame 2: frame_err.lua:5: attempt to index local 'x' (a nil value)" -- \
+    "$LIGHTCONE" $cmd
+done
 # require followed a link out of the shot's folder, parsed the file and quoted it.
 ln -s /etc/passwd "$WORK/passwd.lua"
 script require_link "local m = require 'passwd'"
