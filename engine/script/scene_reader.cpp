@@ -103,7 +103,8 @@ CameraSpec read_camera(TableReader& t) {
   expect_kind(t, {"camera"}, "lc.camera{...}");
   CameraSpec c;
   c.fov = t.number_or("fov", c.fov);
-  if (!(c.fov > 0.0 && c.fov < 180.0)) fail(t, fmt::format("fov must be between 0 and 180 degrees, got {}", c.fov));
+  if (!(c.fov > 0.0 && c.fov < 180.0))
+    fail(t, fmt::format("fov must be greater than 0 and less than 180 degrees, got {}", c.fov));
   c.yaw = t.number_or("yaw", 0.0);
   c.pitch = t.number_or("pitch", 0.0);
   c.roll = t.number_or("roll", 0.0);

@@ -47,7 +47,9 @@ expect_error inside "inside a horizon" -- "$LIGHTCONE" render inside.lua --out o
 shot nan "$good_kerr camera = lc.camera{fov = 0/0},"
 expect_error nan "nan.lua:5: camera: field 'fov' is nan" -- "$LIGHTCONE" render nan.lua --out out
 shot wide "$good_kerr camera = lc.camera{fov = 200},"
-expect_error wide "wide.lua:5: camera: fov must be between 0 and 180 degrees" -- "$LIGHTCONE" render wide.lua --out out
+expect_error wide "wide.lua:5: camera: fov must be greater than 0 and less than 180 degrees, got 200" -- "$LIGHTCONE" render wide.lua --out out
+shot fov180 "$good_kerr camera = lc.camera{fov = 180},"
+expect_error fov180 "fov180.lua:5: camera: fov must be greater than 0 and less than 180 degrees, got 180" -- "$LIGHTCONE" render fov180.lua --out out
 shot typo "$good_kerr disk = lc.disk{iner = 6, outer = 10},"
 expect_error typo "typo.lua:5: disk: missing field 'inner' (there is a field 'iner': misspelt?)" -- "$LIGHTCONE" render typo.lua --out out
 shot scene_typo "spacetime = lc.kerr{mass = 1}, obsrver = lc.static_observer{r = 30, theta = 80, phi = 0},"
@@ -109,6 +111,12 @@ for cmd in "render frame_err.lua --out out" "inspect frame_err.lua" "trace frame
   expect_error "frame_err_${cmd%% *}" "frame_err.lua: frame 2: frame_err.lua:5: attempt to index local 'x' (a nil value)" -- \
     "$LIGHTCONE" $cmd
 done
+# frame_count suggested 'frame', a field of every shot.
+cat >"$WORK/frame_count.lua" <<'LUA'
+return {name = "frame_count", frame_count = 1, width = 8, height = 8, frame = function(i) return {} end}
+LUA
+expect_error frame_count "frame_count.lua: missing field 'frames' (there is a field 'frame_count': misspelt?)" -- \
+  "$LIGHTCONE" render frame_count.lua --out out
 # require followed a link out of the shot's folder, parsed the file and quoted it.
 ln -s /etc/passwd "$WORK/passwd.lua"
 script require_link "local m = require 'passwd'"

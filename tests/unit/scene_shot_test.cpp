@@ -65,4 +65,16 @@ TEST(SceneShot, ErrorsInsideFrameNameTheFrame) {
   EXPECT_NO_THROW(shot.frame(0));  // the state is fine after errors
 }
 
+// A misspelt frames suggested 'frame', a field of every shot.
+TEST(SceneShot, MisspeltFramesSuggestsTheMissingField) {
+  ScratchDir dir;
+  const fs::path file = write_shot(dir, "shot.lua",
+                                   std::string("local lc = require 'lightcone'\n"
+                                               "return {name = 'shot', frame_count = 10, width = 8, height = 8,\n"
+                                               "  frame = function(i) return ") +
+                                       kScene + " end}\n");
+  EXPECT_EQ(error_of<lc::lua::FieldError>([&] { lc::Shot shot(file); }),
+            file.string() + ": missing field 'frames' (there is a field 'frame_count': misspelt?)");
+}
+
 }  // namespace
