@@ -19,7 +19,7 @@ namespace lc {
 class ShotResources {
  public:
   // Texture paths are resolved against these folders in order (the shot's
-  // own folder first).
+  // own folder first), as resolve_sky_image (scene/asset_path.hpp) says.
   explicit ShotResources(std::vector<std::filesystem::path> asset_dirs = {});
   std::shared_ptr<const Worldline> worldline(const WorldlineSpec& spec);
   std::shared_ptr<const Texture> texture(const std::filesystem::path& file);

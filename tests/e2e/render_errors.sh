@@ -123,6 +123,25 @@ script require_link "local m = require 'passwd'"
 expect_error require_link "require_link.lua:2: module 'passwd' (./passwd.lua) leads through a link to /etc/passwd, outside the folders" -- \
   "$LIGHTCONE" render require_link.lua --out out
 ! grep -q "root" require_link.err || fail "require_link: a line of /etc/passwd is in the message"
+# Sky images: only regular files inside the shot's (or the project's shots/)
+# folder; a FIFO or /dev/zero hung the input hash before any check.
+mkfifo "$WORK/fifo.png"
+ln -s /dev/zero "$WORK/zero.png"
+ln -s /etc/passwd "$WORK/passwd.png"
+shot sky_fifo "$good_kerr sky = lc.sky_image{file = 'fifo.png'}"
+expect_error sky_fifo "sky_fifo.lua: frame 0: sky image 'fifo.png' (./fifo.png) is a FIFO, not a regular file" -- \
+  timeout 60 "$LIGHTCONE" render sky_fifo.lua --out out
+shot sky_zero "$good_kerr sky = lc.sky_image{file = 'zero.png'}"
+expect_error sky_zero "sky image 'zero.png' (./zero.png) leads through a link to /dev/zero, outside the folders" -- \
+  timeout 60 "$LIGHTCONE" render sky_zero.lua --out out
+shot sky_dev "$good_kerr sky = lc.sky_image{file = '/dev/zero'}"
+expect_error sky_dev "sky image '/dev/zero': the field 'file' must be a path relative to the shot's folder" -- \
+  timeout 60 "$LIGHTCONE" render sky_dev.lua --out out
+expect_error sky_dev_trace "sky image '/dev/zero': the field 'file' must be a path relative" -- \
+  timeout 60 "$LIGHTCONE" trace sky_dev.lua --frame 0 --pixel 0,0
+shot sky_passwd "$good_kerr sky = lc.sky_image{file = 'passwd.png'}"
+expect_error sky_passwd "sky image 'passwd.png' (./passwd.png) leads through a link to /etc/passwd" -- \
+  "$LIGHTCONE" render sky_passwd.lua --out out
 # The shot itself must be a regular file too.
 mkfifo "$WORK/fifo_shot.lua"
 expect_error fifo_shot "fifo_shot.lua: a FIFO, not a regular file" -- timeout 60 "$LIGHTCONE" inspect fifo_shot.lua
