@@ -14,6 +14,15 @@ namespace {
 using lua::FieldError;
 using lua::TableReader;
 
+// The most spheres a scene may hold: every ray is tested against each, and
+// the scene is copied out of Lua (a script can list one sphere a million
+// times in a few MiB of Lua memory, which would take GiBs here).
+constexpr std::size_t kMaxObjects = 1000;
+
+// The longest shot name: it names the output files (<name>.<NNNN>.exr and
+// the journal), and file names have at most 255 bytes.
+constexpr std::size_t kMaxNameLength = 128;
+
 [[noreturn]] void fail(const TableReader& t, const std::string& what) {
   throw FieldError(fmt::format("{}: {}", t.context(), what));
 }
@@ -226,6 +235,8 @@ FrameScene read_frame_scene(TableReader& t) {
   if (auto d = t.optional_table("disk")) fs.disk = read_disk(*d);
   if (auto s = t.optional_table("sky")) fs.sky = read_sky(*s);
   if (auto objs = t.optional_table("objects")) {
+    if (objs->length() > kMaxObjects)
+      fail(*objs, fmt::format("at most {} spheres, got {}", kMaxObjects, objs->length()));
     for (std::size_t i = 1; i <= objs->length(); ++i) {
       auto o = objs->table_at(i);
       fs.spheres.push_back(read_sphere(o, &fs.spacetime));
@@ -240,6 +251,9 @@ ShotInfo read_shot_info(TableReader& t) {
   ShotInfo s;
   s.name = t.string("name");
   if (s.name.empty()) fail(t, "name must not be empty");
+  if (s.name.size() > kMaxNameLength)
+    fail(t, fmt::format("name has {} characters, at most {} are allowed (it names the output files)", s.name.size(),
+                        kMaxNameLength));
   for (char c : s.name)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
       fail(t, fmt::format("name '{}' may only use letters, digits, '_' and '-' (it names the output files)", s.name));

@@ -77,4 +77,31 @@ TEST(SceneShot, MisspeltFramesSuggestsTheMissingField) {
             file.string() + ": missing field 'frames' (there is a field 'frame_count': misspelt?)");
 }
 
+// A script can list one sphere a million times in a few MiB of Lua memory;
+// the scene's copy of them took GiBs (and a ray tests every sphere).
+TEST(SceneShot, ObjectsAndNamesAreBounded) {
+  ScratchDir dir;
+  const std::string spheres =
+      "local s = lc.sphere{radius = 1, position = {r = 10, theta = 90, phi = 0}}\n"
+      "local many = {} for i = 1, 1e6 do many[i] = s end\n";
+  const fs::path file = write_shot(dir, "shot.lua",
+                                   "local lc = require 'lightcone'\n" + spheres +
+                                       "return {name = 'shot', frames = 2, width = 8, height = 8,\n"
+                                       "  frame = function(i)\n"
+                                       "    return {spacetime = lc.kerr{mass = 1, spin = 0.9},\n"
+                                       "            observer = lc.static_observer{r = 30, theta = 80, phi = 0},\n"
+                                       "            objects = i == 0 and {s, s} or many}\n"
+                                       "  end}\n");
+  lc::Shot shot(file);
+  EXPECT_EQ(shot.frame(0).spheres.size(), 2u);
+  EXPECT_EQ(error_of<lc::lua::FieldError>([&] { shot.frame(1); }),
+            file.string() + ": frame 1.objects: at most 1000 spheres, got 1000000");
+
+  const fs::path named = write_shot(dir, "named.lua",
+                                    "return {name = string.rep('n', 1e6), frames = 1, width = 8, height = 8,\n"
+                                    "  frame = function(i) return {} end}\n");
+  EXPECT_EQ(error_of<lc::lua::FieldError>([&] { lc::Shot shot(named); }),
+            named.string() + ": name has 1000000 characters, at most 128 are allowed (it names the output files)");
+}
+
 }  // namespace
