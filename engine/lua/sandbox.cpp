@@ -1,6 +1,10 @@
 #include "lua/sandbox.hpp"
 
+#include <fcntl.h>
 #include <luajit.h>
+#include <pthread.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -15,18 +19,26 @@
 #include <system_error>
 #include <utility>
 
+#include "core/file_checks.hpp"
+#include "lua/library_guards.hpp"
+#include "lua/string_patterns.hpp"
+
 namespace lc::lua {
 
 namespace {
 
-// print(...) writing to standard error, tab-separated, via tostring.
+// print(...) writing to standard error, tab-separated, via tostring (which
+// may run a __tostring metamethod: a call back into Lua).
 int print_to_stderr(lua_State* L) {
   const int n = lua_gettop(L);
   lua_getglobal(L, "tostring");
   for (int i = 1; i <= n; ++i) {
     lua_pushvalue(L, -1);
     lua_pushvalue(L, i);
-    lua_call(L, 1, 1);
+    {
+      const detail::NestedCall nested(L);
+      lua_call(L, 1, 1);
+    }
     std::size_t len = 0;
     const char* text = lua_tolstring(L, -1, &len);
     if (text == nullptr) return luaL_error(L, "'tostring' must return a string to 'print'");
@@ -52,24 +64,90 @@ constexpr int kRethrow = -1;
 constexpr std::size_t kFramesHead = 8;
 constexpr std::size_t kFramesTail = 3;
 
-// Reads a whole file. Returns the OS error, if any (ENOENT, EISDIR, ...).
-std::error_code read_whole_file(const std::filesystem::path& path, std::string& out) {
+// C stack kept free below the deepest nested call back into Lua, and needed
+// to start an evaluation: for what runs there without another check. The
+// most is LuaJIT's parser on a module of 200 nested function definitions
+// (~224 KiB measured); also up to 1000 VM instructions until the hook looks
+// again (a __tostring calling string.format on itself: ~40 KiB), pattern
+// matching, the message handler and its traceback.
+constexpr std::size_t kStackReserve = 384u << 10;
+
+// The time an error object's __tostring gets from the message handler: it
+// only has to produce a line of text.
+constexpr double kTostringSeconds = 0.1;
+
+// The longest error message kept (a script may raise a string of hundreds
+// of MiB, which would be copied into the traceback, the exception, stderr).
+constexpr std::size_t kMaxMessageBytes = 4096;
+
+// `text`, cut to kMaxMessageBytes.
+std::string clipped(std::string_view text) {
+  if (text.size() <= kMaxMessageBytes) return std::string(text);
+  return fmt::format("{}... ({} more bytes)", text.substr(0, kMaxMessageBytes), text.size() - kMaxMessageBytes);
+}
+
+// Reads a whole Lua source file into `out`. Returns "" or why it cannot:
+// the OS error ("No such file or directory", ...), or that it is no regular
+// file (a FIFO or /dev/zero would block or never end; the type is checked
+// on the opened file, which a non-blocking open makes safe for FIFOs), or
+// that it is larger than `max_bytes` (its text must fit in the capped heap
+// anyway; reading it first would not be capped).
+std::string read_source_file(const std::filesystem::path& path, std::size_t max_bytes, std::string& out) {
   out.clear();
-  errno = 0;
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr) return {errno != 0 ? errno : EIO, std::generic_category()};
-  std::error_code ec;
-  char buf[1 << 14];
-  for (;;) {
-    const std::size_t n = std::fread(buf, 1, sizeof buf, f);
-    out.append(buf, n);
-    if (n < sizeof buf) {
-      if (std::ferror(f)) ec = {errno != 0 ? errno : EIO, std::generic_category()};
-      break;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) return std::generic_category().message(errno);
+  std::string problem;
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) {
+    problem = std::generic_category().message(errno);
+  } else if (S_ISDIR(st.st_mode)) {
+    problem = std::generic_category().message(EISDIR);
+  } else if (!S_ISREG(st.st_mode)) {
+    problem = fmt::format("{}, not a regular file", file_kind(st.st_mode));
+  } else if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
+    problem = fmt::format("{} bytes, more than the memory limit of {} bytes", st.st_size, max_bytes);
+  } else {
+    out.resize(static_cast<std::size_t>(st.st_size));
+    std::size_t done = 0;
+    while (problem.empty()) {
+      if (done == out.size()) out.resize(done + (1 << 14));  // it grew since fstat
+      const ssize_t n = ::read(fd, out.data() + done, out.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) problem = std::generic_category().message(errno);
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+      if (done > max_bytes) problem = fmt::format("more than the memory limit of {} bytes", max_bytes);
     }
+    out.resize(done);
   }
-  std::fclose(f);
-  return ec;
+  ::close(fd);
+  return problem;
+}
+
+// The stack level of the nearest line of a script at `level` or below, or
+// -1 if there is none. Lines of the sandbox's own Lua (library_guards.cpp)
+// are skipped: an author knows nothing of them.
+int nearest_script_level(lua_State* L, int level) {
+  // Deep enough for a stack of C functions nested to the limit.
+  constexpr int kMaxLevels = 8 * detail::kMaxNestedCalls;
+  for (; level < kMaxLevels; ++level) {
+    lua_Debug ar;
+    if (lua_getstack(L, level, &ar) == 0) break;
+    const std::string loc = Sandbox::where(L, level);
+    if (loc != "?" && !loc.starts_with("[sandbox]:")) return level;
+  }
+  return -1;
+}
+
+// The location ("file:LINE") of that line, or "".
+std::string nearest_script_line(lua_State* L, int level) {
+  const int at = nearest_script_level(L, level);
+  return at < 0 ? std::string() : Sandbox::where(L, at);
+}
+
+// Whether `text` starts with "loc: ".
+bool starts_with_location(std::string_view text, std::string_view loc) {
+  return text.starts_with(loc) && text.substr(loc.size()).starts_with(": ");
 }
 
 // LuaJIT bytecode dumps start with ESC; text sources never legitimately do.
@@ -104,6 +182,8 @@ std::string join(const std::vector<std::string>& parts, std::string_view sep) {
 // and drops anonymous C frames ("[C]: at 0x55..."), which LuaJIT prints for C
 // functions it cannot name: the C++ harness, and C functions reached by a
 // tail call (`return kerr{...}`), except `require`, which gets its name back.
+// Frames of the sandbox's own Lua ("[sandbox]:9: in function 'tostring'")
+// are dropped too: the script's line that called it follows.
 std::string tidy_traceback(std::string_view message, std::uintptr_t require_address) {
   constexpr std::string_view kMarker = "\nstack traceback:";
   const std::size_t at = message.find(kMarker);
@@ -124,7 +204,7 @@ std::string tidy_traceback(std::string_view message, std::uintptr_t require_addr
       }
       continue;
     }
-    if (line.empty() || line == "\t[C]: in ?") continue;
+    if (line.empty() || line == "\t[C]: in ?" || line.starts_with("\t[sandbox]:")) continue;
     frames.emplace_back(line);
   }
   for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -157,7 +237,15 @@ struct Sandbox::Impl {
   bool cap_lifted = false;     // while the handler formats a traceback
   int depth = 0;               // nesting of run_file/call; >0 means evaluating
   Clock::time_point deadline;
-  bool hook_every_instruction = false;
+  bool timed_out = false;  // the evaluation hit its deadline; the hook fires on every instruction
+  int nested_calls = 0;    // detail::NestedCall levels held
+
+  // The C stack of the thread last seen running the state: NestedCall and
+  // the hook refuse to go deeper than stack_floor (0: unknown, no check).
+  pthread_t stack_thread{};
+  bool stack_known = false;
+  std::uintptr_t stack_floor = 0;
+  std::vector<std::filesystem::path> require_roots;  // require_dirs, canonical
   std::vector<std::string> loading;  // the chain of modules being required
   std::vector<std::string> loading_files;  // their paths, for locating errors
   std::string main_file;                   // the outermost run_file's script
@@ -205,28 +293,164 @@ struct Sandbox::Impl {
   // Count hook: fails the evaluation once its deadline has passed. After the
   // first failure it fires on every instruction, so a script cannot swallow
   // the error with pcall and keep looping: the first instruction it runs
-  // outside a pcall fails again.
+  // outside a pcall fails again. It also stops C stack growth that no
+  // NestedCall sees (a __tostring that calls string.format on itself).
   static void time_hook(lua_State* L, lua_Debug*) {
     Impl& s = of(L);
-    if (s.depth == 0 || Clock::now() < s.deadline) return;
-    if (!s.hook_every_instruction) {
-      s.hook_every_instruction = true;
-      lua_sethook(L, &time_hook, LUA_MASKCOUNT, 1);
-    }
-    {
-      // In a hook, level 0 is the running Lua function.
-      const std::string loc = Sandbox::where(L, 0);
-      const std::string msg =
-          fmt::format("{}{}time limit of {:g} s exceeded (set by {})", loc == "?" ? "" : loc,
-                      loc == "?" ? "" : ": ", s.limits.seconds, s.limits.set_by);
-      lua_pushlstring(L, msg.data(), msg.size());
+    if (s.depth == 0) return;
+    std::size_t left = 0;
+    if (s.timed_out || Clock::now() >= s.deadline) {
+      s.fail_every_instruction();
+      push_at_running_line(L, s.time_limit_message());
+    } else if (!s.stack_has_room(left)) {
+      push_at_running_line(L, s.nesting_message(left));
+    } else {
+      return;
     }
     lua_error(L);
+  }
+
+  // Pushes "file:LINE: text" for the script line running (level 0 in a hook).
+  static void push_at_running_line(lua_State* L, const std::string& text) {
+    const std::string loc = nearest_script_line(L, 0);
+    const std::string msg = loc.empty() ? text : fmt::format("{}: {}", loc, text);
+    lua_pushlstring(L, msg.data(), msg.size());
+  }
+
+  // Pushes "file:LINE: text" for the script line calling the running C
+  // function, or with the script's name if no script line is on the stack
+  // (`return s:match(p)` in a main chunk: a tail call leaves none).
+  void push_at_calling_line(lua_State* L, const std::string& text) const {
+    if (nearest_script_line(L, 1).empty() && !main_file.empty()) {
+      const std::string msg = fmt::format("{}: {}", main_file, text);
+      lua_pushlstring(L, msg.data(), msg.size());
+    } else {
+      detail::push_located_message(L, text.c_str());
+    }
+  }
+
+  void fail_every_instruction() {
+    if (timed_out) return;
+    timed_out = true;
+    lua_sethook(L, &time_hook, LUA_MASKCOUNT, 1);
+  }
+
+  std::string time_limit_message() const {
+    return fmt::format("time limit of {:g} s exceeded (set by {})", limits.seconds, limits.set_by);
+  }
+
+  std::string nesting_message(std::size_t stack_left) const {
+    if (nested_calls >= detail::kMaxNestedCalls) {
+      return fmt::format(
+          "too deeply nested: more than {} calls back into Lua from C functions at once (coroutine.resume or "
+          "wrap, gsub or sort callbacks, __tostring, require, error handlers)",
+          detail::kMaxNestedCalls);
+    }
+    return fmt::format(
+        "too deeply nested: this thread's C stack is nearly used up ({} KiB left, {} calls back into Lua from C "
+        "functions held)",
+        stack_left >> 10, nested_calls);
+  }
+
+  // Whether the calling thread's C stack has more than kStackReserve left
+  // (`left`: how much it has). Its bounds are looked up once per thread:
+  // pthread_getattr_np reads /proc for the main thread.
+  bool stack_has_room(std::size_t& left) {
+    const pthread_t self = pthread_self();
+    if (!stack_known || !pthread_equal(self, stack_thread)) {
+      stack_thread = self;
+      stack_known = true;
+      stack_floor = 0;
+      pthread_attr_t attr;
+      if (pthread_getattr_np(self, &attr) == 0) {
+        void* low = nullptr;
+        std::size_t size = 0;
+        if (pthread_attr_getstack(&attr, &low, &size) == 0) {
+          stack_floor = reinterpret_cast<std::uintptr_t>(low) + kStackReserve;
+        }
+        pthread_attr_destroy(&attr);
+      }
+    }
+    const auto here = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
+    const std::uintptr_t low = stack_floor - kStackReserve;
+    left = stack_floor == 0 || here < low ? 0 : here - low;
+    return stack_floor == 0 || here > stack_floor;
+  }
+
+  // Throws ScriptError before an outermost evaluation of `what` on a thread
+  // with less than kStackReserve of C stack left, where the script could
+  // not even be parsed safely.
+  void check_stack_to_start(const std::string& what) {
+    std::size_t left = 0;
+    if (depth != 0 || stack_has_room(left)) return;
+    throw ScriptError(fmt::format("cannot evaluate {}: this thread has {} KiB of C stack left, the sandbox needs {} KiB",
+                                  what, left >> 10, kStackReserve >> 10));
+  }
+
+  // Runs lua_pcall(L, nargs, 1, 0) with at most `seconds` of the
+  // evaluation's time. `over` tells whether that ran out; if the
+  // evaluation's own deadline has not passed, it goes on normally.
+  int call_with_budget(lua_State* L, int nargs, double seconds, bool& over) {
+    const Clock::time_point outer = deadline;
+    deadline = std::min(outer, Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                  std::chrono::duration<double>(seconds)));
+    const int status = lua_pcall(L, nargs, 1, 0);
+    over = timed_out;
+    deadline = outer;
+    if (timed_out && Clock::now() < outer) {
+      timed_out = false;
+      lua_sethook(L, &time_hook, LUA_MASKCOUNT, kHookInstructions);
+    }
+    return status;
+  }
+
+  // The message for an error value that is no string, at index 1: its
+  // __tostring's text if that returns a string within kTostringSeconds;
+  // else what the value is, where it was raised, and what went wrong.
+  // A handler must not run script code without a budget: LuaJIT calls it
+  // for an error already raised, where a second error (the time limit)
+  // only leaves "error in error handling".
+  std::string describe_error_object(lua_State* L) {
+    const std::string where = nearest_script_line(L, 1);
+    const std::string object = fmt::format("error object (a {} value)", luaL_typename(L, 1));
+    std::string what;
+    if (luaL_getmetafield(L, 1, "__tostring") == 0) {
+      what = fmt::format("error object is a {} value", luaL_typename(L, 1));
+    } else if (timed_out) {
+      what = object + ": its __tostring was not run, the time limit had passed";
+    } else if (!detail::NestedCall::allowed(L)) {
+      what = object + ": its __tostring was not run, calls were nested too deeply";
+    } else {
+      lua_pushvalue(L, 1);
+      bool over = false;
+      int status = 0;
+      {
+        const detail::NestedCall nested(L);
+        status = call_with_budget(L, 1, kTostringSeconds, over);
+      }
+      std::size_t len = 0;
+      const char* text = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &len) : nullptr;
+      if (status == 0 && text != nullptr) return clipped(std::string_view(text, len));
+      if (over) {
+        what = fmt::format("{}: its __tostring did not return within {:g} s", object, kTostringSeconds);
+      } else if (status == LUA_ERRMEM) {
+        what = object + ": its __tostring ran out of memory";
+      } else if (status != 0) {
+        what = fmt::format("{}: its __tostring failed: {}", object,
+                           text != nullptr ? clipped(std::string_view(text, len)) : luaL_typename(L, -1));
+      } else {
+        what = fmt::format("{}: its __tostring returned a {} value, not a string", object, luaL_typename(L, -1));
+      }
+    }
+    lua_settop(L, 1);
+    return where.empty() ? what : fmt::format("{}: {}", where, what);
   }
 
   // Message handler of every protected call: error value -> string with a
   // traceback. Passes through the memory sentinel and a message it already
   // traced (an error re-raised by require carries the module's frames).
+  // error() adds no position to non-strings: their messages name the first
+  // Lua frame (the line that raised them).
   static int message_handler(lua_State* L) {
     Impl& s = of(L);
     if (lua_type(L, 1) == LUA_TLIGHTUSERDATA && lua_touserdata(L, 1) == &s.memory_sentinel) {
@@ -236,30 +460,23 @@ struct Sandbox::Impl {
     lua_rawgeti(L, LUA_REGISTRYINDEX, s.last_trace_ref);
     if (lua_rawequal(L, 1, 2)) return 1;
     lua_settop(L, 1);
-    if (lua_type(L, 1) != LUA_TSTRING && lua_type(L, 1) != LUA_TNUMBER) {
-      if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) {
-        lua_replace(L, 1);
-      } else {
-        lua_settop(L, 1);
-        // error() adds no position to non-strings: name the first Lua frame.
-        std::string msg = fmt::format("error object is a {} value", luaL_typename(L, 1));
-        for (int level = 1; level < 100; ++level) {
-          lua_Debug ar;
-          if (lua_getstack(L, level, &ar) == 0) break;
-          const std::string loc = Sandbox::where(L, level);
-          if (loc != "?") {
-            msg = fmt::format("{}: {}", loc, msg);
-            break;
-          }
-        }
-        lua_pushlstring(L, msg.data(), msg.size());
-        lua_replace(L, 1);
-      }
+    std::string text;
+    if (lua_type(L, 1) == LUA_TSTRING || lua_type(L, 1) == LUA_TNUMBER) {
+      std::size_t len = 0;
+      const char* p = lua_tolstring(L, 1, &len);
+      if (len > kMaxMessageBytes) text = clipped(std::string_view(p, len));
+    } else {
+      text = s.describe_error_object(L);
     }
     {
       // A script that fails close to the cap still gets its message: the
-      // few bytes of a traceback may exceed the cap.
+      // few (at most kMaxMessageBytes) bytes of it and of a traceback may
+      // exceed the cap.
       const CapLift lift(s);
+      if (!text.empty()) {
+        lua_pushlstring(L, text.data(), text.size());
+        lua_replace(L, 1);
+      }
       luaL_traceback(L, L, lua_tostring(L, 1), 1);
     }
     lua_pushvalue(L, -1);
@@ -290,20 +507,19 @@ struct Sandbox::Impl {
     }
   }
 
-  // Our `require`: see sandbox.hpp and the brief in DESIGN.md. Runs inside
-  // protect(), so failures are C++ exceptions located at the calling line.
+  // Our `require(name)`: loads name.lua (dots are folders) from the first
+  // require directory holding it, once per sandbox, as Lua source. Only
+  // regular files whose real path (links resolved) lies inside one of the
+  // require directories are read. Runs inside protect(), so failures are C++
+  // exceptions located at the calling line.
   int require_module(lua_State* L) {
     // Level 1 is unknown when require is called by pcall, or by a tail call
     // (`return require(...)`: LuaJIT drops the caller's frame). Then name the
     // module being loaded, else the nearest script line, else the script.
     std::string loc = Sandbox::where(L, 1);
     if (loc == "?" && !loading_files.empty()) loc = loading_files.back();
-    for (int level = 2; loc == "?" && level < 64; ++level) {
-      lua_Debug ar;
-      if (lua_getstack(L, level, &ar) == 0) break;
-      loc = Sandbox::where(L, level);
-    }
-    if (loc == "?") loc = main_file;
+    if (loc == "?") loc = nearest_script_line(L, 2);
+    if (loc.empty()) loc = main_file;
     const auto failure = [&loc](const std::string& msg) {
       return std::runtime_error(loc.empty() ? msg : fmt::format("{}: {}", loc, msg));
     };
@@ -340,16 +556,32 @@ struct Sandbox::Impl {
     std::string source;
     for (const auto& dir : require_dirs) {
       std::filesystem::path candidate = dir / relative;
-      const std::error_code ec = read_whole_file(candidate, source);
-      if (!ec) {
-        found = std::move(candidate);
-        break;
+      std::error_code ec;
+      const std::filesystem::path real = std::filesystem::canonical(candidate, ec);
+      if (ec == std::errc::no_such_file_or_directory || ec == std::errc::not_a_directory) {
+        searched.push_back(candidate.string());
+        continue;
       }
-      if (ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory) {
+      if (ec) {
         throw failure(
             fmt::format("cannot read module '{}' from {}: {}", name, candidate.string(), ec.message()));
       }
-      searched.push_back(candidate.string());
+      // Checked before anything is read: a link in the shot's folder to
+      // /etc/shadow would otherwise be parsed, and a line of it quoted in
+      // the syntax error.
+      if (std::none_of(require_roots.begin(), require_roots.end(),
+                       [&](const auto& root) { return is_within(real, root); })) {
+        std::vector<std::string> dirs;
+        for (const auto& d : require_dirs) dirs.push_back(d.string());
+        throw failure(fmt::format(
+            "module '{}' ({}) leads through a link to {}, outside the folders modules are read from ({})", name,
+            candidate.string(), real.string(), join(dirs, ", ")));
+      }
+      if (const std::string problem = read_source_file(real, limits.memory_bytes, source); !problem.empty()) {
+        throw failure(fmt::format("cannot read module '{}' from {}: {}", name, candidate.string(), problem));
+      }
+      found = std::move(candidate);
+      break;
     }
     if (found.empty()) {
       throw failure(fmt::format("module '{}' not found (searched: {})", name,
@@ -363,6 +595,8 @@ struct Sandbox::Impl {
     note_loaded(found);
     std::string chunkname = "@";  // built in two steps: GCC 12 misreports "@" + s (-Wrestrict, PR 105329)
     chunkname += found.string();
+    // The parser and the module run on this C stack, below the caller's.
+    const detail::NestedCall nested(L);
     int status = luaL_loadbufferx(L, source.data(), source.size(), chunkname.c_str(), "t");
     if (status == 0) {
       // stack: name, chunk
@@ -428,8 +662,8 @@ struct Sandbox::Impl {
       s_.deadline = budget < std::chrono::hours(24 * 365)
                         ? Clock::now() + std::chrono::duration_cast<Clock::duration>(budget)
                         : Clock::time_point::max();
-      if (s_.hook_every_instruction) {
-        s_.hook_every_instruction = false;
+      if (s_.timed_out) {
+        s_.timed_out = false;
         lua_sethook(s_.L, &time_hook, LUA_MASKCOUNT, kHookInstructions);
       }
     }
@@ -449,6 +683,12 @@ Sandbox::Sandbox(std::vector<std::filesystem::path> require_dirs, SandboxLimits 
   }
   Impl& s = *impl_;
   s.require_dirs = std::move(require_dirs);
+  for (const auto& dir : s.require_dirs) {
+    std::error_code ec;
+    std::filesystem::path root = std::filesystem::canonical(dir, ec);
+    if (ec) root = std::filesystem::weakly_canonical(std::filesystem::absolute(dir, ec), ec);
+    s.require_roots.push_back(std::move(root));
+  }
   s.limits = std::move(limits);
   lua_State* L = lua_newstate(&Impl::allocate, &s);
   if (L == nullptr) {
@@ -493,6 +733,8 @@ Sandbox::Sandbox(std::vector<std::filesystem::path> require_dirs, SandboxLimits 
   // print goes to standard error: standard output may carry data (CSV).
   lua_pushcfunction(L, &print_to_stderr);
   lua_setglobal(L, "print");
+  install_library_guards(L);
+  install_string_patterns(L);
 
   lua_pushcfunction(L, &Impl::message_handler);
   s.handler_ref = luaL_ref(L, LUA_REGISTRYINDEX);
@@ -515,8 +757,8 @@ void Sandbox::run_file(const std::filesystem::path& file, int nresults) {
   Impl& s = *impl_;
   lua_State* L = s.L;
   std::string source;
-  if (const std::error_code ec = read_whole_file(file, source)) {
-    throw ScriptError(fmt::format("cannot read script {}: {}", file.string(), ec.message()));
+  if (const std::string problem = read_source_file(file, s.limits.memory_bytes, source); !problem.empty()) {
+    throw ScriptError(fmt::format("cannot read script {}: {}", file.string(), problem));
   }
   if (looks_like_bytecode(source)) {
     throw ScriptError(fmt::format(
@@ -524,6 +766,7 @@ void Sandbox::run_file(const std::filesystem::path& file, int nresults) {
   }
   s.note_loaded(file);
   if (lua_checkstack(L, 2) == 0) throw ScriptError("Lua stack overflow in the engine");
+  s.check_stack_to_start(file.string());
   const int base = lua_gettop(L);
   const Impl::Evaluation evaluation(s);
   if (s.depth == 1) s.main_file = file.string();
@@ -542,6 +785,7 @@ void Sandbox::call(int nargs, int nresults) {
   const int func = lua_gettop(L) - nargs;
   if (nargs < 0 || func < 1) throw ScriptError("Sandbox::call: no function below the arguments");
   if (lua_checkstack(L, 2) == 0) throw ScriptError("Lua stack overflow in the engine");
+  s.check_stack_to_start(s.main_file.empty() ? "a script function" : s.main_file);
   const Impl::Evaluation evaluation(s);
   // Below the function: a copy of it (to name the script in a memory error,
   // which skips the handler) and the message handler. Neither allocates.
@@ -592,21 +836,52 @@ void push_located_message(lua_State* L, const char* what) {
   {
     // Level 1 is no Lua line when the C function was called by pcall or by
     // a tail call (LuaJIT drops the calling frame): take the nearest one.
-    std::string loc = Sandbox::where(L, 1);
-    for (int level = 2; loc == "?" && level < 64; ++level) {
-      lua_Debug ar;
-      if (lua_getstack(L, level, &ar) == 0) break;
-      loc = Sandbox::where(L, level);
-    }
-    const std::string_view text(what);
-    if (loc != "?" && !(text.starts_with(loc) && text.substr(loc.size()).starts_with(": "))) {
-      const std::string msg = fmt::format("{}: {}", loc, text);
-      lua_pushlstring(L, msg.data(), msg.size());
-      return;
+    // Lua's own messages name long files by their tail ("...ots/shot.lua"),
+    // which also counts as already located.
+    const int at = nearest_script_level(L, 1);
+    lua_Debug ar;
+    if (at >= 0 && lua_getstack(L, at, &ar) != 0 && lua_getinfo(L, "Sl", &ar) != 0) {
+      const std::string loc = Sandbox::where(L, at);
+      const std::string short_loc = fmt::format("{}:{}", ar.short_src, ar.currentline);
+      const std::string_view text(what);
+      if (!starts_with_location(text, loc) && !starts_with_location(text, short_loc)) {
+        const std::string msg = fmt::format("{}: {}", loc, text);
+        lua_pushlstring(L, msg.data(), msg.size());
+        return;
+      }
     }
   }
   lua_pushstring(L, what);
 }
+
+NestedCall::NestedCall(lua_State* L) : L_(L) {
+  Sandbox::Impl& s = Sandbox::Impl::of(L);
+  std::size_t left = 0;
+  if (s.nested_calls < kMaxNestedCalls && s.stack_has_room(left)) {
+    ++s.nested_calls;
+    return;
+  }
+  s.push_at_calling_line(L, s.nesting_message(left));
+  lua_error(L);
+}
+
+NestedCall::~NestedCall() { --Sandbox::Impl::of(L_).nested_calls; }
+
+bool NestedCall::allowed(lua_State* L) {
+  Sandbox::Impl& s = Sandbox::Impl::of(L);
+  std::size_t left = 0;
+  return s.nested_calls < kMaxNestedCalls && s.stack_has_room(left);
+}
+
+void check_time(lua_State* L) {
+  Sandbox::Impl& s = Sandbox::Impl::of(L);
+  if (s.depth == 0 || (!s.timed_out && Clock::now() < s.deadline)) return;
+  s.fail_every_instruction();
+  s.push_at_calling_line(L, s.time_limit_message());
+  lua_error(L);
+}
+
+bool timed_out(lua_State* L) { return Sandbox::Impl::of(L).timed_out; }
 
 }  // namespace detail
 

@@ -4,8 +4,11 @@
 // A shot script may only compute: it gets base (without the loaders), table,
 // string (without dump), math and bit, plus our own `require` that reads
 // modules from a fixed list of directories. Every evaluation (run_file, call)
-// runs under a wall-clock limit and the whole state under a memory cap, and
-// every failure surfaces in C++ as ScriptError with the script's file:line.
+// runs under a wall-clock limit and the whole state under a memory cap; calls
+// nested through C functions are bounded (detail::NestedCall), and the
+// library functions that could escape these limits are replaced
+// (library_guards.hpp, string_patterns.hpp). Every failure surfaces in C++ as
+// ScriptError with the script's file:line.
 
 #include <lua.hpp>
 
@@ -19,6 +22,12 @@
 
 namespace lc::lua {
 
+namespace detail {
+class NestedCall;
+void check_time(lua_State* L);
+bool timed_out(lua_State* L);
+}  // namespace detail
+
 // A script failed to load or run. what() starts with the `file:line: message`
 // Lua produced, followed by a short traceback (one frame a line).
 class ScriptError : public std::runtime_error {
@@ -30,8 +39,9 @@ class ScriptError : public std::runtime_error {
 // script is being evaluated; seconds is the wall-clock budget of each single
 // evaluation (one run_file or one call). set_by is quoted in the limit
 // messages so an author learns where the limit comes from (e.g. a CLI flag).
-// The clock is checked between VM instructions, so one long C library call
-// (a pathological string.match pattern) overruns it until it returns.
+// The clock is checked between VM instructions and inside the string
+// library's pattern matching, the one place where a script can make C code
+// run for long.
 struct SandboxLimits {
   std::size_t memory_bytes = 512u << 20;
   double seconds = 30.0;
@@ -85,6 +95,9 @@ class Sandbox {
 
  private:
   struct Impl;
+  friend class detail::NestedCall;
+  friend void detail::check_time(lua_State* L);
+  friend bool detail::timed_out(lua_State* L);
   std::unique_ptr<Impl> impl_;
 };
 
@@ -102,6 +115,49 @@ namespace detail {
 // function (or, if that is not a Lua line, the nearest Lua line below it),
 // without doubling the location if `what` already starts with it.
 void push_located_message(lua_State* L, const char* what);
+
+// The rest of this namespace is for the C functions of the sandbox's own
+// library (sandbox.cpp, library_guards.cpp, string_patterns.cpp): they find
+// their Sandbox through the state's allocator, so they only work in states
+// that a Sandbox made.
+
+// How many C functions may be calling back into Lua at once (a gsub or sort
+// callback, a coroutine resumed, print's __tostring, require, an error
+// handler). Each such call holds C stack that LuaJIT's own stack checks do
+// not see: nested without bound they crash the process.
+constexpr int kMaxNestedCalls = 200;
+
+// Holds one level of that nesting while it lives. The constructor raises a
+// Lua error at the calling script line ("too deeply nested") instead, when
+// kMaxNestedCalls levels are held or the running thread's C stack is nearly
+// used up; construct it in a C function just before it calls back into Lua.
+// The count makes the limit the same on every thread; the stack check keeps
+// a thread with a small stack from crashing first.
+class NestedCall {
+ public:
+  explicit NestedCall(lua_State* L);
+  ~NestedCall();
+  NestedCall(const NestedCall&) = delete;
+  NestedCall& operator=(const NestedCall&) = delete;
+
+  // Whether constructing one now would succeed (for code that must not
+  // raise, like a message handler).
+  static bool allowed(lua_State* L);
+
+ private:
+  lua_State* L_;
+};
+
+// Raises the time-limit error at the calling script line once the running
+// evaluation is past its deadline: for C code that may run long without
+// returning to the VM, where the clock is checked between instructions.
+void check_time(lua_State* L);
+
+// True once the running evaluation has hit its time limit. From then on it
+// fails at every instruction, and no script error handler may run: LuaJIT
+// runs handlers of an error raised by the limit with its instruction hook
+// disabled, so a handler would run on without limit.
+bool timed_out(lua_State* L);
 }  // namespace detail
 
 // Runs f(L) (returning the number of Lua results) inside a lua_CFunction and

@@ -44,6 +44,16 @@ std::string describe(lua_State* L, int index) {
   }
 }
 
+// Keys longer than this are never suggested nor compared (the distance
+// table is quadratic), and are shortened in messages: a script's table may
+// have a key of any length.
+constexpr std::size_t kLongestKey = 64;
+
+// `key` as a message quotes it.
+std::string shown_key(std::string_view key) {
+  return key.size() <= kLongestKey ? std::string(key) : fmt::format("{}...", key.substr(0, kLongestKey));
+}
+
 // Optimal-string-alignment distance (Levenshtein plus adjacent swaps).
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   const std::size_t n = a.size();
@@ -67,14 +77,30 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 }  // namespace
 
 std::string nearest(std::string_view word, std::span<const std::string> candidates) {
-  // Short words are within distance 1 of too many unrelated names.
-  const std::size_t limit = word.size() >= 5 ? 2 : word.size() >= 3 ? 1 : 0;
-  std::size_t best_distance = limit + 1;
+  // Ranks: 1 + distance for a near spelling, kPrefixRank + the characters
+  // of the shorter word past the common prefix for a shared beginning; 0
+  // for no likeness.
+  constexpr std::size_t kPrefixRank = 10;
+  const auto rank = [word](std::string_view candidate) -> std::size_t {
+    if (word.size() > kLongestKey || candidate.size() > kLongestKey) return 0;
+    const std::size_t shorter = std::min(word.size(), candidate.size());
+    // Short words are within distance 1 of too many unrelated names (and
+    // 'inner' is 2 from 'outer').
+    const std::size_t limit = shorter >= 6 ? 2 : shorter >= 3 ? 1 : 0;
+    const std::size_t distance = edit_distance(word, candidate);
+    if (distance == 0) return 0;
+    if (distance <= limit) return 1 + distance;
+    const auto [w, c] = std::mismatch(word.begin(), word.end(), candidate.begin(), candidate.end());
+    const auto prefix = static_cast<std::size_t>(w - word.begin());
+    if (prefix >= 4 && prefix + 1 >= shorter) return kPrefixRank + (shorter - prefix);
+    return 0;
+  };
+  std::size_t best_rank = 0;
   const std::string* best = nullptr;
   for (const auto& candidate : candidates) {
-    const std::size_t distance = edit_distance(word, candidate);
-    if (distance != 0 && distance < best_distance) {
-      best_distance = distance;
+    const std::size_t r = rank(candidate);
+    if (r != 0 && (best == nullptr || r < best_rank)) {
+      best_rank = r;
       best = &candidate;
     }
   }
@@ -325,7 +351,8 @@ void TableReader::mark_known(std::initializer_list<std::string_view> keys) {
 
 void TableReader::missing(std::string_view key) const {
   // A required field is absent: if the table has an unread key that is a
-  // near miss of it, the author most likely misspelt it; say so.
+  // near miss of it, the author most likely misspelt it; say so (the
+  // nearest one, whatever order lua_next gives).
   std::vector<std::string> candidates;
   {
     const StackGuard guard(L_);
@@ -336,15 +363,16 @@ void TableReader::missing(std::string_view key) const {
         std::size_t n = 0;
         const char* p = lua_tolstring(L_, -2, &n);
         const std::string_view k(p, n);
-        if (!k.starts_with("__") && std::find(known_.begin(), known_.end(), k) == known_.end())
+        if (!k.starts_with("__") && k.size() <= kLongestKey &&
+            std::find(known_.begin(), known_.end(), k) == known_.end())
           candidates.emplace_back(k);
       }
       lua_pop(L_, 1);
     }
   }
-  for (const auto& c : candidates) {
-    const std::string one[] = {std::string(key)};
-    if (!nearest(c, one).empty()) fail(fmt::format("missing field '{}' (there is a field '{}': misspelt?)", key, c));
+  std::sort(candidates.begin(), candidates.end());
+  if (const std::string c = nearest(key, candidates); !c.empty()) {
+    fail(fmt::format("missing field '{}' (there is a field '{}': misspelt?)", key, c));
   }
   fail(fmt::format("missing field '{}'", key));
 }
@@ -352,11 +380,19 @@ void TableReader::missing(std::string_view key) const {
 void TableReader::finish() const {
   std::vector<std::string> unknown;
   std::vector<std::string> stray;  // non-string keys outside the array part
+  std::vector<std::string> absent;   // known keys the table lacks
+  std::vector<std::string> present;  // and those it has
   std::size_t len = 0;
   {
     const StackGuard guard(L_);
     push();
     len = lua_objlen(L_, -1);
+    for (const auto& key : known_) {
+      lua_pushlstring(L_, key.data(), key.size());
+      lua_rawget(L_, -2);
+      (lua_isnil(L_, -1) ? absent : present).push_back(key);
+      lua_pop(L_, 1);
+    }
     lua_pushnil(L_);
     while (lua_next(L_, -2) != 0) {
       // Never lua_tolstring a number key: it would change the key mid-walk.
@@ -366,7 +402,7 @@ void TableReader::finish() const {
           const char* p = lua_tolstring(L_, -2, &n);
           const std::string_view key(p, n);
           if (!key.starts_with("__") && std::find(known_.begin(), known_.end(), key) == known_.end()) {
-            unknown.emplace_back(key);
+            unknown.push_back(shown_key(key));
           }
           break;
         }
@@ -393,7 +429,10 @@ void TableReader::finish() const {
   std::sort(stray.begin(), stray.end());
   std::vector<std::string> problems;
   for (const auto& key : unknown) {
-    const std::string suggestion = nearest(key, known_);
+    // An unknown field most likely stands for a known one the table lacks
+    // (frame_count for frames, when frame is there too).
+    std::string suggestion = nearest(key, absent);
+    if (suggestion.empty()) suggestion = nearest(key, present);
     problems.push_back(suggestion.empty()
                            ? fmt::format("unknown field '{}'", key)
                            : fmt::format("unknown field '{}' (did you mean '{}'?)", key, suggestion));

@@ -23,10 +23,12 @@ class FieldError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The candidate closest to `word` by edit distance (Damerau, adjacent
-// transpositions count 1), or "" if none is close enough: distance <= 2 for
-// words of 5+ characters, <= 1 for 3-4, nothing for shorter ones. Ties go to
-// the earlier candidate.
+// The candidate `word` most likely misspells, or "" if none is close enough.
+// Close enough: an edit distance (Damerau, adjacent transpositions count 1)
+// of at most 2 when both words have 6+ characters, 1 when the shorter has
+// 3-5, none for shorter ones; or, less close, a common prefix of 4+
+// characters that leaves at most one of the shorter word (frame_count ~
+// frames). Ties go to the earlier candidate; `word` itself is no candidate.
 std::string nearest(std::string_view word, std::span<const std::string> candidates);
 
 // Reads one table strictly. All access is raw (metatables are ignored, no
@@ -91,7 +93,8 @@ class TableReader {
 
   // Strict check after reading: throws if the table holds a string key that
   // no getter, has() or mark_known() touched (suggesting the nearest known
-  // key), or a non-string key outside the array part 1..length().
+  // key, one the table lacks if any is near), or a non-string key outside
+  // the array part 1..length().
   void finish() const;
 
  private:

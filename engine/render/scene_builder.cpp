@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/asset_path.hpp"
 #include "scene/still_key.hpp"
 #include "spacetime/chart.hpp"
 
@@ -51,21 +52,7 @@ std::shared_ptr<const Worldline> ShotResources::worldline(const WorldlineSpec& s
 }
 
 std::shared_ptr<const Texture> ShotResources::texture(const std::filesystem::path& file) {
-  std::filesystem::path found;
-  if (file.is_absolute()) {
-    found = file;
-  } else {
-    for (const auto& dir : asset_dirs_)
-      if (std::filesystem::exists(dir / file)) {
-        found = dir / file;
-        break;
-      }
-    if (found.empty()) {
-      std::string tried;
-      for (const auto& dir : asset_dirs_) tried += "\n  " + (dir / file).string();
-      throw std::invalid_argument(fmt::format("sky image '{}' not found; looked in:{}", file.string(), tried));
-    }
-  }
+  const std::filesystem::path found = resolve_sky_image(file, asset_dirs_);
   {
     std::lock_guard lock(mutex_);
     files_.insert(found);

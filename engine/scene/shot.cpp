@@ -19,13 +19,15 @@ Shot::Shot(const std::filesystem::path& file, lua::SandboxLimits limits)
                                       luaL_typename(L, -1)));
   {
     lua::TableReader t(L, -1, file_.string());
+    // Known before the other fields are read: a misspelt 'frames' must not
+    // be taken for a misspelling of 'frame'.
+    t.mark_known({"frame", "description"});
     info_ = read_shot_info(t);
     t.push_field("frame");
     if (!lua_isfunction(L, -1))
       throw lua::FieldError(fmt::format("{}: field 'frame' must be a function(i) returning the scene of frame i, got {}",
                                         file_.string(), luaL_typename(L, -1)));
     frame_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
-    t.mark_known({"description"});
     t.finish();
   }
   lua_pop(L, 1);
@@ -42,7 +44,12 @@ FrameScene Shot::frame(int i) {
     throw lua::FieldError(fmt::format("{}: no such frame (the shot has frames 0 to {})", ctx, info_.frames - 1));
   lua_rawgeti(L, LUA_REGISTRYINDEX, frame_ref_);
   lua_pushinteger(L, i);
-  sandbox_.call(1, 1);
+  try {
+    sandbox_.call(1, 1);
+  } catch (const lua::ScriptError& e) {
+    // The script's line alone does not say which of its frames failed.
+    throw lua::ScriptError(fmt::format("{}: {}", ctx, e.what()));
+  }
   if (!lua_istable(L, -1)) {
     const std::string got = luaL_typename(L, -1);
     lua_pop(L, 1);

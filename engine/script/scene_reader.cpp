@@ -14,6 +14,15 @@ namespace {
 using lua::FieldError;
 using lua::TableReader;
 
+// The most spheres a scene may hold: every ray is tested against each, and
+// the scene is copied out of Lua (a script can list one sphere a million
+// times in a few MiB of Lua memory, which would take GiBs here).
+constexpr std::size_t kMaxObjects = 1000;
+
+// The longest shot name: it names the output files (<name>.<NNNN>.exr and
+// the journal), and file names have at most 255 bytes.
+constexpr std::size_t kMaxNameLength = 128;
+
 [[noreturn]] void fail(const TableReader& t, const std::string& what) {
   throw FieldError(fmt::format("{}: {}", t.context(), what));
 }
@@ -103,7 +112,8 @@ CameraSpec read_camera(TableReader& t) {
   expect_kind(t, {"camera"}, "lc.camera{...}");
   CameraSpec c;
   c.fov = t.number_or("fov", c.fov);
-  if (!(c.fov > 0.0 && c.fov < 180.0)) fail(t, fmt::format("fov must be between 0 and 180 degrees, got {}", c.fov));
+  if (!(c.fov > 0.0 && c.fov < 180.0))
+    fail(t, fmt::format("fov must be greater than 0 and less than 180 degrees, got {}", c.fov));
   c.yaw = t.number_or("yaw", 0.0);
   c.pitch = t.number_or("pitch", 0.0);
   c.roll = t.number_or("roll", 0.0);
@@ -229,6 +239,8 @@ FrameScene read_frame_scene(TableReader& t) {
   if (auto d = t.optional_table("disk")) fs.disk = read_disk(*d);
   if (auto s = t.optional_table("sky")) fs.sky = read_sky(*s);
   if (auto objs = t.optional_table("objects")) {
+    if (objs->length() > kMaxObjects)
+      fail(*objs, fmt::format("at most {} spheres, got {}", kMaxObjects, objs->length()));
     for (std::size_t i = 1; i <= objs->length(); ++i) {
       auto o = objs->table_at(i);
       fs.spheres.push_back(read_sphere(o, &fs.spacetime));
@@ -243,6 +255,9 @@ ShotInfo read_shot_info(TableReader& t) {
   ShotInfo s;
   s.name = t.string("name");
   if (s.name.empty()) fail(t, "name must not be empty");
+  if (s.name.size() > kMaxNameLength)
+    fail(t, fmt::format("name has {} characters, at most {} are allowed (it names the output files)", s.name.size(),
+                        kMaxNameLength));
   for (char c : s.name)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
       fail(t, fmt::format("name '{}' may only use letters, digits, '_' and '-' (it names the output files)", s.name));

@@ -1,5 +1,9 @@
 #include "farm/content_hash.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -7,6 +11,8 @@
 #include <vector>
 
 #include <fmt/format.h>
+
+#include "core/file_checks.hpp"
 
 namespace lc::farm {
 
@@ -37,9 +43,29 @@ std::string ContentHash::hex() const { return to_hex(h_); }
 std::uint64_t hash_bytes(std::string_view bytes) { return ContentHash().add(bytes).value(); }
 
 // Streams the file in 1 MiB blocks so large textures need no big buffer.
+// Only a regular file is hashed: a FIFO or a device (/dev/zero) would block
+// or never end. The type is checked on the opened file; opening does not
+// block, even for a FIFO.
 std::uint64_t hash_file(const std::filesystem::path& file) {
-  std::FILE* f = std::fopen(file.c_str(), "rb");
-  if (!f) throw std::runtime_error(fmt::format("cannot read {}: {}", file.string(), std::strerror(errno)));
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) throw std::runtime_error(fmt::format("cannot read {}: {}", file.string(), std::strerror(errno)));
+  struct stat st {};
+  std::string problem;
+  if (::fstat(fd, &st) != 0) {
+    problem = std::strerror(errno);
+  } else if (!S_ISREG(st.st_mode)) {
+    problem = fmt::format("{}, not a regular file", file_kind(st.st_mode));
+  }
+  if (!problem.empty()) {
+    ::close(fd);
+    throw std::runtime_error(fmt::format("cannot read {}: {}", file.string(), problem));
+  }
+  std::FILE* f = ::fdopen(fd, "rb");
+  if (!f) {
+    const int err = errno;
+    ::close(fd);
+    throw std::runtime_error(fmt::format("cannot read {}: {}", file.string(), std::strerror(err)));
+  }
   ContentHash h;
   std::vector<char> buf(1 << 20);
   std::size_t n;

@@ -28,8 +28,8 @@ class ContentHash {
 // Hash of a whole string (e.g. a journal line).
 std::uint64_t hash_bytes(std::string_view bytes);
 
-// Hash of a file's content; throws std::runtime_error naming the file when
-// it cannot be read.
+// Hash of a regular file's content; throws std::runtime_error naming the
+// file when it cannot be read or is no regular file (a FIFO, a device).
 std::uint64_t hash_file(const std::filesystem::path& file);
 
 // 16 lowercase hex digits.

@@ -6,25 +6,11 @@
 #include <fmt/format.h>
 
 #include "farm/content_hash.hpp"
+#include "scene/asset_path.hpp"
 
 namespace lc::farm {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-// The file a sky image name refers to, searched like ShotResources does:
-// an absolute path as is, else the shot's asset folders in order.
-fs::path resolve_sky_image(const fs::path& file, const std::vector<fs::path>& dirs, const std::string& where) {
-  if (file.is_absolute()) return file;
-  for (const auto& dir : dirs)
-    if (fs::exists(dir / file)) return dir / file;
-  std::string tried;
-  for (const auto& dir : dirs) tried += "\n  " + (dir / file).string();
-  throw std::invalid_argument(fmt::format("{}: sky image '{}' not found; looked in:{}", where, file.string(), tried));
-}
-
-}  // namespace
 
 ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
   ShotSurvey out;
@@ -34,11 +20,13 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
     const FrameScene fs = shot.frame(f);
     out.frames[f].spacetime = describe(fs.spacetime);
     if (fs.sky.kind == SkyKind::image) {
-      const std::string where = fmt::format("{}: frame {}", shot.file().string(), f);
-      const fs::path p = resolve_sky_image(fs.sky.image, dirs, where);
-      std::error_code ec;
-      const fs::path canon = fs::weakly_canonical(p, ec);
-      texture_of[f] = (ec ? p : canon).string();
+      // The file the render will load (the same rules): checked before
+      // anything reads it, for the hash below.
+      try {
+        texture_of[f] = resolve_sky_image(fs.sky.image, dirs).string();
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format("{}: frame {}: {}", shot.file().string(), f, e.what()));
+      }
     }
   }
   // Script and modules: after evaluating, so modules required inside

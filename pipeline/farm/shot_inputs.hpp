@@ -30,8 +30,8 @@ struct ShotSurvey {
 // Evaluates the scene of every listed frame (script only: no worldlines are
 // integrated, no textures decoded), so a script error anywhere stops the
 // render before it starts.  Throws the script's error, or
-// std::invalid_argument for a sky image that cannot be found (naming the
-// shot, frame and the folders searched).
+// std::invalid_argument for a sky image that cannot be used (naming the
+// shot, frame and why: see resolve_sky_image).
 ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames);
 
 // What every MPI rank must agree on before working together: the shot's

@@ -85,7 +85,9 @@ expect_error big_stars "big_stars.lua:5: sky_stars: field 'resolution' must be b
 shot nan "$good_kerr camera = lc.camera{fov = 0/0},"
 expect_error nan "nan.lua:5: camera: field 'fov' is nan" -- "$LIGHTCONE" render nan.lua --out out
 shot wide "$good_kerr camera = lc.camera{fov = 200},"
-expect_error wide "wide.lua:5: camera: fov must be between 0 and 180 degrees" -- "$LIGHTCONE" render wide.lua --out out
+expect_error wide "wide.lua:5: camera: fov must be greater than 0 and less than 180 degrees, got 200" -- "$LIGHTCONE" render wide.lua --out out
+shot fov180 "$good_kerr camera = lc.camera{fov = 180},"
+expect_error fov180 "fov180.lua:5: camera: fov must be greater than 0 and less than 180 degrees, got 180" -- "$LIGHTCONE" render fov180.lua --out out
 shot typo "$good_kerr disk = lc.disk{iner = 6, outer = 10},"
 expect_error typo "typo.lua:5: disk: missing field 'inner' (there is a field 'iner': misspelt?)" -- "$LIGHTCONE" render typo.lua --out out
 shot scene_typo "spacetime = lc.kerr{mass = 1}, obsrver = lc.static_observer{r = 30, theta = 80, phi = 0},"
@@ -112,6 +114,75 @@ LUA
 expect_error bad_name "name '../evil' may only use letters, digits" -- "$LIGHTCONE" render bad_name.lua --out out
 touch not_a_dir
 expect_error out_is_file "--out not_a_dir: cannot create the output directory" -- "$LIGHTCONE" render ok.lua --out not_a_dir
+
+# script NAME BEFORE [FRAME-BODY]: a one-frame shot with BEFORE on line 2
+# and FRAME-BODY (then a good scene) in frame(i), from line 5.
+script() {
+  cat >"$WORK/$1.lua" <<LUA
+local lc = require "lightcone"
+$2
+return {name = "$1", frames = 3, width = 8, height = 8,
+  frame = function(i)
+    ${3:-}
+    return {spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 30, theta = 80, phi = 0}}
+  end}
+LUA
+}
+# Recursion through C functions overflowed the C stack (SIGSEGV, no message),
+# also under MPI and in the render threads.
+script gsub_nest "local function f(s) return (s:gsub('.', f)) end f('a')"
+expect_error gsub_nest "gsub_nest.lua:2: too deeply nested: more than 200 calls back into Lua" -- "$LIGHTCONE" render gsub_nest.lua --out out
+script wrap_nest "local function f() coroutine.wrap(f)() end" "if i == 2 then f() end"
+expect_error wrap_nest "wrap_nest.lua: frame 2: wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" render wrap_nest.lua --out out
+expect_error wrap_nest_inspect "wrap_nest.lua: frame 2: wrap_nest.lua:2: too deeply nested" -- "$LIGHTCONE" inspect wrap_nest.lua
+if command -v mpirun >/dev/null; then
+  use_mpirun
+  expect_error wrap_nest_mpi "wrap_nest.lua: frame 2: wrap_nest.lua:2: too deeply nested" -- mpi 2 "$LIGHTCONE" render wrap_nest.lua --out out
+fi
+# An error object whose __tostring loops gave "error in error handling" after 30 s.
+script tostring_loop "error(setmetatable({}, {__tostring = function() while true do end end}))"
+expect_error tostring_loop "tostring_loop.lua:2: error object (a table value): its __tostring did not return within 0.1 s" -- \
+  timeout 20 "$LIGHTCONE" render tostring_loop.lua --out out
+# A Lua error in frame(i) named the line, not the frame.
+script frame_err "" "if i == 2 then local x = nil return x.y end"
+for cmd in "render frame_err.lua --out out" "inspect frame_err.lua" "trace frame_err.lua --frame 2 --pixel 0,0"; do
+  expect_error "frame_err_${cmd%% *}" "frame_err.lua: frame 2: frame_err.lua:5: attempt to index local 'x' (a nil value)" -- \
+    "$LIGHTCONE" $cmd
+done
+# frame_count suggested 'frame', a field of every shot.
+cat >"$WORK/frame_count.lua" <<'LUA'
+return {name = "frame_count", frame_count = 1, width = 8, height = 8, frame = function(i) return {} end}
+LUA
+expect_error frame_count "frame_count.lua: missing field 'frames' (there is a field 'frame_count': misspelt?)" -- \
+  "$LIGHTCONE" render frame_count.lua --out out
+# require followed a link out of the shot's folder, parsed the file and quoted it.
+ln -s /etc/passwd "$WORK/passwd.lua"
+script require_link "local m = require 'passwd'"
+expect_error require_link "require_link.lua:2: module 'passwd' (./passwd.lua) leads through a link to /etc/passwd, outside the folders" -- \
+  "$LIGHTCONE" render require_link.lua --out out
+! grep -q "root" require_link.err || fail "require_link: a line of /etc/passwd is in the message"
+# Sky images: only regular files inside the shot's (or the project's shots/)
+# folder; a FIFO or /dev/zero hung the input hash before any check.
+mkfifo "$WORK/fifo.png"
+ln -s /dev/zero "$WORK/zero.png"
+ln -s /etc/passwd "$WORK/passwd.png"
+shot sky_fifo "$good_kerr sky = lc.sky_image{file = 'fifo.png'}"
+expect_error sky_fifo "sky_fifo.lua: frame 0: sky image 'fifo.png' (./fifo.png) is a FIFO, not a regular file" -- \
+  timeout 60 "$LIGHTCONE" render sky_fifo.lua --out out
+shot sky_zero "$good_kerr sky = lc.sky_image{file = 'zero.png'}"
+expect_error sky_zero "sky image 'zero.png' (./zero.png) leads through a link to /dev/zero, outside the folders" -- \
+  timeout 60 "$LIGHTCONE" render sky_zero.lua --out out
+shot sky_dev "$good_kerr sky = lc.sky_image{file = '/dev/zero'}"
+expect_error sky_dev "sky image '/dev/zero': the field 'file' must be a path relative to the shot's folder" -- \
+  timeout 60 "$LIGHTCONE" render sky_dev.lua --out out
+expect_error sky_dev_trace "sky image '/dev/zero': the field 'file' must be a path relative" -- \
+  timeout 60 "$LIGHTCONE" trace sky_dev.lua --frame 0 --pixel 0,0
+shot sky_passwd "$good_kerr sky = lc.sky_image{file = 'passwd.png'}"
+expect_error sky_passwd "sky image 'passwd.png' (./passwd.png) leads through a link to /etc/passwd" -- \
+  "$LIGHTCONE" render sky_passwd.lua --out out
+# The shot itself must be a regular file too.
+mkfifo "$WORK/fifo_shot.lua"
+expect_error fifo_shot "fifo_shot.lua: a FIFO, not a regular file" -- timeout 60 "$LIGHTCONE" inspect fifo_shot.lua
 
 [ ! -e out ] || [ -z "$(ls -A out)" ] || fail "failed renders left files in out/: $(ls out)"
 e2e_end

@@ -8,13 +8,22 @@
 #include <gtest/gtest.h>
 
 #include "scratch_dir.hpp"
+#include <fcntl.h>
+#include <pthread.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -551,6 +560,353 @@ TEST(LuaSandbox, MovedSandboxKeepsWorking) {
   ASSERT_EQ(b.loaded_files().size(), 9u);
   EXPECT_EQ(b.loaded_files()[1], fs::canonical(kDir1 / "bad_module.lua"));
   EXPECT_EQ(b.loaded_files()[8], fs::canonical(kDir1 / "returns_nothing.lua"));
+}
+
+// Writes `code` to dir/name and returns the path.
+fs::path script(const ScratchDir& dir, const std::string& name, const std::string& code) {
+  const fs::path file = dir / name;
+  write_file(file, code);
+  return file;
+}
+
+// Runs f on a new thread with a C stack of exactly `bytes` (render threads
+// run shot code; their stacks may be smaller than the main thread's). The
+// stack is mapped here: glibc would reuse a cached larger one for a thread
+// asking for a small size.
+template <class F>
+void on_thread_with_stack(std::size_t bytes, F f) {
+  struct Call {
+    F* f;
+    static void* run(void* p) {
+      (*static_cast<Call*>(p)->f)();
+      return nullptr;
+    }
+  } call{&f};
+  void* stack = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_STACK, -1, 0);
+  ASSERT_NE(stack, MAP_FAILED);
+  pthread_attr_t attr;
+  pthread_attr_init(&attr);
+  pthread_attr_setstack(&attr, stack, bytes);
+  pthread_t thread;
+  ASSERT_EQ(pthread_create(&thread, &attr, &Call::run, &call), 0);
+  pthread_join(thread, nullptr);
+  pthread_attr_destroy(&attr);
+  ::munmap(stack, bytes);
+}
+
+// Each recursion runs through a C function that calls back into Lua, so
+// LuaJIT's own (Lua) stack check does not see the C stack it uses; these
+// were SIGSEGVs. The first two are the reported ones.
+const std::vector<std::pair<std::string, std::string>> kNestingScripts = {
+    {"gsub", "local function f(s) return (s:gsub('.', f)) end\nf('a')\n"},
+    {"wrap", "local function f() coroutine.wrap(f)() end\nf()\n"},
+    {"resume",
+     "local function f()\n  local ok, e = coroutine.resume(coroutine.create(f))\n  if not ok then error(e, 0) end\nend\n"
+     "f()\n"},
+    {"gsub_table",
+     "local t = setmetatable({}, {__index = function(t, k) return (k:gsub('.', t)) end})\nlocal r = ('a'):gsub('.', t)\n"},
+    {"sort", "local function f(a, b) table.sort({3, 2, 1}, f) return a < b end\ntable.sort({3, 2, 1}, f)\n"},
+    {"print", "local t = setmetatable({}, {__tostring = print})\nprint(t)\n"},
+};
+
+TEST(LuaSandbox, NestedCallsThroughCFunctionsFailCleanly) {
+  ScratchDir dir;
+  for (const auto& [name, code] : kNestingScripts) {
+    const fs::path file = script(dir, name + ".lua", code);
+    Sandbox sandbox({});
+    const std::string msg = script_error([&] { sandbox.run_file(file); });
+    EXPECT_EQ(msg.rfind(file.string() + ":", 0), 0u) << msg;
+    EXPECT_NE(msg.find(": too deeply nested: more than 200 calls back into Lua from C functions"), std::string::npos)
+        << msg;
+    EXPECT_EQ(lua_gettop(sandbox.state()), 0);
+    sandbox.run_file(kData / "allowed_globals.lua");  // every level was released
+    EXPECT_TRUE(lua_toboolean(sandbox.state(), -1));
+  }
+}
+
+// The count makes the limit the same on every thread with room for it: a
+// script nesting 190 levels runs, one nesting 210 fails, on the main thread
+// as on a 2 MiB one. On a thread with less room the C stack check fails it
+// first, still cleanly; on one without the sandbox's reserve nothing starts.
+TEST(LuaSandbox, NestingLimitIsTheSameOnEveryThread) {
+  ScratchDir dir;
+  const auto nesting = [&](int levels) {
+    return script(dir, fmt::format("nest{}.lua", levels),
+                  fmt::format("local function f(n)\n  if n > 0 then coroutine.wrap(f)(n - 1) end\nend\nf({})\n",
+                              levels));
+  };
+  const fs::path ok = nesting(190);
+  const fs::path deep = nesting(210);
+  const auto check = [&](const char* where) {
+    Sandbox sandbox({});
+    EXPECT_NO_THROW(sandbox.run_file(ok, 0)) << where;
+    const std::string msg = script_error([&] { sandbox.run_file(deep, 0); });
+    EXPECT_NE(msg.find("too deeply nested: more than 200 calls"), std::string::npos) << where << ": " << msg;
+  };
+  check("main thread");
+  on_thread_with_stack(2u << 20, [&] { check("2 MiB thread"); });
+
+  on_thread_with_stack(512u << 10, [&] {
+    for (const auto& [name, code] : kNestingScripts) {
+      const fs::path file = script(dir, name + ".lua", code);
+      Sandbox sandbox({});
+      const std::string msg = script_error([&] { sandbox.run_file(file); });
+      EXPECT_NE(msg.find(": too deeply nested: "), std::string::npos) << msg;
+    }
+    // No count in between: the hook's look at the stack stops this one.
+    const fs::path format = script(
+        dir, "format.lua",
+        "local mt = {}\nmt.__tostring = function(s) return string.format('%s', s) end\n"
+        "local s = string.format('%s', setmetatable({}, mt))\n");
+    Sandbox sandbox({});
+    const std::string msg = script_error([&] { sandbox.run_file(format); });
+    EXPECT_NE(msg.find("format.lua:2: too deeply nested: this thread's C stack is nearly used up"), std::string::npos)
+        << msg;
+  });
+
+  on_thread_with_stack(256u << 10, [&] {
+    Sandbox sandbox({});
+    const std::string msg = script_error([&] { sandbox.run_file(ok); });
+    EXPECT_NE(msg.find("cannot evaluate " + ok.string() + ": this thread has "), std::string::npos) << msg;
+    EXPECT_NE(msg.find("KiB of C stack left, the sandbox needs 384 KiB"), std::string::npos) << msg;
+  });
+}
+
+// LuaJIT before 2023 does not check the Lua stack when pcall is a value's
+// own __call metamethod (it overran it: SIGSEGV).
+TEST(LuaSandbox, PcallAsCallMetamethodDoesNotCrash) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "pcall_call.lua",
+                               "local ok, e = pcall(setmetatable({}, {__call = pcall}))\n"
+                               "local ok2, e2 = xpcall(setmetatable({}, {__call = xpcall}), function(e) return e end)\n"
+                               "return tostring(ok) .. ' ' .. tostring(ok2)\n");
+  Sandbox sandbox({});
+  sandbox.run_file(file);
+  EXPECT_EQ(top_string(sandbox.state()), "true false");
+}
+
+// Iterations per second of a counting loop in the sandbox here, to size
+// work that must outlast a time limit wherever the test runs.
+double loop_rate() {
+  Sandbox sandbox({});
+  sandbox.run_file(kData / "frames.lua");
+  lua_getfield(sandbox.state(), 1, "work");
+  lua_pushnumber(sandbox.state(), 2e7);
+  const auto t0 = std::chrono::steady_clock::now();
+  sandbox.call(1, 0);
+  return 2e7 / std::max(seconds_since(t0), 1e-3);
+}
+
+// LuaJIT runs an xpcall handler for an error the limit raised with the
+// instruction hook disabled: a handler that loops was never stopped (the
+// reported form: xpcall(loop, loop)). Here the handlers do ~5 s of work and
+// then return, so the defect shows as a late failure, not a hang; now the
+// limit (0.5 s) holds, however the calls are nested.
+TEST(LuaSandbox, TimeLimitHoldsInErrorHandlers) {
+  ScratchDir dir;
+  const double work = 5 * loop_rate();
+  const std::string head = fmt::format(
+      "local function forever() while true do end end\n"
+      "local function handler(e) local n = 0 while n < {:.0f} do n = n + 1 end return e end\n",
+      work);
+  const std::vector<std::string> bodies = {
+      "xpcall(forever, handler)\n",
+      "coroutine.wrap(function() xpcall(forever, handler) end)()\n",
+      "xpcall(function() xpcall(forever, handler) end, handler)\n",
+      "pcall(xpcall, forever, handler)\n",
+      "xpcall(forever, function(e) return select(2, pcall(handler, e)) end)\n",
+      "local co = coroutine.create(function() xpcall(forever, handler) end)\ncoroutine.resume(co)\n",
+  };
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const fs::path file = script(dir, fmt::format("handler{}.lua", i), head + bodies[i]);
+    Sandbox sandbox({}, SandboxLimits{.seconds = 0.5});
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string msg = script_error([&] { sandbox.run_file(file); });
+    EXPECT_LT(seconds_since(t0), 2.5) << bodies[i];
+    EXPECT_NE(msg.find("time limit of 0.5 s exceeded"), std::string::npos) << msg;
+  }
+  // Before the time is up, handlers run as ever.
+  const fs::path normal = script(dir, "normal.lua",
+                                 "local ok, e = xpcall(function() error('boom', 0) end, function(e) return e .. '!' end)\n"
+                                 "local ok2, a, b = xpcall(function(x, y) return x + y, 'sum' end, print, 1, 2)\n"
+                                 "return table.concat({tostring(ok), e, tostring(ok2), a, b}, ' ')\n");
+  Sandbox sandbox({}, SandboxLimits{.seconds = 0.5});
+  sandbox.run_file(normal);
+  EXPECT_EQ(top_string(sandbox.state()), "false boom! true 3 sum");
+}
+
+// tostring tail-calls a __tostring metamethod without running an
+// instruction: `__tostring = tostring` looped where the hook never fired.
+TEST(LuaSandbox, TimeLimitHoldsInTostringLoops) {
+  ScratchDir dir;
+  const fs::path file =
+      script(dir, "tostring_loop.lua", "local t = setmetatable({}, {__tostring = tostring})\nlocal s = tostring(t)\n");
+  Sandbox sandbox({}, SandboxLimits{.seconds = 0.5});
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string msg = script_error([&] { sandbox.run_file(file); });
+  EXPECT_LT(seconds_since(t0), 2.5);
+  EXPECT_EQ(msg.rfind(file.string() + ":2: time limit of 0.5 s exceeded", 0), 0u) << msg;
+}
+
+// The message handler ran an error object's __tostring with no limit but
+// the evaluation's: a loop there ended, at the time limit, as "error in
+// error handling". It gets 0.1 s; what went wrong is said at the line that
+// raised the object.
+TEST(LuaSandbox, ErrorObjectTostringIsBudgeted) {
+  ScratchDir dir;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"function() while true do end end", "its __tostring did not return within 0.1 s"},
+      {"function() error('boom') end", "its __tostring failed: "},
+      {"function() return 42 end", "its __tostring returned a number value, not a string"},
+      {"function(o) error(o) end", "its __tostring failed: table"},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const fs::path file = script(dir, fmt::format("object{}.lua", i),
+                                 "local object = setmetatable({}, {__tostring = " + cases[i].first +
+                                     "})\nerror(object)\n");
+    Sandbox sandbox({}, SandboxLimits{.seconds = 2});
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string msg = script_error([&] { sandbox.run_file(file); });
+    EXPECT_LT(seconds_since(t0), 1.0) << cases[i].first;
+    EXPECT_EQ(msg.rfind(file.string() + ":2: error object (a table value): " + cases[i].second, 0), 0u) << msg;
+    // The budget's expiry is not the evaluation's: the next one runs.
+    sandbox.run_file(kData / "allowed_globals.lua");
+    EXPECT_TRUE(lua_toboolean(sandbox.state(), -1));
+  }
+}
+
+// A script may raise a string of hundreds of MiB; the message keeps 4096
+// bytes of it.
+TEST(LuaSandbox, LongErrorMessagesAreCut) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "long.lua", "error(string.rep('x', 1e6))\n");
+  Sandbox sandbox({});
+  const std::string msg = script_error([&] { sandbox.run_file(file); });
+  const std::size_t x = msg.find("long.lua:1: xxx");
+  ASSERT_NE(x, std::string::npos) << msg.substr(0, 200);
+  const std::size_t kept = 4096 - (x + std::strlen("long.lua:1: "));  // of the x's
+  EXPECT_NE(msg.find(std::string(kept, 'x') + "... (" + std::to_string(1000000 - kept) + " more bytes)\nstack traceback:"),
+            std::string::npos)
+      << msg.substr(4000);
+  EXPECT_LT(msg.size(), 5000u);
+}
+
+// The guarded functions behave as LuaJIT's for scripts within the limits.
+TEST(LuaSandbox, GuardedLibraryFunctionsBehaveAsLuaJits) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "library.lua", R"lua(local out = {}
+local gen = coroutine.wrap(function(a) local b = coroutine.yield(a + 1) return b * 2 end)
+out[#out + 1] = gen(1) .. " " .. gen(5)
+out[#out + 1] = select(2, pcall(gen))
+local co = coroutine.create(function(x) coroutine.yield(x) error("inner", 0) end)
+out[#out + 1] = table.concat({tostring(coroutine.resume(co, 7)), select(2, coroutine.resume(co, 7))}, " ")
+out[#out + 1] = tostring(coroutine.resume(co))
+out[#out + 1] = select(2, pcall(coroutine.wrap(function() error("in wrap") end)))
+local t = {5, 3, 9, 1}
+table.sort(t, function(a, b) return a > b end)
+out[#out + 1] = table.concat(t, ",")
+table.sort(t)
+out[#out + 1] = table.concat(t, ",")
+out[#out + 1] = select(2, pcall(function() table.sort(t, function() error("cmp") end) end))
+out[#out + 1] = tostring(nil) .. tostring(12) .. select("#", pcall(tostring))
+out[#out + 1] = select(2, pcall(function() coroutine.resume(42) end))
+out[#out + 1] = select(2, pcall(function() table.sort(nil) end))
+local wrapped = coroutine.wrap(function() return 1 end)
+wrapped()
+out[#out + 1] = select(2, pcall(function() wrapped() end))
+return table.concat(out, "\n")
+)lua");
+  Sandbox sandbox({});
+  sandbox.run_file(file);
+  // Lua's own messages name a long path by its tail, the sandbox's in full.
+  const std::string raw = top_string(sandbox.state());
+  std::string out;  // each path of library.lua, whole or not, as "F"
+  std::size_t word = 0;
+  for (std::size_t at = 0; (at = raw.find("library.lua", at)) != std::string::npos; at += 11) {
+    std::size_t from = at;
+    while (from > word && raw[from - 1] != '\n' && raw[from - 1] != ' ') --from;
+    out += raw.substr(word, from - word);
+    out += 'F';
+    word = at + 11;
+  }
+  out += raw.substr(word);
+  EXPECT_EQ(out,
+            "2 10\n"
+            "F:4: cannot resume dead coroutine\n"
+            "true inner\n"
+            "false\n"
+            "F:8: in wrap\n"
+            "9,5,3,1\n"
+            "1,3,5,9\n"
+            "F:14: cmp\n"
+            "nil122\n"
+            "F:16: bad argument #1 to 'resume' (coroutine expected)\n"
+            "F:17: bad argument #1 to 'sort' (table expected, got nil)\n"
+            "F:20: cannot resume dead coroutine");
+}
+
+// require only reads regular files whose real path lies in its folders: a
+// link in the shot's folder to a file elsewhere was parsed, and a line of
+// it quoted in the syntax error.
+TEST(LuaSandbox, RequireRefusesLinksOutOfItsFolders) {
+  ScratchDir dir;
+  fs::create_directories(dir / "shot" / "lib");
+  fs::create_directories(dir / "elsewhere");
+  write_file(dir / "elsewhere" / "secret.lua", "SECRET_TOKEN is not Lua\n");
+  write_file(dir / "shot" / "inside.lua", "return 'inside'\n");
+  fs::create_symlink(dir / "elsewhere" / "secret.lua", dir / "shot" / "secret.lua");
+  fs::create_directory_symlink(dir / "elsewhere", dir / "shot" / "linked");
+  fs::create_symlink(dir / "shot" / "inside.lua", dir / "shot" / "lib" / "alias.lua");
+  const fs::path main = script(dir, "shot/main.lua",
+                               "local ok1, e1 = pcall(require, 'secret')\nlocal ok2, e2 = pcall(require, 'linked.secret')\n"
+                               "return e1 .. '\\n' .. e2 .. '\\n' .. require('lib.alias')\n");
+  Sandbox sandbox({dir / "shot"});
+  sandbox.run_file(main);
+  const std::string out = top_string(sandbox.state());
+  const std::string real = fs::canonical(dir / "elsewhere" / "secret.lua").string();
+  EXPECT_NE(out.find(":1: module 'secret' (" + (dir / "shot" / "secret.lua").string() + ") leads through a link to " +
+                     real + ", outside the folders modules are read from (" + (dir / "shot").string() + ")"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find(":2: module 'linked.secret' (" + (dir / "shot" / "linked" / "secret.lua").string() +
+                     ") leads through a link to " + real),
+            std::string::npos)
+      << out;
+  EXPECT_EQ(out.find("SECRET_TOKEN"), std::string::npos) << out;
+  EXPECT_TRUE(out.ends_with("\ninside")) << out;  // a link that stays inside is fine
+}
+
+// Scripts and modules must be regular files: a FIFO blocked the read until
+// something wrote to it (as /dev/zero never ends; the e2e tests use it).
+// After 5 s a helper thread keeps opening the FIFO while the test still
+// waits, so that a regression fails instead of hanging.
+TEST(LuaSandbox, ScriptsAndModulesAreRegularFiles) {
+  ScratchDir dir;
+  const fs::path fifo = dir / "fifo.lua";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::atomic<bool> done{false};
+  std::thread unblock([&] {
+    for (int i = 0; !done; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      if (i >= 50 && !done) ::close(::open(fifo.c_str(), O_RDWR));
+    }
+  });
+  const fs::path main = script(dir, "main.lua", "return select(2, pcall(require, 'fifo'))\n");
+  Sandbox sandbox({dir.path()});
+  const auto t0 = std::chrono::steady_clock::now();
+  sandbox.run_file(main);
+  const std::string module_msg = top_string(sandbox.state());
+  const std::string script_msg = script_error([&] { sandbox.run_file(fifo); });
+  const std::string dir_msg = script_error([&] { sandbox.run_file(dir.path()); });
+  done = true;
+  unblock.join();
+  EXPECT_LT(seconds_since(t0), 4.0);
+  EXPECT_NE(module_msg.find("main.lua:1: cannot read module 'fifo' from " + fifo.string() +
+                            ": a FIFO, not a regular file"),
+            std::string::npos)
+      << module_msg;
+  EXPECT_EQ(script_msg, "cannot read script " + fifo.string() + ": a FIFO, not a regular file");
+  EXPECT_EQ(dir_msg, "cannot read script " + dir.path().string() + ": Is a directory");
 }
 
 }  // namespace

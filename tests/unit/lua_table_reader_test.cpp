@@ -179,6 +179,45 @@ TEST_F(LuaTableReader, FinishSuggestsNearestKnownField) {
             "spec.lua:4: spacetime: unknown field 'spinn' (did you mean 'spin'?)");
 }
 
+// An unknown field most likely stands for a known one the table lacks:
+// frame_count for frames, though frame is a field too.
+TEST_F(LuaTableReader, FinishPrefersMissingFields) {
+  push("{frame = 1, frame_count = 2, width = 3, widht = 4}");
+  TableReader r(L, -1, "shot");
+  r.optional_number("frames");
+  r.number("frame");
+  r.number("width");
+  r.optional_number("height");
+  EXPECT_EQ(field_error([&] { r.finish(); }),
+            "shot: unknown field 'frame_count' (did you mean 'frames'?); "
+            "unknown field 'widht' (did you mean 'width'?)");  // no missing field is near it
+}
+
+// A missing field's hint names the nearest unread key, whatever order
+// lua_next gives, and never one that only shares a letter count.
+TEST_F(LuaTableReader, MissingFieldHintsTheNearestKey) {
+  push("{outer = 10}");
+  TableReader disk(L, -1, "disk");
+  EXPECT_EQ(field_error([&] { disk.number("inner"); }), "disk: missing field 'inner'");
+  push("{iner = 6, outer = 10, innr = 5, inner_radius = 4}");
+  TableReader typo(L, -1, "disk");
+  EXPECT_EQ(field_error([&] { typo.number("inner"); }),
+            "disk: missing field 'inner' (there is a field 'iner': misspelt?)");
+  push("{frame_count = 3, frame = 1}");
+  TableReader shot(L, -1, "shot.lua");
+  shot.mark_known({"frame"});
+  EXPECT_EQ(field_error([&] { shot.integer("frames"); }),
+            "shot.lua: missing field 'frames' (there is a field 'frame_count': misspelt?)");
+}
+
+// A script's table may have a key of any length: messages show 64
+// characters of it.
+TEST_F(LuaTableReader, LongUnknownKeysAreShortened) {
+  push("{[string.rep('k', 1e6)] = 1}");
+  TableReader r(L, -1, "camera");
+  EXPECT_EQ(field_error([&] { r.finish(); }), "camera: unknown field '" + std::string(64, 'k') + "...'");
+}
+
 TEST_F(LuaTableReader, FinishWithoutCloseMatchAndSorted) {
   push("{mass = 1, colour = 'red', zzz = 1, mas = 2, ams = 3}");
   TableReader r(L, -1, "kerr");
@@ -313,6 +352,21 @@ TEST(LuaNearest, Distances) {
   EXPECT_EQ(lc::lua::nearest("x", {std::vector<std::string>{"y"}}), "");
   EXPECT_EQ(lc::lua::nearest("mass", keys), "");  // an exact match is no suggestion
   EXPECT_EQ(lc::lua::nearest("spin", {}), "");
+}
+
+// 'outer' is no misspelling of 'inner' (two of five letters differ); a
+// name that extends a field's (frame_count, inner_radius) likely means it.
+TEST(LuaNearest, ShortWordsAndSharedBeginnings) {
+  const std::vector<std::string> disk = {"inner", "outer", "rings", "sectors"};
+  EXPECT_EQ(lc::lua::nearest("outer", {std::vector<std::string>{"inner"}}), "");
+  EXPECT_EQ(lc::lua::nearest("iner", disk), "inner");
+  EXPECT_EQ(lc::lua::nearest("inner_radius", disk), "inner");
+  EXPECT_EQ(lc::lua::nearest("frame_count", {std::vector<std::string>{"fps", "frames"}}), "frames");
+  EXPECT_EQ(lc::lua::nearest("colour", {std::vector<std::string>{"colors"}}), "colors");
+  EXPECT_EQ(lc::lua::nearest("rotation", {std::vector<std::string>{"rotate"}}), "rotate");
+  EXPECT_EQ(lc::lua::nearest("cam", {std::vector<std::string>{"camera"}}), "");  // a prefix of 3 says little
+  EXPECT_EQ(lc::lua::nearest("sectorz", disk), "sectors");  // a near spelling beats a shared beginning
+  EXPECT_EQ(lc::lua::nearest(std::string(100, 'k') + "x", {std::vector<std::string>{std::string(100, 'k')}}), "");
 }
 
 }  // namespace

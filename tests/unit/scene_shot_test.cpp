@@ -1,0 +1,107 @@
+// Tests of lc::Shot (engine/scene/shot.cpp): what its errors say about the
+// shot table and about the frame they happen in.
+
+#include "scene/shot.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "lua/table_reader.hpp"
+#include "scratch_dir.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using lc::test::ScratchDir;
+
+constexpr const char* kScene =
+    "{spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 30, theta = 80, phi = 0}}";
+
+fs::path write_shot(const ScratchDir& dir, const std::string& name, const std::string& text) {
+  const fs::path file = dir / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+// The message of the exception of type E that `f` throws.
+template <class E, class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const E& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no exception thrown";
+  return {};
+}
+
+// A Lua error inside frame(i) named the script's line only; in a shot of
+// many frames it must say which one failed, as the scene errors do
+// ("shot.lua: frame 0: observer: ...").
+TEST(SceneShot, ErrorsInsideFrameNameTheFrame) {
+  ScratchDir dir;
+  const fs::path file = write_shot(dir, "shot.lua",
+                                   std::string("local lc = require 'lightcone'\n"
+                                               "return {name = 'shot', frames = 600, width = 8, height = 8,\n"
+                                               "  frame = function(i)\n"
+                                               "    if i == 3 then return {disk = lc.disk{inner = -1, outer = 5}} end\n"
+                                               "    if i == 517 then local x = nil return x.y end\n"
+                                               "    return ") +
+                                       kScene + "\n  end}\n");
+  lc::Shot shot(file);
+  EXPECT_NO_THROW(shot.frame(516));
+  const std::string f = file.string();
+  // Lua names a long path by its tail ("...Frame_123/shot.lua").
+  const std::string tail = "/shot.lua:5: attempt to index local 'x' (a nil value)\nstack traceback:";
+  const std::string msg = error_of<lc::lua::ScriptError>([&] { shot.frame(517); });
+  EXPECT_EQ(msg.rfind(f + ": frame 517: ", 0), 0u) << msg;
+  EXPECT_NE(msg.find(tail), std::string::npos) << msg;
+  EXPECT_EQ(error_of<lc::lua::ScriptError>([&] { shot.frame(3); })
+                .rfind(f + ": frame 3: " + f + ":4: disk: inner radius must be >= 0, got -1", 0),
+            0u);
+  EXPECT_NO_THROW(shot.frame(0));  // the state is fine after errors
+}
+
+// A misspelt frames suggested 'frame', a field of every shot.
+TEST(SceneShot, MisspeltFramesSuggestsTheMissingField) {
+  ScratchDir dir;
+  const fs::path file = write_shot(dir, "shot.lua",
+                                   std::string("local lc = require 'lightcone'\n"
+                                               "return {name = 'shot', frame_count = 10, width = 8, height = 8,\n"
+                                               "  frame = function(i) return ") +
+                                       kScene + " end}\n");
+  EXPECT_EQ(error_of<lc::lua::FieldError>([&] { lc::Shot shot(file); }),
+            file.string() + ": missing field 'frames' (there is a field 'frame_count': misspelt?)");
+}
+
+// A script can list one sphere a million times in a few MiB of Lua memory;
+// the scene's copy of them took GiBs (and a ray tests every sphere).
+TEST(SceneShot, ObjectsAndNamesAreBounded) {
+  ScratchDir dir;
+  const std::string spheres =
+      "local s = lc.sphere{radius = 1, position = {r = 10, theta = 90, phi = 0}}\n"
+      "local many = {} for i = 1, 1e6 do many[i] = s end\n";
+  const fs::path file = write_shot(dir, "shot.lua",
+                                   "local lc = require 'lightcone'\n" + spheres +
+                                       "return {name = 'shot', frames = 2, width = 8, height = 8,\n"
+                                       "  frame = function(i)\n"
+                                       "    return {spacetime = lc.kerr{mass = 1, spin = 0.9},\n"
+                                       "            observer = lc.static_observer{r = 30, theta = 80, phi = 0},\n"
+                                       "            objects = i == 0 and {s, s} or many}\n"
+                                       "  end}\n");
+  lc::Shot shot(file);
+  EXPECT_EQ(shot.frame(0).spheres.size(), 2u);
+  EXPECT_EQ(error_of<lc::lua::FieldError>([&] { shot.frame(1); }),
+            file.string() + ": frame 1.objects: at most 1000 spheres, got 1000000");
+
+  const fs::path named = write_shot(dir, "named.lua",
+                                    "return {name = string.rep('n', 1e6), frames = 1, width = 8, height = 8,\n"
+                                    "  frame = function(i) return {} end}\n");
+  EXPECT_EQ(error_of<lc::lua::FieldError>([&] { lc::Shot shot(named); }),
+            named.string() + ": name has 1000000 characters, at most 128 are allowed (it names the output files)");
+}
+
+}  // namespace
