@@ -39,21 +39,24 @@ lua::TableReader tagged_copy(lua_State* L, const char* kind) {
   return lua::TableReader(L, out, kind);
 }
 
-// One constructor: copy and tag the arguments, then validate them with the
-// same reader the engine uses on the frame's scene, so an error names the
-// script line that made the value.
-template <void (*Validate)(lua::TableReader&)>
-int construct(lua_State* L, const char* kind) {
-  return lua::protect(L, [kind](lua_State* L) {
+// A constructor lc.<kind>{...}: copy and tag the arguments, then validate
+// them with the same reader the engine uses on the frame's scene, so an
+// error names the script line that made the value.  The kind's name and its
+// validator are the closure's upvalues.
+using Validator = void (*)(lua::TableReader&);
+int construct(lua_State* L) {
+  return lua::protect(L, [](lua_State* L) {
+    const char* kind = lua_tostring(L, lua_upvalueindex(1));
+    const auto validate = reinterpret_cast<Validator>(lua_touserdata(L, lua_upvalueindex(2)));
     {
       lua::TableReader r = tagged_copy(L, kind);
-      Validate(r);
+      validate(r);
     }
     return 1;
   });
 }
 
-void validate_spacetime(lua::TableReader& t) { read_spacetime(t, KerrSchildSense::outgoing); }
+void validate_spacetime(lua::TableReader& t) { read_spacetime(t); }
 void validate_camera(lua::TableReader& t) { read_camera(t); }
 void validate_disk(lua::TableReader& t) { read_disk(t); }
 void validate_sky(lua::TableReader& t) { read_sky(t); }
@@ -88,39 +91,27 @@ int l_apocentres(lua_State* L) {
   });
 }
 
-#define LC_CONSTRUCTOR(name, validate) \
-  int l_##name(lua_State* L) { return construct<validate>(L, #name); }
-LC_CONSTRUCTOR(kerr, validate_spacetime)
-LC_CONSTRUCTOR(dihole, validate_spacetime)
-LC_CONSTRUCTOR(minkowski, validate_spacetime)
-LC_CONSTRUCTOR(camera, validate_camera)
-LC_CONSTRUCTOR(disk, validate_disk)
-LC_CONSTRUCTOR(sky_checker, validate_sky)
-LC_CONSTRUCTOR(sky_image, validate_sky)
-LC_CONSTRUCTOR(sky_stars, validate_sky)
-LC_CONSTRUCTOR(worldline, validate_worldline)
-LC_CONSTRUCTOR(sphere, validate_sphere)
-LC_CONSTRUCTOR(static_observer, validate_observer)
-LC_CONSTRUCTOR(zamo, validate_observer)
-LC_CONSTRUCTOR(free_fall, validate_observer)
-#undef LC_CONSTRUCTOR
-
 }  // namespace
 
 void install_engine_api(lua::Sandbox& sandbox) {
   lua_State* L = sandbox.state();
   lua_newtable(L);
-  const luaL_Reg functions[] = {
-      {"kerr", l_kerr},           {"dihole", l_dihole},           {"minkowski", l_minkowski},
-      {"camera", l_camera},       {"disk", l_disk},               {"sky_checker", l_sky_checker},
-      {"sky_image", l_sky_image}, {"sky_stars", l_sky_stars}, {"worldline", l_worldline},     {"sphere", l_sphere},
-      {"static_observer", l_static_observer}, {"zamo", l_zamo},   {"free_fall", l_free_fall},
-      {"apocentres", l_apocentres},
-      {nullptr, nullptr}};
-  for (const luaL_Reg* f = functions; f->name; ++f) {
-    lua_pushcfunction(L, f->func);
-    lua_setfield(L, -2, f->name);
-  }
+  auto add = [&](std::string_view kind, Validator validate) {
+    lua_pushlstring(L, kind.data(), kind.size());
+    lua_pushlightuserdata(L, reinterpret_cast<void*>(validate));
+    lua_pushcclosure(L, &construct, 2);
+    lua_setfield(L, -2, std::string(kind).c_str());
+  };
+  // Every registered spacetime (spacetime/spacetime.hpp) by its name.
+  for_each_spacetime_type([&](auto tag) { add(decltype(tag)::type::name, validate_spacetime); });
+  for (const char* sky : {"sky_checker", "sky_image", "sky_stars"}) add(sky, validate_sky);
+  for (const char* observer : {"static_observer", "zamo", "free_fall"}) add(observer, validate_observer);
+  add("camera", validate_camera);
+  add("disk", validate_disk);
+  add("worldline", validate_worldline);
+  add("sphere", validate_sphere);
+  lua_pushcfunction(L, l_apocentres);
+  lua_setfield(L, -2, "apocentres");
   lua_setglobal(L, "__lightcone");
 }
 

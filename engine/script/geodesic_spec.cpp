@@ -58,13 +58,12 @@ Start read_start(const S& st, lua::TableReader& t, bool polar) {
   t.finish();
   s.trace = st.trace_from_scene(s.scene);
   if (st.inside_horizon(s.trace)) {
-    if constexpr (std::is_same_v<S, Kerr>)
-      throw lua::FieldError(fmt::format("{}: the start r = {} lies inside the horizon r+ = {:.6g}", t.context(),
-                                        s.scene[1], st.horizon_radius()));
+    if (polar)
+      throw lua::FieldError(fmt::format("{}: the start r = {} lies inside the horizon", t.context(), s.scene[1]));
     throw lua::FieldError(fmt::format("{}: the start lies inside a horizon", t.context()));
   }
   try {
-    s.frame = polar ? static_polar_tetrad(st, s.scene) : static_cartesian_tetrad(st, s.trace);
+    s.frame = static_frame(st, s.scene);
   } catch (const ObserverError& e) {
     throw lua::FieldError(fmt::format("{}: {} (directions and velocities are given in the static observer's frame)",
                                       t.context(), e.what()));
@@ -87,8 +86,7 @@ GeodesicSpec read_geodesic_spec(lua::TableReader& spec) {
   // Future-directed curves go through the future horizon, past-directed ones
   // through the past horizon: pick the Kerr–Schild chart regular there.
   auto st_table = spec.table("spacetime");
-  pb.spacetime = read_spacetime(
-      st_table, pb.direction == TimeDirection::future ? KerrSchildSense::ingoing : KerrSchildSense::outgoing);
+  pb.spacetime = for_tracing(read_spacetime(st_table), pb.direction);
   out.polar_scene = has_polar_scene(pb.spacetime);
 
   std::visit(

@@ -164,7 +164,7 @@ WorldlineSpec read_worldline(TableReader& t) {
   WorldlineSpec w;
   w.where = t.string_or("__where", t.context());
   auto st = t.table("spacetime");
-  w.spacetime = read_spacetime(st, KerrSchildSense::outgoing);
+  w.spacetime = read_spacetime(st);
   auto start = t.table("start");
   w.start = resolve_position(read_position(start), w.spacetime, start.context());
   if (auto v = t.optional_table("velocity")) w.velocity = read_leg_vector(*v, has_polar_scene(w.spacetime));
@@ -225,7 +225,7 @@ ObserverSpec read_observer(TableReader& t, const Spacetime* st) {
 FrameScene read_frame_scene(TableReader& t) {
   FrameScene fs;
   auto st = t.table("spacetime");
-  fs.spacetime = read_spacetime(st, KerrSchildSense::outgoing);
+  fs.spacetime = read_spacetime(st);
   {
     auto o = t.table("observer");
     fs.observer = read_observer(o, &fs.spacetime);

@@ -2,39 +2,42 @@
 
 #include <fmt/format.h>
 
+#include "script/field_reader.hpp"
+
 namespace lc {
 
-Spacetime read_spacetime(lua::TableReader& t, KerrSchildSense sense) {
+// Every registered spacetime's constructor, by name: its declared
+// parameters read, then the class's own checks.
+Spacetime read_spacetime(lua::TableReader& t) {
   const auto kind = t.optional_string("__kind");
-  if (!kind)
-    throw lua::FieldError(fmt::format(
-        "{}: not a spacetime; make one with a constructor such as lc.kerr{{mass = 1, spin = 0.9}}, "
-        "lc.dihole{{m1 = 0.4, m2 = 0.4}} or lc.minkowski()",
-        t.context()));
-  t.mark_known({"__where"});
-  try {
-    if (*kind == "kerr") {
-      const double M = t.number("mass"), a = t.number_or("spin", 0.0);
-      t.finish();
-      return Kerr(M, a, sense);
-    }
-    if (*kind == "dihole") {
-      const double m1 = t.number("m1"), m2 = t.number("m2"), d = t.number_or("d", 1.0);
-      t.finish();
-      return Dihole(m1, m2, d);
-    }
-    if (*kind == "minkowski") {
-      t.finish();
-      return Minkowski{};
-    }
-  } catch (const std::invalid_argument& e) {
-    // The spacetime classes prefix their messages with their kind; the
-    // context already names it.
-    std::string_view msg = e.what();
-    if (msg.starts_with(*kind + ": ")) msg.remove_prefix(kind->size() + 2);
-    throw lua::FieldError(fmt::format("{}: {}", t.context(), msg));
+  if (!kind) {
+    std::string examples;
+    for_each_spacetime_type([&](auto tag) {
+      examples += fmt::format("{}lc.{}{{...}}", examples.empty() ? "" : ", ", decltype(tag)::type::name);
+    });
+    throw lua::FieldError(
+        fmt::format("{}: not a spacetime; make one with a constructor: {}", t.context(), examples));
   }
-  throw lua::FieldError(fmt::format("{}: a {} is not a spacetime", t.context(), *kind));
+  t.mark_known({"__where"});
+  std::optional<Spacetime> out;
+  for_each_spacetime_type([&](auto tag) {
+    using S = typename decltype(tag)::type;
+    if (out || *kind != S::name) return;
+    typename S::Params p;
+    read_fields(t, p);
+    t.finish();
+    try {
+      out = S(p);
+    } catch (const std::invalid_argument& e) {
+      // The spacetime classes prefix their messages with their name; the
+      // context already names it.
+      std::string_view msg = e.what();
+      if (msg.starts_with(std::string(S::name) + ": ")) msg.remove_prefix(S::name.size() + 2);
+      throw lua::FieldError(fmt::format("{}: {}", t.context(), msg));
+    }
+  });
+  if (!out) throw lua::FieldError(fmt::format("{}: a {} is not a spacetime", t.context(), *kind));
+  return *out;
 }
 
 }  // namespace lc

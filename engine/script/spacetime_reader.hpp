@@ -7,8 +7,9 @@
 
 namespace lc {
 
-// Reads a tagged spacetime table; Kerr is built in the given Kerr–Schild
-// chart.  Throws lua::FieldError naming the context and the problem.
-Spacetime read_spacetime(lua::TableReader& t, KerrSchildSense sense);
+// Reads a tagged spacetime table (scene parameters; the chart rays are
+// traced in is the builder's choice: trace_chart).  Throws lua::FieldError
+// naming the context and the problem.
+Spacetime read_spacetime(lua::TableReader& t);
 
 }  // namespace lc

@@ -20,7 +20,7 @@ expect_error overspin "overspin.lua:3: kerr: |spin| must not exceed the mass" --
 
 spec negmass "local lc = require 'lightcone'
 return {spacetime = lc.dihole{m1 = -1, m2 = 0.4}, curve = 'null', start = {x = 5, y = 0, z = 0}, direction = {x = -1}, stop = {affine = 1}}"
-expect_error negmass "negmass.lua:2: dihole: masses must be >= 0" -- "$LIGHTCONE" geodesic negmass.lua -o out.csv
+expect_error negmass "negmass.lua:2: dihole: field 'm1' must be at least 0, got -1" -- "$LIGHTCONE" geodesic negmass.lua -o out.csv
 
 spec unknown_kind "return {spacetime = {kind = 'kerr', mass = 1}, $good_tail}"
 expect_error unknown_kind "spacetime: not a spacetime" -- "$LIGHTCONE" geodesic unknown_kind.lua -o out.csv
