@@ -42,12 +42,14 @@ struct Field {
   std::optional<T> fallback;
   std::optional<Bound> lo = std::nullopt, hi = std::nullopt;
   std::string_view doc = {};
+  std::string_view unit = {};  // "degrees", "M", ...: for messages and the docs
 };
 
 template <class Owner, class T>
 constexpr Field<Owner, T> field(std::string_view name, T Owner::*member, std::optional<T> fallback,
-                                std::optional<Bound> lo, std::optional<Bound> hi, std::string_view doc) {
-  return {name, member, fallback, lo, hi, doc};
+                                std::optional<Bound> lo, std::optional<Bound> hi, std::string_view doc,
+                                std::string_view unit = {}) {
+  return {name, member, fallback, lo, hi, doc, unit};
 }
 
 // Whether a struct declares its fields.
@@ -81,6 +83,36 @@ inline bool in_range(double v, const std::optional<Bound>& lo, const std::option
   if (lo && (lo->inclusive ? v < lo->value : v <= lo->value)) return false;
   if (hi && (hi->inclusive ? v > hi->value : v >= hi->value)) return false;
   return true;
+}
+
+// A field's value as text: exact (hex floats, for keys that must tell every
+// value apart) or for people and JSON (12 significant digits; JSON has no
+// NaN or infinity: null).
+inline std::string field_text(double v, bool exact) {
+  if (exact) return fmt::format("{:a}", v);
+  if (!std::isfinite(v)) return "null";
+  return fmt::format("{:.12g}", v);
+}
+template <class T>
+  requires std::is_integral_v<T>
+std::string field_text(T v, bool) {
+  return fmt::format("{}", v);
+}
+
+// " name=value" for every field of s, exactly: what frames are compared by.
+template <HasFields S>
+std::string fields_key(const S& s) {
+  std::string out;
+  for_each_field<S>([&](const auto& f) { out += fmt::format(" {}={}", f.name, field_text(s.*(f.member), true)); });
+  return out;
+}
+
+// ", \"name\": value" for every field of s, as JSON members.
+template <HasFields S>
+std::string fields_json(const S& s) {
+  std::string out;
+  for_each_field<S>([&](const auto& f) { out += fmt::format(", \"{}\": {}", f.name, field_text(s.*(f.member), false)); });
+  return out;
 }
 
 }  // namespace lc

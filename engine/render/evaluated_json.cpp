@@ -24,7 +24,7 @@ std::string evaluated(const SceneOf<S>& sc) {
       "\"camera\": {{\"forward\": {}, \"up\": {}, \"right\": {}}}, "
       "\"rays\": {{\"escape_radius\": {}, \"free_radius\": {}}}}}",
       json_position(sc.observer_scene, polar), leg(sc.frame.e[0]), leg(sc.frame.e[1]), leg(sc.frame.e[2]),
-      leg(sc.frame.e[3]), axis(sc.camera.forward()), axis(sc.camera.up()), axis(sc.camera.right()),
+      leg(sc.frame.e[3]), axis(sc.camera.axes().forward), axis(sc.camera.axes().up), axis(sc.camera.axes().right),
       json_number(sc.rays.escape_radius), json_number(sc.rays.free_radius));
 }
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "geodesic/null_ray.hpp"
-#include "render/camera.hpp"
+#include "camera/camera.hpp"
 #include "render/objects.hpp"
 
 namespace lc {
@@ -23,7 +23,7 @@ struct SceneOf {
   double observer_time;  // scene time of the observer (BL t for Kerr)
   Mat4 metric{};         // at the observer
   Tetrad frame{};
-  PinholeCamera camera;
+  Camera camera;
   std::optional<Disk> disk;
   Sky sky;
   std::vector<Sphere> spheres;

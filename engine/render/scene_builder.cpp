@@ -131,7 +131,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
           w.where, what, w.where, describe(w.spacetime), here));
   };
 
-  SceneOf<S> sc{st, {}, 0.0, {}, {}, PinholeCamera(fs.camera, width, height), std::nullopt, Sky{fs.sky, nullptr}, {},
+  SceneOf<S> sc{st, {}, 0.0, {}, {}, Camera(fs.camera, width, height), std::nullopt, Sky{fs.sky, nullptr}, {},
                 rays};
   const ObserverSpec& ob = fs.observer;
   try {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "camera/camera.hpp"
 #include "core/tensor.hpp"
 #include "spacetime/spacetime.hpp"
 
@@ -41,14 +42,6 @@ struct ObserverSpec {
   Vec4 position{};  // static / zamo: the event (t is the scene time)
   std::optional<WorldlineSpec> worldline;  // free_fall
   double proper_time = 0.0;                // free_fall: where on the worldline
-};
-
-// Pinhole camera in the observer's frame: forward = -e_1, up = -e_2, right =
-// e_3 ("looking at the hole"), then turned by yaw (forward towards right),
-// pitch (forward towards up) and roll (up towards right), in degrees.
-struct CameraSpec {
-  double fov = 60.0;  // horizontal, degrees
-  double yaw = 0.0, pitch = 0.0, roll = 0.0;
 };
 
 // Thin equatorial disk, checkered in Boyer–Lindquist r and phi.

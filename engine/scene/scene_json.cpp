@@ -77,8 +77,8 @@ std::string to_json(const FrameScene& fs, int frame, const std::string& evaluate
   else
     out += fmt::format("\"observer\": {{\"kind\": \"{}\", \"position\": {}}}, ",
                        o.kind == ObserverKind::zamo ? "zamo" : "static", position(o.position, polar));
-  out += fmt::format("\"camera\": {{\"fov\": {}, \"yaw\": {}, \"pitch\": {}, \"roll\": {}}}, ", num(fs.camera.fov),
-                     num(fs.camera.yaw), num(fs.camera.pitch), num(fs.camera.roll));
+  out += fmt::format("\"camera\": {{\"kind\": \"{}\"{}}}, ", camera_name(fs.camera),
+                     std::visit([](const auto& c) { return fields_json(c); }, fs.camera));
   if (fs.disk)
     out += fmt::format(
         "\"disk\": {{\"inner\": {}, \"outer\": {}, \"rings\": {}, \"sectors\": {}, \"colors\": [{}, {}]}}, ",

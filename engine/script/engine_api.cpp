@@ -106,7 +106,7 @@ void install_engine_api(lua::Sandbox& sandbox) {
   for_each_spacetime_type([&](auto tag) { add(decltype(tag)::type::name, validate_spacetime); });
   for (const char* sky : {"sky_checker", "sky_image", "sky_stars"}) add(sky, validate_sky);
   for (const char* observer : {"static_observer", "zamo", "free_fall"}) add(observer, validate_observer);
-  add("camera", validate_camera);
+  for_each_camera_type([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera); });
   add("disk", validate_disk);
   add("worldline", validate_worldline);
   add("sphere", validate_sphere);

@@ -26,12 +26,14 @@ void read_fields(lua::TableReader& t, S& out) {
       static_assert(std::is_integral_v<T>, "read_fields reads numbers; read other fields by hand");
       const std::int64_t i = f.fallback ? t.integer_or(f.name, static_cast<std::int64_t>(*f.fallback)) : t.integer(f.name);
       if (!in_range(static_cast<double>(i), f.lo, f.hi))
-        throw lua::FieldError(fmt::format("{}: field '{}' must be {}, got {}", t.context(), f.name, range_text(f.lo, f.hi), i));
+        throw lua::FieldError(fmt::format("{}: field '{}' must be {}{}, got {}", t.context(), f.name, range_text(f.lo, f.hi),
+                                          f.unit.empty() ? "" : " ", f.unit, i));
       v = static_cast<T>(i);
     }
     if constexpr (std::is_floating_point_v<T>)
       if (!in_range(v, f.lo, f.hi))
-        throw lua::FieldError(fmt::format("{}: field '{}' must be {}, got {:g}", t.context(), f.name, range_text(f.lo, f.hi), v));
+        throw lua::FieldError(fmt::format("{}: field '{}' must be {}{}{}, got {:g}", t.context(), f.name,
+                                          range_text(f.lo, f.hi), f.unit.empty() ? "" : " ", f.unit, v));
     out.*(f.member) = v;
   });
 }

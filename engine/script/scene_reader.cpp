@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
+#include "script/field_reader.hpp"
 #include "script/spacetime_reader.hpp"
 
 namespace lc {
@@ -109,16 +110,20 @@ Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::s
 }
 
 CameraSpec read_camera(TableReader& t) {
-  expect_kind(t, {"camera"}, "lc.camera{...}");
-  CameraSpec c;
-  c.fov = t.number_or("fov", c.fov);
-  if (!(c.fov > 0.0 && c.fov < 180.0))
-    fail(t, fmt::format("fov must be greater than 0 and less than 180 degrees, got {}", c.fov));
-  c.yaw = t.number_or("yaw", 0.0);
-  c.pitch = t.number_or("pitch", 0.0);
-  c.roll = t.number_or("roll", 0.0);
-  t.finish();
-  return c;
+  const std::string k = kind_of(t);
+  std::optional<CameraSpec> out;
+  std::string kinds;
+  for_each_camera_type([&](auto* kind) {
+    using C = std::remove_pointer_t<decltype(kind)>;
+    kinds += fmt::format("{}lc.{}{{...}}", kinds.empty() ? "" : ", ", C::name);
+    if (out || k != C::name) return;
+    typename C::Params p;
+    read_fields(t, p);
+    t.finish();
+    out = p;
+  });
+  if (!out) fail(t, fmt::format("expected a value made by a camera constructor: {}", kinds));
+  return *out;
 }
 
 DiskSpec read_disk(TableReader& t) {

@@ -85,9 +85,9 @@ expect_error big_stars "big_stars.lua:5: sky_stars: field 'resolution' must be b
 shot nan "$good_kerr camera = lc.camera{fov = 0/0},"
 expect_error nan "nan.lua:5: camera: field 'fov' is nan" -- "$LIGHTCONE" render nan.lua --out out
 shot wide "$good_kerr camera = lc.camera{fov = 200},"
-expect_error wide "wide.lua:5: camera: fov must be greater than 0 and less than 180 degrees, got 200" -- "$LIGHTCONE" render wide.lua --out out
+expect_error wide "wide.lua:5: camera: field 'fov' must be greater than 0 and less than 180 degrees, got 200" -- "$LIGHTCONE" render wide.lua --out out
 shot fov180 "$good_kerr camera = lc.camera{fov = 180},"
-expect_error fov180 "fov180.lua:5: camera: fov must be greater than 0 and less than 180 degrees, got 180" -- "$LIGHTCONE" render fov180.lua --out out
+expect_error fov180 "fov180.lua:5: camera: field 'fov' must be greater than 0 and less than 180 degrees, got 180" -- "$LIGHTCONE" render fov180.lua --out out
 shot typo "$good_kerr disk = lc.disk{iner = 6, outer = 10},"
 expect_error typo "typo.lua:5: disk: missing field 'inner' (there is a field 'iner': misspelt?)" -- "$LIGHTCONE" render typo.lua --out out
 shot scene_typo "spacetime = lc.kerr{mass = 1}, obsrver = lc.static_observer{r = 30, theta = 80, phi = 0},"

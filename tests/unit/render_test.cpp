@@ -22,7 +22,7 @@ FrameScene kerr_scene(double M, double a, double r, double theta_deg, double fov
   fs.spacetime = Kerr(M, a);
   fs.observer.kind = ObserverKind::static_observer;
   fs.observer.position = {0, r, theta_deg * degree, 0};
-  fs.camera.fov = fov;
+  std::get<PinholeCamera::Params>(fs.camera).fov = fov;
   if (disk) fs.disk = DiskSpec{6, 15, 9, 24};
   return fs;
 }
@@ -120,7 +120,7 @@ TEST(Render, FlatSpaceDiskIsTheExactProjection) {
     o.control.rtol = o.control.atol = tolerance;
     const Scene scene = build_scene(fs, W, H, res, o);
     const Vec3 cam = {30 * std::sin(70 * degree), 0, 30 * std::cos(70 * degree)};
-    const PinholeCamera camera(fs.camera, W, H);
+    const PinholeCamera camera(std::get<PinholeCamera::Params>(fs.camera), W, H);
     int disk_pixels = 0;
     for (int j = 0; j < H; ++j)
       for (int i = 0; i < W; ++i) {
@@ -214,7 +214,7 @@ TEST(Render, ObserverOnTheSouthAxisSeesTheNorthViewUpsideDown) {
 // The centre ray of a 1 x 1 image of `fs` looking straight along forward,
 // traced with `chart`.
 RaySample centre_ray(FrameScene fs, double yaw, KerrChart chart) {
-  fs.camera.yaw = yaw;
+  std::get<PinholeCamera::Params>(fs.camera).yaw = yaw;
   ShotResources res;
   RayOptions o;
   o.kerr_chart = chart;
@@ -297,7 +297,7 @@ std::vector<std::pair<std::string, FrameScene>> scenes_of_every_path() {
   FrameScene di;
   di.spacetime = Dihole(0.4, 0.4, 1.0);
   di.observer.position = {90, 0, 40, 0};
-  di.camera.fov = 30;
+  std::get<PinholeCamera::Params>(di.camera).fov = 30;
   di.spheres.push_back(test::falling_sphere(di.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
   out.emplace_back("dihole", di);
   return out;
@@ -349,7 +349,7 @@ TEST(Render, SphereInFlatSpaceHasItsAngularSize) {
   FrameScene fs;
   fs.spacetime = Dihole(0.0, 0.0, 1.0);
   fs.observer.position = {0, 0, 80, 0};
-  fs.camera.fov = 12;
+  std::get<PinholeCamera::Params>(fs.camera).fov = 12;
   SphereSpec sp;
   sp.radius = 1.0;
   sp.position = Vec4{0, 5, 0, 0};
@@ -434,7 +434,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   FrameScene fs;
   fs.spacetime = Minkowski{};
   fs.observer.position = {150, 0, 60, 0};  // at t = 150, on the y axis, looking at the origin
-  fs.camera.fov = 90;
+  std::get<PinholeCamera::Params>(fs.camera).fov = 90;
   fs.spheres.push_back(test::falling_sphere(Minkowski{}, {0, -70, 0, 0}, {0.6, 0, 0}, 300, 3.0));
   ShotResources res;
   const int W = 600, H = 600;
@@ -491,7 +491,7 @@ TEST(Render, MovingObserverSeesAberration) {
   fs.observer.kind = ObserverKind::free_fall;
   fs.observer.worldline = w;
   fs.observer.proper_time = 0;
-  fs.camera.fov = 120;
+  std::get<PinholeCamera::Params>(fs.camera).fov = 120;
   ShotResources res;
   const int W = 64;
   const Scene scene = build_scene(fs, W, 1, res);

@@ -21,7 +21,7 @@ FrameScene dihole_at(double t) {
   FrameScene fs;
   fs.spacetime = Dihole(0.4, 0.4, 1.0);
   fs.observer.position = {t, 0, 40, 0};
-  fs.camera.fov = 30;
+  std::get<PinholeCamera::Params>(fs.camera).fov = 30;
   fs.spheres.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
   return fs;
 }
@@ -75,7 +75,7 @@ TEST(SampleMemo, AnotherSceneReusesNothing) {
   SampleMemo memo(rs);
   render(dihole_at(100), rs, res, &memo);
   FrameScene turned = dihole_at(100);
-  turned.camera.yaw = 1e-9;  // a hair's turn: every ray is another
+  std::get<PinholeCamera::Params>(turned.camera).yaw = 1e-9;  // a hair's turn: every ray is another
   const Rendered r = render(turned, rs, res, &memo);
   EXPECT_EQ(r.stats.reused, 0);
   EXPECT_EQ(r.image.rgb, render(turned, rs, res, nullptr).image.rgb);

@@ -36,7 +36,7 @@ TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
   };
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.observer.position[1] = std::nextafter(30.0, 31.0); }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.spacetime = Kerr(1.0, std::nextafter(0.9, 1.0)); }));
-  EXPECT_TRUE(differs([](FrameScene& fs) { fs.camera.roll = 1e-12; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { std::get<PinholeCamera::Params>(fs.camera).roll = 1e-12; }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.disk->sectors = 25; }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.disk.reset(); }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.sky.rotate = 1e-12; }));

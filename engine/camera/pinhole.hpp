@@ -1,0 +1,69 @@
+#pragma once
+// The pinhole camera: the view docs/architecture.md's camera convention
+// describes, in an observer's tetrad.  Directions are components on the
+// tetrad's spatial legs (1, 2, 3); the default view looks "at the hole":
+// forward = -e_1, up = -e_2, right = e_3, then turned by yaw (forward
+// towards right), pitch (forward towards up) and roll (up towards right).
+// Pixel (i, j) (i from the left, j from the top, centres at i + 1/2, j + 1/2)
+// looks along normalize(forward + x right + y up) with
+// x = (2 px / W - 1) tan(fov/2), y = (1 - 2 py / H) tan(fov/2) H / W.
+
+#include <cmath>
+#include <optional>
+#include <string_view>
+#include <tuple>
+
+#include "camera/camera_axes.hpp"
+#include "core/constants.hpp"
+#include "core/fields.hpp"
+#include "core/tensor.hpp"
+
+namespace lc {
+
+class PinholeCamera {
+ public:
+  static constexpr std::string_view name = "camera";  // lc.camera{...}
+  struct Params {
+    double fov = 60.0;  // horizontal, degrees
+    double yaw = 0.0, pitch = 0.0, roll = 0.0;
+    static constexpr auto fields = std::tuple{
+        field("fov", &Params::fov, std::optional<double>{60.0}, above(0.0), below(180.0), "horizontal field of view",
+              "degrees"),
+        field("yaw", &Params::yaw, std::optional<double>{0.0}, std::nullopt, std::nullopt,
+              "turns forward towards right", "degrees"),
+        field("pitch", &Params::pitch, std::optional<double>{0.0}, std::nullopt, std::nullopt,
+              "then forward towards up", "degrees"),
+        field("roll", &Params::roll, std::optional<double>{0.0}, std::nullopt, std::nullopt,
+              "then up towards right", "degrees"),
+    };
+  };
+
+  // Image size in pixels; the parameters' angles are in degrees.
+  PinholeCamera(const Params& p, int width, int height)
+      : tan_half_(std::tan(0.5 * p.fov * degree)), width_(width), height_(height) {
+    axes_ = turned_axes(p.yaw, p.pitch, p.roll);
+  }
+
+  // Direction (on the legs, unit length) through the image point (px, py) in
+  // pixel units: pixel (i, j) spans [i, i+1] x [j, j+1], j = 0 at the top.
+  Vec3 direction(double px, double py) const {
+    const Vec3& forward_ = axes_.forward;
+    const Vec3& up_ = axes_.up;
+    const Vec3& right_ = axes_.right;
+    const double x = (2.0 * px / width_ - 1.0) * tan_half_;
+    const double y = (1.0 - 2.0 * py / height_) * tan_half_ * height_ / width_;
+    Vec3 d = {forward_[0] + x * right_[0] + y * up_[0], forward_[1] + x * right_[1] + y * up_[1],
+              forward_[2] + x * right_[2] + y * up_[2]};
+    const double n = 1.0 / norm3(d);
+    return {d[0] * n, d[1] * n, d[2] * n};
+  }
+
+  const CameraAxes& axes() const { return axes_; }
+
+ private:
+  CameraAxes axes_;
+  double tan_half_;
+  int width_, height_;
+};
+
+}  // namespace lc
