@@ -18,6 +18,8 @@
 
 #include <fmt/format.h>
 
+#include "core/color.hpp"
+
 namespace lc {
 
 // A closed or open end of a numeric range.
@@ -97,6 +99,27 @@ template <class T>
   requires std::is_integral_v<T>
 std::string field_text(T v, bool) {
   return fmt::format("{}", v);
+}
+
+inline std::string field_text(const std::string& v, bool) {
+  std::string out = "\"";
+  for (const char c : v) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) {
+      out += fmt::format("\\u{:04x}", c);
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+inline std::string field_text(const Palette& p, bool exact) {
+  auto colour = [exact](const Color& c) {
+    return exact ? fmt::format("{:a},{:a},{:a}", c[0], c[1], c[2])
+                 : fmt::format("[{}, {}, {}]", field_text(double{c[0]}, false), field_text(double{c[1]}, false),
+                               field_text(double{c[2]}, false));
+  };
+  return exact ? colour(p.a) + ";" + colour(p.b) : "[" + colour(p.a) + ", " + colour(p.b) + "]";
 }
 
 // " name=value" for every field of s, exactly: what frames are compared by.

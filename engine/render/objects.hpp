@@ -27,23 +27,6 @@ struct Disk {
   }
 };
 
-struct Sky {
-  SkySpec spec;
-  std::shared_ptr<const Texture> texture;  // for SkyKind::image
-  // Colour of the sky in the direction (theta from +z, phi = atan2(y, x)).
-  Color color(double theta, double phi) const {
-    phi += spec.rotate * degree;
-    phi -= two_pi * std::floor(phi / two_pi);
-    if (spec.kind != SkyKind::checker) {
-      Color c;
-      texture->sample(phi / two_pi, theta / pi, c.data());
-      return c;
-    }
-    const long row = static_cast<long>(std::floor(theta / pi * spec.rows));
-    const long col = static_cast<long>(std::floor(phi / two_pi * spec.columns));
-    return checker(row, col, spec.color_a, spec.color_b);
-  }
-};
 
 // The sphere's centre event and frame at the coordinate time of a ray point.
 struct SphereFrame {

@@ -60,7 +60,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
           w.where, what, w.where, describe(w.spacetime), here));
   };
 
-  SceneOf<S> sc{st, {}, 0.0, {}, {}, Camera(fs.camera, width, height), std::nullopt, Sky{fs.sky, nullptr}, {},
+  SceneOf<S> sc{st, {}, 0.0, {}, {}, Camera(fs.camera, width, height), std::nullopt, Sky(fs.sky, res), {},
                 rays};
   const ObserverSpec& ob = fs.observer;
   try {
@@ -87,8 +87,6 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
   scene_polar(st, sc.observer, sc.observer_time, r_unused, phi_unused);
 
   if (fs.disk) sc.disk = Disk{*fs.disk};
-  if (fs.sky.kind == SkyKind::image) sc.sky.texture = res.texture(fs.sky.image);
-  if (fs.sky.kind == SkyKind::stars) sc.sky.texture = res.starfield(fs.sky.seed, fs.sky.resolution);
   for (const SphereSpec& spec : fs.spheres) {
     Sphere sp{spec, nullptr, {}, {}};
     if (spec.worldline) {

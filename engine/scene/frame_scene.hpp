@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "camera/camera.hpp"
+#include "core/color.hpp"
+#include "sky/sky.hpp"
 #include "core/tensor.hpp"
 #include "spacetime/spacetime.hpp"
 
 namespace lc {
-
-using Color = std::array<float, 3>;
 
 // A free-falling worldline: a timelike geodesic from `start` (scene
 // coordinates) with 3-velocity `velocity` relative to the static observer
@@ -49,20 +49,6 @@ struct DiskSpec {
   double inner = 6.0, outer = 20.0;
   int rings = 7, sectors = 24;
   Color color_a = {1.0f, 0.55f, 0.15f}, color_b = {0.35f, 0.12f, 0.03f};
-};
-
-enum class SkyKind { checker, image, stars };
-
-// The sky at infinity, looked up by the direction a ray escapes in:
-// longitude phi = atan2(y, x), colatitude theta from +z.
-struct SkySpec {
-  SkyKind kind = SkyKind::checker;
-  int rows = 18, columns = 36;  // checker cells in theta and phi
-  Color color_a = {0.6f, 0.6f, 0.65f}, color_b = {0.05f, 0.05f, 0.08f};
-  std::filesystem::path image;  // equirectangular
-  std::uint32_t seed = 1;       // procedural star field: catalogue seed ...
-  int resolution = 2048;        // ... and width of its equirectangular texture
-  double rotate = 0.0;          // degrees added to the longitude
 };
 
 // A checkered sphere of proper radius `radius` in the local frame of a

@@ -86,15 +86,8 @@ std::string to_json(const FrameScene& fs, int frame, const std::string& evaluate
         color(fs.disk->color_b));
   else
     out += "\"disk\": null, ";
-  if (fs.sky.kind == SkyKind::stars)
-    out += fmt::format("\"sky\": {{\"kind\": \"stars\", \"seed\": {}, \"resolution\": {}, \"rotate\": {}}}, ",
-                       fs.sky.seed, fs.sky.resolution, num(fs.sky.rotate));
-  else if (fs.sky.kind == SkyKind::image)
-    out += fmt::format("\"sky\": {{\"kind\": \"image\", \"file\": {}, \"rotate\": {}}}, ", quoted(fs.sky.image.string()),
-                       num(fs.sky.rotate));
-  else
-    out += fmt::format("\"sky\": {{\"kind\": \"checker\", \"rows\": {}, \"columns\": {}, \"rotate\": {}}}, ",
-                       fs.sky.rows, fs.sky.columns, num(fs.sky.rotate));
+  out += fmt::format("\"sky\": {{\"kind\": \"{}\"{}}}, ", sky_name(fs.sky),
+                     std::visit([](const auto& k) { return fields_json(k); }, fs.sky));
   out += "\"objects\": [";
   for (std::size_t i = 0; i < fs.spheres.size(); ++i) {
     const SphereSpec& s = fs.spheres[i];

@@ -10,23 +10,56 @@
 
 #include <fmt/format.h>
 
+#include "core/color.hpp"
 #include "core/fields.hpp"
 #include "lua/table_reader.hpp"
 
 namespace lc {
+
+// colors = {{r, g, b}, {r, g, b}}: two linear RGB colours, components >= 0.
+inline Palette read_palette(lua::TableReader& list) {
+  if (list.length() != 2)
+    throw lua::FieldError(fmt::format("{}: must hold two colours {{{{r, g, b}}, {{r, g, b}}}}", list.context()));
+  Palette out;
+  for (std::size_t i = 1; i <= 2; ++i) {
+    auto c = list.table_at(i);
+    if (c.length() != 3)
+      throw lua::FieldError(fmt::format("{}: a colour is {{r, g, b}} (three numbers, linear RGB)", c.context()));
+    Color& colour = i == 1 ? out.a : out.b;
+    for (std::size_t k = 1; k <= 3; ++k) {
+      const double v = c.number_at(k);
+      if (v < 0.0) throw lua::FieldError(fmt::format("{}: colour components must be >= 0, got {}", c.context(), v));
+      colour[k - 1] = static_cast<float>(v);
+    }
+    c.finish();
+  }
+  list.finish();
+  return out;
+}
 
 template <HasFields S>
 void read_fields(lua::TableReader& t, S& out) {
   for_each_field<S>([&](const auto& f) {
     using T = typename std::decay_t<decltype(f)>::Value;
     T v;
-    if constexpr (std::is_floating_point_v<T>) {
+    if constexpr (std::is_same_v<T, std::string>) {
+      v = f.fallback ? t.string_or(f.name, *f.fallback) : t.string(f.name);
+      if (!f.fallback && v.empty()) throw lua::FieldError(fmt::format("{}: field '{}' must not be empty", t.context(), f.name));
+    } else if constexpr (std::is_same_v<T, Palette>) {
+      auto list = t.optional_table(f.name);
+      if (list)
+        v = read_palette(*list);
+      else if (f.fallback)
+        v = *f.fallback;
+      else
+        throw lua::FieldError(fmt::format("{}: missing field '{}'", t.context(), f.name));
+    } else if constexpr (std::is_floating_point_v<T>) {
       v = f.fallback ? t.number_or(f.name, *f.fallback) : t.number(f.name);
     } else {
-      static_assert(std::is_integral_v<T>, "read_fields reads numbers; read other fields by hand");
+      static_assert(std::is_integral_v<T>, "read_fields reads numbers, strings and palettes; read other fields by hand");
       const std::int64_t i = f.fallback ? t.integer_or(f.name, static_cast<std::int64_t>(*f.fallback)) : t.integer(f.name);
       if (!in_range(static_cast<double>(i), f.lo, f.hi))
-        throw lua::FieldError(fmt::format("{}: field '{}' must be {}{}, got {}", t.context(), f.name, range_text(f.lo, f.hi),
+        throw lua::FieldError(fmt::format("{}: field '{}' must be {}{}{}, got {}", t.context(), f.name, range_text(f.lo, f.hi),
                                           f.unit.empty() ? "" : " ", f.unit, i));
       v = static_cast<T>(i);
     }

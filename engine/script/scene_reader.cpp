@@ -142,26 +142,19 @@ DiskSpec read_disk(TableReader& t) {
 
 SkySpec read_sky(TableReader& t) {
   const std::string k = kind_of(t);
-  SkySpec s;
-  if (k == "sky_checker") {
-    s.kind = SkyKind::checker;
-    s.rows = count(t, "rows", s.rows, 1, 100000);
-    s.columns = count(t, "columns", s.columns, 1, 100000);
-    read_colors(t, s.color_a, s.color_b);
-  } else if (k == "sky_image") {
-    s.kind = SkyKind::image;
-    s.image = t.string("file");
-    if (s.image.empty()) fail(t, "file must name an image");
-  } else if (k == "sky_stars") {
-    s.kind = SkyKind::stars;
-    s.seed = static_cast<std::uint32_t>(count(t, "seed", 1, 0, 2147483647));
-    s.resolution = count(t, "resolution", s.resolution, 64, max_star_field_width);
-  } else {
-    fail(t, "expected a value made by lc.sky_checker{...}, lc.sky_stars{...}, lc.sky_image{...} or lc.starfield{...}");
-  }
-  s.rotate = t.number_or("rotate", 0.0);
-  t.finish();
-  return s;
+  std::optional<SkySpec> out;
+  std::string kinds;
+  for_each_sky_type([&](auto* kind) {
+    using K = std::remove_pointer_t<decltype(kind)>;
+    kinds += fmt::format("lc.{}{{...}}, ", K::name);
+    if (out || k != K::name) return;
+    typename K::Params p;
+    read_fields(t, p);
+    t.finish();
+    out = p;
+  });
+  if (!out) fail(t, fmt::format("expected a value made by a sky constructor: {}or lc.starfield{{...}}", kinds));
+  return *out;
 }
 
 WorldlineSpec read_worldline(TableReader& t) {

@@ -19,11 +19,11 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
   for (int f : frames) {
     const FrameScene fs = shot.frame(f);
     out.frames[f].spacetime = describe(fs.spacetime);
-    if (fs.sky.kind == SkyKind::image) {
+    for (const std::string& asset : sky_assets(fs.sky)) {
       // The file the render will load (the same rules): checked before
       // anything reads it, for the hash below.
       try {
-        texture_of[f] = resolve_sky_image(fs.sky.image, dirs).string();
+        texture_of[f] = resolve_sky_image(asset, dirs).string();
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(fmt::format("{}: frame {}: {}", shot.file().string(), f, e.what()));
       }

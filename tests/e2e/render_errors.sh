@@ -81,7 +81,7 @@ return {name = "long_worldline", frames = 1, width = 8, height = 8, frame = func
 LUA
 expect_error long_worldline "long_worldline.lua:2: worldline: field 'duration' must be at most 20000 M of proper time, got 49000" -- "$LIGHTCONE" render long_worldline.lua --out out
 shot big_stars "$good_kerr sky = lc.sky_stars{resolution = 16384},"
-expect_error big_stars "big_stars.lua:5: sky_stars: field 'resolution' must be between 64 and 8192, got 16384" -- "$LIGHTCONE" render big_stars.lua --out out
+expect_error big_stars "big_stars.lua:5: sky_stars: field 'resolution' must be between 64 and 8192 pixels, got 16384" -- "$LIGHTCONE" render big_stars.lua --out out
 shot nan "$good_kerr camera = lc.camera{fov = 0/0},"
 expect_error nan "nan.lua:5: camera: field 'fov' is nan" -- "$LIGHTCONE" render nan.lua --out out
 shot wide "$good_kerr camera = lc.camera{fov = 200},"

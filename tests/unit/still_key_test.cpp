@@ -39,8 +39,8 @@ TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
   EXPECT_TRUE(differs([](FrameScene& fs) { std::get<PinholeCamera::Params>(fs.camera).roll = 1e-12; }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.disk->sectors = 25; }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.disk.reset(); }));
-  EXPECT_TRUE(differs([](FrameScene& fs) { fs.sky.rotate = 1e-12; }));
-  EXPECT_TRUE(differs([](FrameScene& fs) { fs.sky.seed = 2; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { std::get<CheckerSky::Params>(fs.sky).rotate = 1e-12; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.sky = StarSky::Params{2}; }));
   EXPECT_TRUE(differs([](FrameScene& fs) { (*fs.spheres[0].position)[1] = 12.5; }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.spheres[0].color_a[0] = 0.5f; }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.spheres.push_back(fs.spheres[0]); }));

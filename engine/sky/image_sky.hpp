@@ -1,0 +1,53 @@
+#pragma once
+// lc.sky_image{file = ...}: an equirectangular image at infinity (longitude 0
+// at the left edge, growing to the right; the top edge is +z), in any
+// format OpenImageIO reads.  lc.starfield{} is this with the star field
+// that ships with lightcone.
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <vector>
+
+#include "core/color.hpp"
+#include "core/constants.hpp"
+#include "core/fields.hpp"
+#include "image/texture.hpp"
+#include "sky/longitude.hpp"
+
+namespace lc {
+
+class ShotResources;
+
+class ImageSky {
+ public:
+  static constexpr std::string_view name = "sky_image";
+  struct Params {
+    std::string file;
+    double rotate = 0.0;
+    static constexpr auto fields = std::tuple{
+        field("file", &Params::file, std::optional<std::string>{}, std::nullopt, std::nullopt,
+              "the image, relative to the shot's folder or the project's shots/"),
+        field("rotate", &Params::rotate, std::optional<double>{0.0}, std::nullopt, std::nullopt,
+              "added to the longitude", "degrees"),
+    };
+  };
+  // The file a frame with this sky reads (resolved as resolve_sky_image says).
+  static std::vector<std::string> assets(const Params& p) { return {p.file}; }
+
+  ImageSky(const Params& p, ShotResources& res);
+
+  // Colour in the direction (theta from +z, phi = atan2(y, x)).
+  Color color(double theta, double phi) const {
+    return equirectangular_color(*texture_, theta, rotated_longitude(phi, rotate_));
+  }
+
+ private:
+  double rotate_;
+  std::shared_ptr<const Texture> texture_;
+};
+
+}  // namespace lc

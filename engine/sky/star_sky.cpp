@@ -1,0 +1,11 @@
+#include "sky/star_sky.hpp"
+
+#include "render/shot_resources.hpp"
+
+namespace lc {
+
+// The field is made once per shot, seed and size (ShotResources).
+StarSky::StarSky(const Params& p, ShotResources& res)
+    : rotate_(p.rotate), texture_(res.starfield(p.seed, p.resolution)) {}
+
+}  // namespace lc

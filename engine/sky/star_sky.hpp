@@ -1,0 +1,55 @@
+#pragma once
+// lc.sky_stars{...}: the procedural star field (image/starfield.hpp) made in
+// memory for any seed, as an equirectangular texture `resolution` pixels
+// wide.
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <vector>
+
+#include "core/color.hpp"
+#include "core/constants.hpp"
+#include "core/fields.hpp"
+#include "image/texture.hpp"
+#include "sky/longitude.hpp"
+
+namespace lc {
+
+class ShotResources;
+
+class StarSky {
+ public:
+  static constexpr std::string_view name = "sky_stars";
+  struct Params {
+    std::uint32_t seed = 1;
+    int resolution = 2048;
+    double rotate = 0.0;
+    static constexpr auto fields = std::tuple{
+        field("seed", &Params::seed, std::optional<std::uint32_t>{1}, at_least(0), at_most(2147483647),
+              "the catalogue's seed"),
+        field("resolution", &Params::resolution, std::optional<int>{2048}, at_least(64), at_most(max_star_field_width),
+              "the texture's width (its height is half)", "pixels"),
+        field("rotate", &Params::rotate, std::optional<double>{0.0}, std::nullopt, std::nullopt,
+              "added to the longitude", "degrees"),
+    };
+  };
+  static std::vector<std::string> assets(const Params&) { return {}; }
+
+  StarSky(const Params& p, ShotResources& res);
+
+  // Colour in the direction (theta from +z, phi = atan2(y, x)).
+  Color color(double theta, double phi) const {
+    return equirectangular_color(*texture_, theta, rotated_longitude(phi, rotate_));
+  }
+
+ private:
+  double rotate_;
+  std::shared_ptr<const Texture> texture_;
+};
+
+}  // namespace lc
