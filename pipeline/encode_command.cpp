@@ -6,12 +6,12 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <regex>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "image/image_io.hpp"
+#include "image_size.hpp"
 #include "video/concat_videos.hpp"
 #include "video/encode_sequence.hpp"
 #include "video/frame_sequence.hpp"
@@ -131,13 +131,9 @@ int encode_title(const EncodeCommand& cmd, const InterruptGuard& guard) {
     throw std::invalid_argument("--title makes a title card: give no frame directory or videos");
   if (cmd.shot) throw std::invalid_argument("--shot selects frames; a title card has none");
   if (!cmd.size) throw std::invalid_argument("--title needs --size WxH (the size of the film it goes with)");
-  std::smatch m;
-  static const std::regex wxh(R"(([0-9]{1,5})x([0-9]{1,5}))");
-  if (!std::regex_match(*cmd.size, m, wxh))
-    throw std::invalid_argument(fmt::format("--size {}: expected WxH, e.g. 1280x720", *cmd.size));
-  const int w = std::stoi(m[1]), h = std::stoi(m[2]);
-  if (w < 2 || h < 2 || w > 16384 || h > 16384)
-    throw std::invalid_argument(fmt::format("--size {}: each side must be 2 to 16384", *cmd.size));
+  const auto [w, h] = parse_image_size(*cmd.size, "--size");
+  if (w < 2 || h < 2 || w > max_frame_side || h > max_frame_side)
+    throw std::invalid_argument(fmt::format("--size {}: each side must be 2 to {}", *cmd.size, max_frame_side));
   const double fps = cmd.fps.value_or(30.0);
   const EncodeOptions o = encode_options(cmd, fps);
   const double seconds = cmd.seconds.value_or(3.0);

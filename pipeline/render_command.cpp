@@ -22,28 +22,10 @@
 #include "farm/store_sink.hpp"
 #include "farm/threads.hpp"
 #include "frame_range.hpp"
+#include "image_size.hpp"
 #include "scene/shot.hpp"
 
 namespace lc {
-
-std::pair<int, int> output_size(int width, int height, const std::optional<std::string>& size, double scale) {
-  if (size) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
-      throw std::invalid_argument(fmt::format("--size '{}': expected WxH, e.g. 1280x720", *size));
-    width = w;
-    height = h;
-  }
-  if (!(scale > 0.0) || !std::isfinite(scale))
-    throw std::invalid_argument(fmt::format("--scale {}: must be a positive number", scale));
-  width = static_cast<int>(std::lround(width * scale));
-  height = static_cast<int>(std::lround(height * scale));
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw std::invalid_argument(fmt::format("image size {}x{} is out of range (1 to 16384 a side; check --size and --scale)",
-                                            width, height));
-  return {width, height};
-}
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "render_command.hpp"
+#include "image_size.hpp"
 #include "scene/shot.hpp"
 #include "video/contact_sheet.hpp"
 

@@ -35,6 +35,24 @@ expect_error zero_size "image size 0x10 is out of range" -- "$LIGHTCONE" render 
 expect_error absurd_size "image size 100000x10 is out of range" -- "$LIGHTCONE" render ok.lua --out out --size 100000x10
 expect_error bad_size "--size 'big': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size big
 expect_error bad_scale "--scale -1: must be a positive number" -- "$LIGHTCONE" render ok.lua --out out --scale -1
+# Sizes are parsed strictly by every command that takes one: 2^32 + 64 once
+# wrapped around to 64 and rendered 64x36; signs and trailing junk are refused.
+expect_error size_overflow "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" render ok.lua --out out --size 4294967360x36
+expect_error size_sign "--size '-64x36': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size -64x36
+expect_error size_plus "--size '64x+36': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size 64x+36
+expect_error size_junk "--size '64x36px': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size 64x36px
+expect_error trace_size "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" trace ok.lua --frame 0 --pixel 0,0 --size 4294967360x36 -o trace.csv
+expect_error trace_pixel "--pixel '4294967297,0': 4294967297 is far too large" -- \
+  "$LIGHTCONE" trace ok.lua --frame 0 --pixel 4294967297,0 -o trace.csv
+expect_error showcase_size "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" showcase --size 4294967360x36 --out showcase_out
+expect_error title_size "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" encode --title X --size 4294967360x36 -o title.mp4
+expect_error farm_bench_size "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" farm-bench --size 4294967360x36 --frames 1
+[ -e trace.csv ] || [ -e title.mp4 ] || [ -e showcase_out ] && fail "a refused size left an output behind"
 expect_error bench_seconds "--seconds -1: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds -1
 expect_error bench_seconds_nan "--seconds nan: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds nan
 expect_error bench_seconds_long "--seconds 4000: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds 4000
