@@ -16,7 +16,7 @@ namespace lc {
 struct EncodeCommand {
   std::vector<std::filesystem::path> inputs;  // DIR; or the videos to join with --concat
   std::filesystem::path output;
-  std::optional<double> fps;            // default: the frames' "lightcone/fps" EXR attribute, else 30
+  std::optional<std::string> fps;       // "30", "29.97", "30000/1001"; default: the frames' "lightcone/fps" EXR attribute, else 30
   std::optional<int> crf;               // default per codec
   std::optional<std::string> codec;     // default h264
   std::optional<std::string> preset;    // default per codec

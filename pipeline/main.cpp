@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
       "encode", "Encode a shot's PNG frames to video (H.264 MP4 by default), join videos, or make a title card");
   encode_cmd->add_option("inputs", encode.inputs, "Frame directory; with --concat, the videos to join in order");
   encode_cmd->add_option("-o,--output", encode.output, "Video file to write (.mp4, .mov, .mkv, .webm)")->required();
-  encode_cmd->add_option("--fps", encode.fps, "Frames per second (default: the shot's if recorded, else 30)");
+  encode_cmd->add_option("--fps", encode.fps, "Frames per second: 30, 29.97 or a fraction such as 30000/1001 (default: the shot's if recorded, else 30)");
   encode_cmd->add_option("--crf", encode.crf, "Constant quality: lower is better (default h264 18, hevc 22, vp9 24, av1 30)");
   encode_cmd->add_option("--codec", encode.codec, "h264 (default), hevc, vp9, av1 or prores");
   encode_cmd->add_option("--preset", encode.preset,

@@ -122,7 +122,7 @@ std::string size_text(const fs::path& p) {
 void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout) {
   InterruptGuard guard;
   EncodeOptions o;
-  o.fps = plan.fps;
+  o.fps = frame_rate_near(plan.fps);
   // At least 4 frames: H.264's B-frames make a clip's decode times start up
   // to 2 frames before 0, and they must not reach back into the previous clip.
   const int card_frames = std::max(4, static_cast<int>(std::lround(title_seconds * plan.fps)));

@@ -10,8 +10,8 @@ namespace lc {
 
 namespace {
 // The summary of a finished writer.
-EncodeResult result_of(const VideoWriter& w, int width, int height, double fps) {
-  return {w.frames(), width, height, w.encoded_width(), w.encoded_height(), w.frames() / fps};
+EncodeResult result_of(const VideoWriter& w, int width, int height, FrameRate fps) {
+  return {w.frames(), width, height, w.encoded_width(), w.encoded_height(), static_cast<double>(w.frames()) * fps.den / fps.num};
 }
 }  // namespace
 

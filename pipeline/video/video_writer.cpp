@@ -146,8 +146,9 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
   m.packet = av_packet_alloc();
   if (!m.stream || !m.enc || !m.frame || !m.packet) throw std::bad_alloc();
 
-  // av_d2q keeps common rates exact (30 -> 30/1; 29.97 -> 30000/1001).
-  const AVRational rate = av_d2q(options.fps, 1000000);
+  // The rate as the fraction it is: 30000/1001 frames per second, a time
+  // base of 1001/30000 s.
+  const AVRational rate{options.fps.num, options.fps.den};
   m.enc->width = width + width % 2;
   m.enc->height = height + height % 2;
   m.enc->pix_fmt = options.codec == Codec::prores ? AV_PIX_FMT_YUV422P10LE : AV_PIX_FMT_YUV420P;

@@ -41,6 +41,21 @@ grep -q "24 fps (the shot, from tiny.0000.exr)" tiny24.log || fail "fps source n
 # --fps overrides it: 12 frames at 30 fps last 0.4 s.
 "$LIGHTCONE" encode frames -o tiny30.mp4 --fps 30 2>/dev/null || fail "encode at 30 fps"
 check_probe tiny30.mp4 nb_read_frames=12 avg_frame_rate=30/1 duration=0.400000
+# Fractions are kept exactly: NTSC's 30000/1001 is the stream's rate (12
+# frames last 0.4004 s), and 29.97 is 2997/100.
+"$LIGHTCONE" encode frames -o ntsc.mp4 --fps 30000/1001 2>ntsc.log || fail "encode --fps 30000/1001: $(cat ntsc.log)"
+check_probe ntsc.mp4 nb_read_frames=12 avg_frame_rate=30000/1001 duration=0.400400
+"$LIGHTCONE" encode frames -o decimal.mp4 --fps 29.97 2>/dev/null || fail "encode --fps 29.97"
+check_probe decimal.mp4 nb_read_frames=12 avg_frame_rate=2997/100
+# Rates no container can hold are refused up front, naming the range (1e-9
+# used to pass the check and fail in the muxer).
+fps_range="must be from 1/1000 (one frame every 1000 s) to 1000 frames per second"
+expect_error fps_tiny "--fps 1e-9: $fps_range" -- "$LIGHTCONE" encode frames -o fps1.mp4 --fps 1e-9
+expect_error fps_huge "--fps 1001: $fps_range" -- "$LIGHTCONE" encode frames -o fps2.mp4 --fps 1001
+expect_error fps_junk "--fps '30fps': expected frames per second" -- "$LIGHTCONE" encode frames -o fps3.mp4 --fps 30fps
+expect_error fps_zero_den "--fps 30/0: the denominator is 0" -- "$LIGHTCONE" encode frames -o fps4.mp4 --fps 30/0
+expect_error fps_title "--fps 1e-9: $fps_range" -- "$LIGHTCONE" encode --title X --size 32x18 --fps 1e-9 -o fps5.mp4
+for f in fps1 fps2 fps3 fps4 fps5; do [ -e $f.mp4 ] && fail "$f.mp4 written for a refused --fps"; done
 # Colour survives: a flat orange frame decodes (as a player does, by the
 # stream's BT.709 tags) to its PNG's bytes within 2 codes.  A BT.601 matrix
 # under a BT.709 tag would be ~10 codes off.

@@ -103,7 +103,7 @@ TEST(encode_writer, OptionsAreCheckedAgainstTheCodec) {
   o.preset = "medium";
   EXPECT_NE(error_of<std::invalid_argument>([&] { lc::validate(o); }).find("--preset medium"), std::string::npos);
   o = {};
-  o.fps = 0;
+  o.fps = {0, 1};
   EXPECT_NE(error_of<std::invalid_argument>([&] { lc::validate(o); }).find("--fps"), std::string::npos);
   o = {};
   o.codec = Codec::prores;
@@ -114,6 +114,42 @@ TEST(encode_writer, OptionsAreCheckedAgainstTheCodec) {
             std::string::npos);
   EXPECT_NE(error_of<std::invalid_argument>([] { lc::container_for("x.avi", lc::Codec::h264); }).find("'.avi'"),
             std::string::npos);
+}
+
+TEST(encode_writer, FrameRatesAreExactFractions) {
+  using lc::FrameRate;
+  EXPECT_EQ(lc::parse_frame_rate("30", "--fps"), (FrameRate{30, 1}));
+  EXPECT_EQ(lc::parse_frame_rate("30000/1001", "--fps"), (FrameRate{30000, 1001}));
+  EXPECT_EQ(lc::parse_frame_rate("48/2", "--fps"), (FrameRate{24, 1}));  // in lowest terms
+  EXPECT_EQ(lc::parse_frame_rate("29.97", "--fps"), (FrameRate{2997, 100}));
+  EXPECT_EQ(lc::parse_frame_rate("2.5e1", "--fps"), (FrameRate{25, 1}));
+  EXPECT_EQ(lc::parse_frame_rate(".5", "--fps"), (FrameRate{1, 2}));
+  // A long decimal becomes the nearest fraction with small terms (what the
+  // renderer records for a third: "0.3333333333333333").
+  EXPECT_EQ(lc::parse_frame_rate("0.3333333333333333", "--fps"), (FrameRate{1, 3}));
+  EXPECT_EQ(lc::parse_frame_rate("29.97002997002997", "--fps"), (FrameRate{30000, 1001}));
+  // The ends of the range are allowed, beyond them not.
+  EXPECT_EQ(lc::parse_frame_rate("1/1000", "--fps"), (FrameRate{1, 1000}));
+  EXPECT_EQ(lc::parse_frame_rate("1000", "--fps"), (FrameRate{1000, 1}));
+  const std::string range = "must be from 1/1000 (one frame every 1000 s) to 1000 frames per second";
+  for (const char* bad : {"1e-9", "0", "0.0009", "1001", "1000001/1000", "1/1001", "1e400", "0/5"})
+    EXPECT_EQ(error_of<std::invalid_argument>([&] { lc::parse_frame_rate(bad, "--fps"); }),
+              std::string("--fps ") + bad + ": " + range)
+        << bad;
+  for (const char* junk : {"", "abc", "-30", "+30", "inf", "nan", "30fps", "30 ", "30/", "/2", "30/-1", "1.5/2",
+                           "30/1001/2", "0x1e", "1234567890/1"})
+    EXPECT_NE(error_of<std::invalid_argument>([&] { lc::parse_frame_rate(junk, "--fps"); })
+                  .find(std::string("--fps '") + junk + "': expected frames per second"),
+              std::string::npos)
+        << junk;
+  EXPECT_EQ(error_of<std::invalid_argument>([] { lc::parse_frame_rate("30/0", "--fps"); }), "--fps 30/0: the denominator is 0");
+  EXPECT_EQ(lc::describe(FrameRate{24, 1}), "24");
+  EXPECT_EQ(lc::describe(FrameRate{2997, 100}), "29.97");
+  EXPECT_EQ(lc::describe(FrameRate{30000, 1001}), "30000/1001 (29.97)");
+  EXPECT_EQ(lc::frame_rate_divided(FrameRate{24, 1}, 8), (FrameRate{3, 1}));
+  EXPECT_EQ(lc::frame_rate_divided(FrameRate{30000, 1001}, 10), (FrameRate{3000, 1001}));
+  EXPECT_EQ(lc::frame_rate_near(3.0), (FrameRate{3, 1}));
+  EXPECT_EQ(lc::frame_rate_near(-1.0), (FrameRate{0, 1}));
 }
 
 TEST(encode_writer, StillHoldsForTheFramesAsked) {
