@@ -98,6 +98,11 @@ int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
   fmt::print(stderr, "encode: shot {}, {} frames ({}-{}{}), {} fps ({}), {} -> {}\n", seq.shot, seq.frames.size(),
              seq.frames.front(), seq.frames.back(), step == 1 ? "" : fmt::format(" every {}", step), describe(fps), fps_source,
              settings_text(o), cmd.output.string());
+  // A size the codec refuses outright is encode_sequence's to refuse (before
+  // it decodes a frame); one that encodes but will not play everywhere is
+  // said here.
+  const auto [width, height] = image_size(seq.files.front());
+  if (const auto warning = size_warning(o.codec, width, height)) fmt::print(stderr, "encode: warning: {}\n", *warning);
   const Clock::time_point start = Clock::now();
   const EncodeResult r = encode_sequence(seq.files, o, cmd.output, progress_printer(guard, "encode", "frames"));
   const double s = std::chrono::duration<double>(Clock::now() - start).count();

@@ -24,6 +24,7 @@
 #include "frame_range.hpp"
 #include "image_size.hpp"
 #include "scene/shot.hpp"
+#include "video/encode_options.hpp"
 
 namespace lc {
 
@@ -74,6 +75,20 @@ Job load_job(const RenderCommand& cmd) {
         "--preview {}: must be between 2 and the number of stripes ({}; see --stripes)", cmd.preview, job.layout.stripes()));
   job.digest = farm::job_digest(*job.shot, job.rs, job.layout.stripes(), job.preview);
   return job;
+}
+
+// Says so when frames of this size cannot become a video with `lightcone
+// encode`'s default codec, or a video only some players play.  A warning,
+// not a refusal: large stills (prints, plates for compositing) are a use
+// of their own, and the encode refuses such frames at once anyway.
+void warn_if_not_encodable(const RenderSettings& rs) {
+  if (const auto why = size_refusal(Codec::h264, rs.width, rs.height))
+    fmt::print(stderr,
+               "render: warning: these frames cannot be encoded to video by lightcone encode ({}); they are rendered "
+               "as asked — for a video, render smaller (--size, --scale)\n",
+               *why);
+  else if (const auto warning = size_warning(Codec::h264, rs.width, rs.height))
+    fmt::print(stderr, "render: warning: lightcone encode will make an H.264 video of these frames, but {}\n", *warning);
 }
 
 // The rows a preview frame holds, top to bottom.
@@ -128,6 +143,7 @@ class WorkerStop {
 int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   WorkerStop stop_workers(mpi);
   Job job = load_job(cmd);
+  warn_if_not_encodable(job.rs);
   const ShotInfo& info = job.shot->info();
   const farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
   farm::FrameStore store(cmd.out, info.name);

@@ -174,6 +174,35 @@ Container container_for(const std::filesystem::path& out, Codec codec) {
   return c;
 }
 
+std::optional<std::string> size_refusal(Codec codec, int width, int height) {
+  // Inputs: the frames' size as rendered; output: the reason, naming the size.
+  if (width < 1 || height < 1) return fmt::format("{}x{} is not a frame size", width, height);
+  const long long w = width + width % 2, h = height + height % 2;
+  if (codec == Codec::av1 && (w < 64 || h < 64 || w > 16384 || h > 8704))
+    return fmt::format("av1 (SVT-AV1) takes frames from 64x64 to 16384x8704; these are {}x{}", width, height);
+  if (codec == Codec::h264 && (w > 16384 || h > 16384))
+    return fmt::format("libx264 takes at most 16384 pixels a side; these frames are {}x{}", width, height);
+  // FFmpeg's av_image_check_size, which every encoder applies on opening.
+  constexpr long long ffmpeg_area_limit = 2147483647 / 8;
+  if ((w + 128) * (h + 128) >= ffmpeg_area_limit)
+    return fmt::format(
+        "{}x{} frames are too large for FFmpeg's encoders, which need (W+128)x(H+128) below {} (16384x16128 or "
+        "16254x16254 at most)",
+        width, height, ffmpeg_area_limit);
+  return std::nullopt;
+}
+
+std::optional<std::string> size_warning(Codec codec, int width, int height) {
+  if (codec != Codec::h264) return std::nullopt;
+  constexpr long long level_62_macroblocks = 139264;
+  const long long macroblocks = ((width + 15) / 16) * static_cast<long long>((height + 15) / 16);
+  if (macroblocks <= level_62_macroblocks) return std::nullopt;
+  return fmt::format(
+      "{}x{} is {} macroblocks, beyond H.264's largest level (6.2: {}, e.g. 8192x4320): the video is written, but "
+      "browsers and hardware decoders refuse to play it (FFmpeg-based players such as mpv and VLC do)",
+      width, height, macroblocks, level_62_macroblocks);
+}
+
 void validate(const EncodeOptions& o) {
   // Input: options as parsed; throws naming the first bad flag.
   if (o.fps.num <= 0 || o.fps.den <= 0 || !rate_in(o.fps.num, o.fps.den, min_frame_rate, max_frame_rate))

@@ -82,6 +82,22 @@ std::string default_preset(Codec codec);    // medium (x264/x265), 4 (vp9 cpu-us
 // cannot go in it (e.g. ProRes in .mp4, H.264 in .webm).
 Container container_for(const std::filesystem::path& out, Codec codec);
 
+// Why frames of width x height (padded to even sides, as they are encoded)
+// cannot be encoded with `codec`, or nullopt when they can.  The limits:
+// FFmpeg refuses frames whose (W+128)(H+128) reaches INT_MAX/8 (its
+// av_image_check_size: 16384x16128 is the largest at 16384 wide), libx264
+// sides above 16384, SVT-AV1 frames outside 64x64 .. 16384x8704.  Checked
+// before any frame is read: an encoder refusing the size only once it
+// opens (after the first frame is decoded) cost seconds and gigabytes and
+// said "(0x0): Invalid argument".
+std::optional<std::string> size_refusal(Codec codec, int width, int height);
+
+// Why a video of width x height, though it can be written, will not play
+// everywhere, or nullopt: H.264 beyond its largest level (6.2, 139264
+// macroblocks of 16x16, 8192x4320 for instance) is written by libx264 with
+// a level it exceeds; browsers and hardware decoders refuse it.
+std::optional<std::string> size_warning(Codec codec, int width, int height);
+
 // Checks fps (min_frame_rate .. max_frame_rate), crf and preset against the
 // codec; throws std::invalid_argument naming the flag (--fps, --crf,
 // --preset) and the allowed values.

@@ -124,11 +124,8 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
   // container header, so an unwritable path fails before any encoding.
   validate(options);
   const Container container = container_for(out, options.codec);
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw std::invalid_argument(fmt::format("{}: frame size {}x{} out of range (1 to 16384)", out.string(), width, height));
-  if (options.codec == Codec::av1 && (width < 64 || height < 64))
-    throw std::invalid_argument(
-        fmt::format("{}: av1 (SVT-AV1) needs frames of at least 64x64; these are {}x{}", out.string(), width, height));
+  if (const auto why = size_refusal(options.codec, width, height))
+    throw std::invalid_argument(fmt::format("cannot write {}: {}", out.string(), *why));
   libav::quiet_logs();
   impl_ = std::make_unique<Impl>(out, width, height);
   Impl& m = *impl_;

@@ -95,6 +95,28 @@ expect_error stephole "frames 0-9 every 3: missing frame 6" -- "$LIGHTCONE" enco
 check_probe odd.mp4 width=34 height=20 pix_fmt=yuv420p nb_read_frames=3
 grep -q "padded to 34x20" odd.log || fail "padding not reported: $(cat odd.log)"
 
+# --- sizes the encoder cannot take: refused from the first frame's header --
+# png_header W H FILE: a PNG whose header says W x H and whose pixel data is
+# garbage, so only a check that reads no pixel gets past it (a 16384x16384
+# frame used to be decoded, 6.4 GB, before the encoder said "(0x0): Invalid
+# argument").  The header's CRC is gzip's (the same CRC-32), byte-reversed.
+hex_bytes() { sed 's/../\\x&/g'; }
+png_header() {
+  local body crc
+  body="49484452$(printf '%08x%08x' "$1" "$2")0802000000"  # IHDR: W, H, 8-bit RGB
+  crc=$(printf "$(hex_bytes <<<"$body")" | gzip -c | tail -c8 | head -c4 | od -An -tx1 | tr -d ' \n')
+  crc=${crc:6:2}${crc:4:2}${crc:2:2}${crc:0:2}
+  printf "$(hex_bytes <<<"89504e470d0a1a0a0000000d${body}${crc}00000004494441540000000000000000")" >"$3"
+}
+mkdir big
+png_header 16384 16384 big/big.0000.png
+iinfo big/big.0000.png | grep -q "16384 x 16384" || fail "the test's PNG header is not read as 16384x16384: $(iinfo big/big.0000.png)"
+expect_error big "big/big.0000.png: 16384x16384 frames are too large for FFmpeg's encoders" -- \
+  "$LIGHTCONE" encode big -o big.mp4
+expect_error big_title "16384x16384 frames are too large for FFmpeg's encoders" -- \
+  "$LIGHTCONE" encode --title BIG --size 16384x16384 -o bigcard.mp4
+[ -e big.mp4 ] || [ -e bigcard.mp4 ] && fail "an output was written for frames too large to encode"
+
 # --- bad inputs and outputs: clear errors, nothing left ------------------
 mkdir empty
 expect_error empty "no frames" -- "$LIGHTCONE" encode empty -o e.mp4

@@ -92,6 +92,16 @@ LUA
 expect_error bad_name "name '../evil' may only use letters, digits" -- "$LIGHTCONE" render bad_name.lua --out out
 touch not_a_dir
 expect_error out_is_file "--out not_a_dir: cannot create the output directory" -- "$LIGHTCONE" render ok.lua --out not_a_dir
+# A size lightcone encode cannot take is said at the start of a render (here
+# one that then fails at once, so nothing 16384x16384 is rendered); a
+# showcase, which always encodes, refuses it.
+expect_error big_render "--out not_a_dir/sub: cannot create the output directory" -- \
+  "$LIGHTCONE" render ok.lua --out not_a_dir/sub --size 16384x16384
+grep -q "render: warning: these frames cannot be encoded to video by lightcone encode (16384x16384 frames are too large" \
+  big_render.err || fail "no warning that 16384x16384 frames cannot be encoded: $(cat big_render.err)"
+expect_error big_showcase "--size 16384x16384: 16384x16384 frames are too large for FFmpeg's encoders" -- \
+  "$LIGHTCONE" showcase --size 16384x16384 --out big_showcase
+[ -e big_showcase ] && fail "a refused showcase created its output directory"
 
 [ ! -e out ] || [ -z "$(ls -A out)" ] || fail "failed renders left files in out/: $(ls out)"
 e2e_end

@@ -152,6 +152,42 @@ TEST(encode_writer, FrameRatesAreExactFractions) {
   EXPECT_EQ(lc::frame_rate_near(-1.0), (FrameRate{0, 1}));
 }
 
+TEST(encode_writer, SizesTheEncodersCannotTakeAreRefusedBeforeOpening) {
+  using lc::Codec;
+  // FFmpeg's av_image_check_size: (W+128)(H+128) < INT_MAX/8.
+  EXPECT_FALSE(lc::size_refusal(Codec::h264, 16384, 16128));
+  EXPECT_FALSE(lc::size_refusal(Codec::h264, 16254, 16254));
+  EXPECT_FALSE(lc::size_refusal(Codec::h264, 16253, 16253));  // padded to 16254 x 16254
+  EXPECT_TRUE(lc::size_refusal(Codec::h264, 16384, 16130));
+  EXPECT_TRUE(lc::size_refusal(Codec::h264, 16256, 16256));
+  const auto big = lc::size_refusal(Codec::h264, 16384, 16384);
+  ASSERT_TRUE(big);
+  EXPECT_NE(big->find("16384x16384 frames are too large for FFmpeg's encoders"), std::string::npos) << *big;
+  EXPECT_TRUE(lc::size_refusal(Codec::vp9, 16384, 16384));
+  // libx264 takes at most 16384 a side; SVT-AV1 64x64 to 16384x8704.
+  EXPECT_NE(lc::size_refusal(Codec::h264, 16400, 100).value_or("").find("libx264 takes at most 16384"), std::string::npos);
+  EXPECT_FALSE(lc::size_refusal(Codec::vp9, 16400, 100));
+  EXPECT_TRUE(lc::size_refusal(Codec::av1, 62, 64));
+  EXPECT_FALSE(lc::size_refusal(Codec::av1, 63, 64));  // padded to 64 x 64
+  EXPECT_FALSE(lc::size_refusal(Codec::av1, 64, 64));
+  EXPECT_FALSE(lc::size_refusal(Codec::av1, 16384, 8704));
+  EXPECT_NE(lc::size_refusal(Codec::av1, 1920, 8706).value_or("").find("64x64 to 16384x8704"), std::string::npos);
+  EXPECT_FALSE(lc::size_refusal(Codec::h264, 1, 1));
+  // Beyond H.264 level 6.2 (139264 macroblocks) it encodes, with a warning.
+  EXPECT_FALSE(lc::size_warning(Codec::h264, 8192, 4320));  // 512 x 270 = 138240 macroblocks
+  EXPECT_FALSE(lc::size_warning(Codec::h264, 4096, 2160));
+  EXPECT_NE(lc::size_warning(Codec::h264, 8192, 8192).value_or("").find("beyond H.264's largest level"),
+            std::string::npos);
+  EXPECT_FALSE(lc::size_warning(Codec::vp9, 8192, 8192));
+  // The writer refuses at once, naming the file and the limit, and leaves
+  // nothing (it used to fail inside the encoder with "(0x0): Invalid argument").
+  TempDir d;
+  const std::string message =
+      error_of<std::invalid_argument>([&] { lc::VideoWriter(d.path / "big.mp4", 16384, 16384, lc::EncodeOptions{}); });
+  EXPECT_NE(message.find("big.mp4: 16384x16384 frames are too large"), std::string::npos) << message;
+  EXPECT_EQ(d.entries(), 0u);
+}
+
 TEST(encode_writer, StillHoldsForTheFramesAsked) {
   TempDir d;
   int calls = 0, last_total = 0;
