@@ -1,11 +1,17 @@
 // The lightcone command line: parses flags (the only file that includes
 // CLI11) and hands each subcommand a plain options struct.
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "bench_command.hpp"
 #include "contact_sheet_command.hpp"
@@ -13,10 +19,63 @@
 #include "farm_bench_command.hpp"
 #include "geodesic_command.hpp"
 #include "inspect_command.hpp"
+#include "lua/table_reader.hpp"
 #include "render_command.hpp"
 #include "showcase_command.hpp"
 #include "starfield_command.hpp"
 #include "trace_command.hpp"
+
+namespace {
+
+// Whether a word on the command line is meant as a flag ("--frames",
+// "-o"), not a value that happens to start with '-' ("-1").
+bool looks_like_flag(const std::string& word) {
+  auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+  return word.size() >= 2 && word[0] == '-' && (letter(word[1]) || (word[1] == '-' && word.size() > 2 && letter(word[2])));
+}
+
+// The first word CLI11 could not place, said with what was probably meant
+// (CLI11 names neither): an unknown command and the closest one, or an
+// unknown flag of the chosen command and its closest flag.  "" when every
+// command and flag is known (the error is about something else).  Also
+// returns the chosen command, for the help hint.
+std::pair<std::string, std::string> unknown_word(CLI::App& app, int argc, char** argv) {
+  const std::vector<CLI::App*> commands = app.get_subcommands([](CLI::App*) { return true; });
+  std::vector<std::string> names;
+  for (const CLI::App* c : commands) names.push_back(c->get_name());
+  int k = 1;
+  for (; k < argc && argv[k][0] == '-'; ++k)  // the program's own flags (--help, --version)
+    if (!app.get_option_no_throw(argv[k])) return {fmt::format("unknown option {} (name a command first)", argv[k]), ""};
+  if (k == argc) return {fmt::format("no command given; the commands are {}", fmt::join(names, ", ")), ""};
+  const std::string command = argv[k];
+  const auto it = std::find(names.begin(), names.end(), command);
+  if (it == names.end()) {
+    const std::string near = lc::lua::nearest(command, names);
+    return {fmt::format("unknown command '{}'{}; the commands are {}", command,
+                        near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near), fmt::join(names, ", ")),
+            ""};
+  }
+  const CLI::App& chosen = *commands[static_cast<std::size_t>(it - names.begin())];
+  for (int i = k + 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--") break;
+    if (!looks_like_flag(word)) continue;
+    // "--out=x" names --out; "-ox" is -o with its value attached.
+    const std::string name = word[1] == '-' ? word.substr(0, word.find('=')) : word.substr(0, 2);
+    if (chosen.get_option_no_throw(name)) continue;
+    std::vector<std::string> flags;
+    for (const CLI::Option* o : chosen.get_options()) {
+      for (const std::string& l : o->get_lnames()) flags.push_back("--" + l);
+      for (const std::string& n : o->get_snames()) flags.push_back("-" + n);
+    }
+    const std::string near = lc::lua::nearest(name, flags);
+    return {fmt::format("{}: unknown option {}{}", command, name, near.empty() ? "" : fmt::format(" (did you mean {}?)", near)),
+            command};
+  }
+  return {"", command};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"lightcone: general-relativistic black-hole animation, traced along null geodesics", "lightcone"};
@@ -138,6 +197,13 @@ int main(int argc, char** argv) {
   showcase_cmd->add_flag("--force", showcase.force, "Re-render frames made from other settings or inputs (as render --force)");
   showcase_cmd->add_option("--progress", showcase.progress, "Seconds between plain progress lines (0: none)");
 
+  // Usage errors in the form of every other error, with a suggestion for a
+  // mistyped command or flag and where to find the right ones.
+  app.failure_message([&app, argc, argv](const CLI::App*, const CLI::Error& e) {
+    const auto [unknown, command] = unknown_word(app, argc, argv);
+    return fmt::format("lightcone: error: {}\nRun 'lightcone{} --help' for the {}.\n", unknown.empty() ? e.what() : unknown,
+                       command.empty() ? "" : " " + command, command.empty() ? "commands" : "options");
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -103,5 +103,16 @@ expect_error big_showcase "--size 16384x16384: 16384x16384 frames are too large 
   "$LIGHTCONE" showcase --size 16384x16384 --out big_showcase
 [ -e big_showcase ] && fail "a refused showcase created its output directory"
 
+# Usage errors look like every other error and suggest what was meant.
+expect_error typo_command "lightcone: error: unknown command 'rendr' (did you mean 'render'?)" -- "$LIGHTCONE" rendr ok.lua
+expect_error typo_flag "lightcone: error: render: unknown option --fram (did you mean --frames?)" -- \
+  "$LIGHTCONE" render ok.lua --fram 0 --out out
+expect_error typo_flag2 "lightcone: error: contact-sheet: unknown option --colums (did you mean --columns?)" -- \
+  "$LIGHTCONE" contact-sheet out -o sheet.png --colums 3
+expect_error no_command "lightcone: error: no command given; the commands are geodesic, render" -- "$LIGHTCONE"
+expect_error required "lightcone: error: --output is required" -- "$LIGHTCONE" encode out
+expect_error not_a_number "lightcone: error: Could not convert: --crf = abc" -- "$LIGHTCONE" encode out -o x.mp4 --crf abc
+grep -q "Run 'lightcone encode --help' for the options." not_a_number.err || fail "no help hint: $(cat not_a_number.err)"
+
 [ ! -e out ] || [ -z "$(ls -A out)" ] || fail "failed renders left files in out/: $(ls out)"
 e2e_end
