@@ -1,11 +1,10 @@
 #include "contact_sheet_command.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "atomic_file.hpp"
 #include "video/contact_sheet.hpp"
 #include "video/frame_sequence.hpp"
 
@@ -15,9 +14,7 @@ int run_contact_sheet(const ContactSheetCommand& cmd) {
   // Input: the parsed flags; output: the sheet, and a summary on stderr.
   // Holes in the sequence are allowed here (a sheet is for looking at
   // whatever exists); the labels show which frames are there.
-  std::string ext = cmd.output.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext != ".png") throw std::invalid_argument(fmt::format("-o {}: a contact sheet is a PNG (name it .png)", cmd.output.string()));
+  require_extension(cmd.output, ".png", "a contact sheet is a PNG");
   const FrameSequence seq = select_frame_sequence(cmd.dir, cmd.shot);
   const ContactSheetOptions o{cmd.columns, cmd.width, cmd.count};
   write_contact_sheet(seq, o, cmd.output);

@@ -103,6 +103,14 @@ expect_error big_showcase "--size 16384x16384: 16384x16384 frames are too large 
   "$LIGHTCONE" showcase --size 16384x16384 --out big_showcase
 [ -e big_showcase ] && fail "a refused showcase created its output directory"
 
+# The star field is a PNG: another extension is refused (PNG bytes were
+# written under sky.jpg), nothing is left under it.
+expect_error starfield_jpg "-o sky.jpg: the star field is written as an 8-bit sRGB PNG (name it .png)" -- \
+  "$LIGHTCONE" starfield -o sky.jpg --width 64
+[ -e sky.jpg ] && fail "starfield wrote sky.jpg"
+"$LIGHTCONE" starfield -o sky.PNG --width 64 2>/dev/null || fail "starfield -o sky.PNG"
+iinfo sky.PNG 2>&1 | grep -q "64 x   32, 3 channel, uint8 png" || fail "sky.PNG: $(iinfo sky.PNG 2>&1)"
+
 # Usage errors look like every other error and suggest what was meant.
 expect_error typo_command "lightcone: error: unknown command 'rendr' (did you mean 'render'?)" -- "$LIGHTCONE" rendr ok.lua
 expect_error typo_flag "lightcone: error: render: unknown option --fram (did you mean --frames?)" -- \
