@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "frame_files.hpp"
 #include "image/image_io.hpp"
 #include "image_size.hpp"
 #include "video/concat_videos.hpp"
@@ -90,7 +91,7 @@ int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
   if (cmd.codec) parse_codec(*cmd.codec);
   if (cmd.fps) parse_frame_rate(*cmd.fps, "--fps");
   const FrameSequence seq = select_frame_sequence(dir, cmd.shot);
-  require_complete(seq, dir);
+  require_complete(seq, dir, check_frames_current(dir, seq.shot, seq.frames, cmd.allow_stale, "encode"));
   const auto [fps, fps_source] = frame_rate(cmd, seq);
   const EncodeOptions o = encode_options(cmd, fps);
   container_for(cmd.output, o.codec);  // a wrong extension is reported before anything starts
@@ -119,10 +120,11 @@ int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
 
 // Mode --concat: videos joined without re-encoding.
 int encode_concat(const EncodeCommand& cmd, const InterruptGuard& guard) {
-  if (cmd.fps || cmd.crf || cmd.codec || cmd.preset || cmd.shot || !cmd.title.empty() || cmd.size || cmd.seconds)
+  if (cmd.fps || cmd.crf || cmd.codec || cmd.preset || cmd.shot || !cmd.title.empty() || cmd.size || cmd.seconds ||
+      cmd.allow_stale)
     throw std::invalid_argument(
-        "--concat copies the videos without re-encoding: --fps, --crf, --codec, --preset, --shot, --title, --size and "
-        "--seconds do not apply");
+        "--concat copies the videos without re-encoding: --fps, --crf, --codec, --preset, --shot, --title, --size, "
+        "--seconds and --allow-stale do not apply");
   if (cmd.inputs.empty()) throw std::invalid_argument("--concat: name the videos to join (in order)");
   std::error_code ec;
   for (const fs::path& p : cmd.inputs)
@@ -140,7 +142,8 @@ int encode_concat(const EncodeCommand& cmd, const InterruptGuard& guard) {
 int encode_title(const EncodeCommand& cmd, const InterruptGuard& guard) {
   if (!cmd.inputs.empty())
     throw std::invalid_argument("--title makes a title card: give no frame directory or videos");
-  if (cmd.shot) throw std::invalid_argument("--shot selects frames; a title card has none");
+  if (cmd.shot || cmd.allow_stale)
+    throw std::invalid_argument(fmt::format("{} selects frames; a title card has none", cmd.shot ? "--shot" : "--allow-stale"));
   if (!cmd.size) throw std::invalid_argument("--title needs --size WxH (the size of the film it goes with)");
   const auto [w, h] = parse_image_size(*cmd.size, "--size");
   if (w < 2 || h < 2 || w > max_frame_side || h > max_frame_side)

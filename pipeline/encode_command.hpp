@@ -21,6 +21,7 @@ struct EncodeCommand {
   std::optional<std::string> codec;     // default h264
   std::optional<std::string> preset;    // default per codec
   std::optional<std::string> shot;      // which shot's frames when DIR holds several
+  bool allow_stale = false;             // encode frames of other versions of the shot than the latest render's
   bool concat = false;
   std::vector<std::string> title;       // --title lines: encode a title card
   std::optional<std::string> size;      // --size WxH of the title card

@@ -150,6 +150,8 @@ int main(int argc, char** argv) {
   encode_cmd->add_option("--preset", encode.preset,
                          "Speed/quality: x264/x265 preset (default medium), vp9/av1 speed number, prores profile");
   encode_cmd->add_option("--shot", encode.shot, "The shot whose frames to encode when DIR holds several");
+  encode_cmd->add_flag("--allow-stale", encode.allow_stale,
+                       "Encode frames rendered from another version of the shot or other settings than the latest render");
   encode_cmd->add_flag("--concat", encode.concat, "Join the videos given, without re-encoding");
   encode_cmd->add_option("--title", encode.title, "Make a title card: one line of text (repeat for more lines)");
   encode_cmd->add_option("--size", encode.size, "Title card size WxH");
@@ -163,6 +165,8 @@ int main(int argc, char** argv) {
   sheet_cmd->add_option("--width", sheet.width, "Sheet width in pixels (default 1280)");
   sheet_cmd->add_option("--count", sheet.count, "Frames shown at most (default 16)");
   sheet_cmd->add_option("--shot", sheet.shot, "The shot when DIR holds several");
+  sheet_cmd->add_flag("--allow-stale", sheet.allow_stale,
+                      "Show frames rendered from another version of the shot or other settings than the latest render");
 
   lc::BenchCommand bench;
   auto* bench_cmd = app.add_subcommand(

@@ -1,5 +1,6 @@
 #include "video/frame_sequence.hpp"
 
+#include <algorithm>
 #include <numeric>
 #include <regex>
 #include <stdexcept>
@@ -102,10 +103,17 @@ std::string describe_frames(const std::vector<int>& frames, int step, int max_it
   return out;
 }
 
-void require_complete(const FrameSequence& sequence, const fs::path& dir) {
+void require_complete(const FrameSequence& sequence, const fs::path& dir, const std::vector<int>& lost) {
   // Input: a found sequence; throws when it has holes, returns otherwise.
-  const FrameSpacing s = frame_spacing(sequence.frames);
-  if (s.missing.empty()) return;
+  FrameSpacing s = frame_spacing(sequence.frames);
+  if (s.missing.empty() && lost.empty()) return;
+  if (!lost.empty()) {
+    // Lost frames between the members of a step are holes of every frame.
+    s.missing.insert(s.missing.end(), lost.begin(), lost.end());
+    std::sort(s.missing.begin(), s.missing.end());
+    s.missing.erase(std::unique(s.missing.begin(), s.missing.end()), s.missing.end());
+    s.step = 1;
+  }
   const std::string range = s.step == 1 ? fmt::format("frames {}-{}", sequence.frames.front(), sequence.frames.back())
                                         : fmt::format("frames {}-{} every {}", sequence.frames.front(),
                                                       sequence.frames.back(), s.step);

@@ -47,6 +47,9 @@ std::string describe_frames(const std::vector<int>& frames, int step, int max_it
 
 // Throws std::runtime_error when `sequence` has holes, naming the directory,
 // the shot, its range and step and the missing frames (describe_frames).
-void require_complete(const FrameSequence& sequence, const std::filesystem::path& dir);
+// `lost` adds holes known otherwise (frames the journal says were rendered
+// and whose files are gone), which need not lie on the sequence's step.
+void require_complete(const FrameSequence& sequence, const std::filesystem::path& dir,
+                      const std::vector<int>& lost = {});
 
 }  // namespace lc

@@ -89,6 +89,40 @@ mkdir stephole
 for f in 0 3 9; do cp frames/tiny.$(printf %04d $f).png stephole/; done
 expect_error stephole "frames 0-9 every 3: missing frame 6" -- "$LIGHTCONE" encode stephole -o sh.mp4
 
+# --- stale frames: a changed shot, a --force render stopped part way -------
+# 30 frames rendered, the shot changed, then a --force render that stopped
+# after frames 0-5 (deterministically: it was asked for 0-5 only).  Encode
+# and contact-sheet refuse to mix the versions, naming the old frames,
+# until the render is finished or --allow-stale is given.
+sed -e 's/frames = 12/frames = 30/' -e 's/width = 32, height = 18/width = 16, height = 10/' \
+  -e 's/name = "tiny"/name = "stale"/' tiny.lua >stale.lua
+"$LIGHTCONE" render stale.lua --out stale --progress 0 2>/dev/null || fail "render stale"
+sed -i 's/outer = 14/outer = 11/' stale.lua
+"$LIGHTCONE" render stale.lua --out stale --force --frames 0:5 --progress 0 2>stale_force.log \
+  || fail "render --force 0:5: $(cat stale_force.log)"
+expect_error stale "stale: shot stale: frames 6-29 were rendered from an earlier version of the shot" -- \
+  "$LIGHTCONE" encode stale -o stale.mp4
+grep -q -- "--allow-stale" stale.err && grep -q -- "--force" stale.err || fail "no way out named: $(cat stale.err)"
+expect_error stale_sheet "frames 6-29 were rendered from an earlier version of the shot" -- \
+  "$LIGHTCONE" contact-sheet stale -o stale.png
+[ -e stale.mp4 ] || [ -e stale.png ] && fail "stale frames were encoded or shown without --allow-stale"
+"$LIGHTCONE" encode stale -o stale.mp4 --allow-stale 2>stale_allowed.log || fail "--allow-stale: $(cat stale_allowed.log)"
+grep -q "warning: --allow-stale: using them as they are: .*frames 6-29" stale_allowed.log \
+  || fail "--allow-stale does not say what it mixes: $(cat stale_allowed.log)"
+check_probe stale.mp4 nb_read_frames=30
+# Other settings and a frame put there by hand are named too.
+mkdir stale2 && cp stale/stale.* stale2/
+"$LIGHTCONE" render stale.lua --out stale2 --force --frames 7 --size 32x20 --progress 0 2>/dev/null || fail "render 7 bigger"
+cp frames/tiny.0003.png stale2/stale.0003.png
+expect_error stale_settings "frames 0-2, 4-6, 8-29 were rendered with other settings than the latest render (32x20" -- \
+  "$LIGHTCONE" encode stale2 -o stale2.mp4
+grep -q "frame 3 was not recorded in stale.journal as finished" stale_settings.err \
+  || fail "a frame without its journal line is not named: $(cat stale_settings.err)"
+# Finished, the sequence is one version again.
+"$LIGHTCONE" render stale.lua --out stale --force --progress 0 2>/dev/null || fail "finish the --force render"
+"$LIGHTCONE" encode stale -o stale_done.mp4 2>stale_done.log || fail "encode after finishing: $(cat stale_done.log)"
+check_probe stale_done.mp4 nb_read_frames=30
+
 # --- odd sizes are padded to even ----------------------------------------
 "$LIGHTCONE" render tiny.lua --out odd --size 33x19 --frames 0:2 2>/dev/null || fail "render odd"
 "$LIGHTCONE" encode odd -o odd.mp4 2>odd.log || fail "encode odd: $(cat odd.log)"
