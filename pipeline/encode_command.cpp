@@ -39,10 +39,12 @@ std::string size_text(const fs::path& p) {
 }
 
 // The frame rate: --fps, else the "lightcone/fps" attribute of the first
-// frame's EXR (if the renderer recorded it), else 30.  Returns the value and
-// where it came from, for the summary.  Throws std::invalid_argument naming
-// --fps, or the EXR when the shot's own rate cannot be a video's.
-std::pair<FrameRate, std::string> frame_rate(const EncodeCommand& cmd, const FrameSequence& seq) {
+// frame's EXR (if the renderer recorded it), else 30 — divided by the
+// sequence's step, so a preview of every k-th frame keeps the shot's pace
+// instead of playing k times too fast.  Returns the value and where it came
+// from, for the summary.  Throws std::invalid_argument naming --fps, or the
+// EXR when the shot's own rate cannot be a video's.
+std::pair<FrameRate, std::string> frame_rate(const EncodeCommand& cmd, const FrameSequence& seq, int step) {
   if (cmd.fps) return {parse_frame_rate(*cmd.fps, "--fps"), "--fps"};
   const fs::path exr = seq.files.front().parent_path() /
                        (seq.files.front().stem().string() + ".exr");  // <shot>.<NNNN>.exr beside the PNG
@@ -56,9 +58,16 @@ std::pair<FrameRate, std::string> frame_rate(const EncodeCommand& cmd, const Fra
       // An unreadable EXR is not the encoder's business: the PNGs are its input.
     }
   }
-  if (!recorded) return {FrameRate{30, 1}, "default; --fps to change"};
-  const std::string source = fmt::format("the shot's rate (lightcone/fps of {}; --fps overrides it)", exr.string());
-  return {parse_frame_rate(*recorded, source), fmt::format("the shot, from {}", exr.filename().string())};
+  const FrameRate shot =
+      recorded ? parse_frame_rate(*recorded, fmt::format("the shot's rate (lightcone/fps of {}; --fps overrides it)",
+                                                         exr.string()))
+               : FrameRate{30, 1};
+  if (step == 1)
+    return {shot, recorded ? fmt::format("the shot, from {}", exr.filename().string()) : "default; --fps to change"};
+  return {frame_rate_divided(shot, step),
+          recorded ? fmt::format("the shot's {}, from {}, divided by the step {} to keep its pace", describe(shot),
+                                 exr.filename().string(), step)
+                   : fmt::format("the default 30 divided by the step {} to keep the pace; --fps to change", step)};
 }
 
 // The codec settings shared by every mode that encodes.
@@ -92,13 +101,12 @@ int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
   if (cmd.fps) parse_frame_rate(*cmd.fps, "--fps");
   const FrameSequence seq = select_frame_sequence(dir, cmd.shot);
   require_complete(seq, dir, check_frames_current(dir, seq.shot, seq.frames, cmd.allow_stale, "encode"));
-  const auto [fps, fps_source] = frame_rate(cmd, seq);
+  const FrameSpacing spacing = frame_spacing(seq.frames);
+  const auto [fps, fps_source] = frame_rate(cmd, seq, spacing.step);
   const EncodeOptions o = encode_options(cmd, fps);
   container_for(cmd.output, o.codec);  // a wrong extension is reported before anything starts
-  const int step = frame_spacing(seq.frames).step;
-  fmt::print(stderr, "encode: shot {}, {} frames ({}-{}{}), {} fps ({}), {} -> {}\n", seq.shot, seq.frames.size(),
-             seq.frames.front(), seq.frames.back(), step == 1 ? "" : fmt::format(" every {}", step), describe(fps), fps_source,
-             settings_text(o), cmd.output.string());
+  fmt::print(stderr, "encode: shot {}, {} frames ({}), {} fps ({}), {} -> {}\n", seq.shot, seq.frames.size(),
+             describe_range(seq.frames, spacing), describe(fps), fps_source, settings_text(o), cmd.output.string());
   // A size the codec refuses outright is encode_sequence's to refuse (before
   // it decodes a frame); one that encodes but will not play everywhere is
   // said here.

@@ -37,6 +37,7 @@ struct Job {
   std::unique_ptr<Shot> shot;
   RenderSettings rs;
   std::vector<int> frames;
+  std::optional<FrameRange> range;  // from --frames
   StripeLayout layout{1, 1};
   int preview = 0;
   std::uint64_t digest = 0;
@@ -59,8 +60,8 @@ Job load_job(const RenderCommand& cmd) {
         throw std::invalid_argument(fmt::format("frame list: frame {} is out of order or outside the shot's 0-{}",
                                                 job.frames[k], info.frames - 1));
   } else {
-    const FrameRange range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
-    job.frames = range.frames();
+    job.range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
+    job.frames = job.range->frames();
   }
   std::tie(job.rs.width, job.rs.height) = output_size(info.width, info.height, cmd.size, cmd.scale);
   job.rs.supersample = cmd.supersample.value_or(info.supersample);
@@ -144,6 +145,15 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   WorkerStop stop_workers(mpi);
   Job job = load_job(cmd);
   warn_if_not_encodable(job.rs);
+  if (job.range && job.range->last_taken() != job.range->last) {
+    const std::vector<int>& taken = job.frames;
+    const std::string list = taken.size() <= 3 ? fmt::format("{}", fmt::join(taken, ", "))
+                                               : fmt::format("{}, {}, ..., {}", taken[0], taken[1], taken.back());
+    fmt::print(stderr,
+               "render: note: --frames {} takes {}: {} is not on the step. To end the sequence on it, render --frames {} "
+               "into the same directory too (encode takes a stepped sequence with one last frame after it)\n",
+               *cmd.frames, list, job.range->last, job.range->last);
+  }
   const ShotInfo& info = job.shot->info();
   const farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
   farm::FrameStore store(cmd.out, info.name);

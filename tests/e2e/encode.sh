@@ -79,6 +79,25 @@ no_leftovers "basic encode"
 "$LIGHTCONE" encode step -o step.mp4 --fps 8 2>step.log || fail "encode step: $(cat step.log)"
 check_probe step.mp4 nb_read_frames=4 duration=0.500000
 grep -q "frames (0-9 every 3)" step.log || fail "step not reported: $(cat step.log)"
+# Without --fps a preview keeps the shot's pace: 24 fps / 3 = 8 fps (it
+# used to play at 24, three times too fast).
+"$LIGHTCONE" encode step -o step_pace.mp4 2>step_pace.log || fail "encode step at its pace: $(cat step_pace.log)"
+check_probe step_pace.mp4 nb_read_frames=4 avg_frame_rate=8/1 duration=0.500000
+grep -q "8 fps (the shot's 24, from tiny.0000.exr, divided by the step 3 to keep its pace)" step_pace.log \
+  || fail "the divided rate is not explained: $(cat step_pace.log)"
+# 11, the shot's last frame, is off the step: the render says so; rendered
+# as well, it ends the preview instead of being called a hole.
+"$LIGHTCONE" render tiny.lua --out step --frames 0:11:3 2>step_note.log || fail "render step again"
+grep -q "render: note: --frames 0:11:3 takes 0, 3, ..., 9: 11 is not on the step" step_note.log \
+  || fail "no note about the last frame: $(cat step_note.log)"
+"$LIGHTCONE" render tiny.lua --out step --frames 11 2>/dev/null || fail "render the last frame"
+"$LIGHTCONE" encode step -o step_last.mp4 2>step_last.log || fail "a stepped sequence and its last frame: $(cat step_last.log)"
+check_probe step_last.mp4 nb_read_frames=5 avg_frame_rate=8/1
+grep -q "5 frames (0-9 every 3, then 11)" step_last.log || fail "last frame not reported: $(cat step_last.log)"
+# Frames the journal says were rendered and whose files are gone are holes,
+# however regular the numbers left look (0, 9, 10 is not "every 9th, then 10").
+mkdir lost && cp frames/tiny.* lost/ && rm lost/tiny.000[1-8].* lost/tiny.0011.*
+expect_error lost "frames 0-10: missing frames 1-8" -- "$LIGHTCONE" encode lost -o lost.mp4
 
 # --- holes: refused, holes named compactly, nothing written ----------------
 mkdir holes
