@@ -16,7 +16,7 @@
 #include "video/concat_videos.hpp"
 #include "video/encode_sequence.hpp"
 #include "video/frame_sequence.hpp"
-#include "video/interrupt.hpp"
+#include "interrupt.hpp"
 #include "video/progress_printer.hpp"
 #include "video/title_card.hpp"
 

@@ -22,6 +22,7 @@
 #include "farm/store_sink.hpp"
 #include "farm/threads.hpp"
 #include "frame_range.hpp"
+#include "interrupt.hpp"
 #include "image_size.hpp"
 #include "scene/shot.hpp"
 #include "video/encode_options.hpp"
@@ -121,6 +122,17 @@ double master_cpu_seconds() {
   return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
+// `renderer` wrapped in the test hook's pause when LIGHTCONE_TEST_PAUSE_AFTER
+// asks for one, else nullptr.  `released` ends the pause: once the render
+// has noticed a signal, so an interrupted test render ends as any other
+// (the sets in hand are finished, no new one is begun).
+std::unique_ptr<farm::PausingStripeRenderer> paused_for_a_test(farm::StripeRenderer& renderer, const std::string& who,
+                                                               std::function<bool()> released) {
+  const auto sets = farm::test_pause_after();
+  if (!sets) return nullptr;
+  return std::make_unique<farm::PausingStripeRenderer>(renderer, *sets, who, std::move(released));
+}
+
 // Stops the MPI workers once, on whichever way the master leaves (they
 // wait for its word however it fails).
 class WorkerStop {
@@ -143,6 +155,9 @@ class WorkerStop {
 // but the rendering itself.
 int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   WorkerStop stop_workers(mpi);
+  // A Ctrl-C or kill from here on stops the render once the frames in hand
+  // are stored (the farm run watches for it), not mid-write.
+  InterruptGuard interrupts;
   Job job = load_job(cmd);
   warn_if_not_encodable(job.rs);
   if (job.range && job.range->last_taken() != job.range->last) {
@@ -181,10 +196,11 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   int cores = threads;
   const double cpu_at_start = master_cpu_seconds();
   std::optional<std::string> error;
+  int interrupted = 0;
   {
     // The MPI master has its cores to itself but for a worker's share:
     // writing frames in parallel keeps up with many workers.
-    farm::FarmRun run(queue, sink, mpi ? farm::master_writer_threads : 1);
+    farm::FarmRun run(queue, sink, mpi ? farm::master_writer_threads : 1, [&interrupts] { return interrupts.signal(); });
     if (mpi) {
       cores = farm::run_mpi_master(*mpi, queue, run, progress, job.digest).worker_threads;
       stop_workers.now();
@@ -195,10 +211,12 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
       const auto refusal = cmd.no_reuse ? std::nullopt : farm::memo_refusal(job.rs, 1);
       if (refusal) fmt::print(stderr, "render: {}\n", *refusal);
       farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout, !cmd.no_reuse && !refusal);
-      farm::run_local_farm(queue, run, renderer, threads, progress);
+      const auto paused = paused_for_a_test(renderer, "render", [&run] { return run.interrupted() != 0 || run.error(); });
+      farm::run_local_farm(queue, run, paused ? *paused : static_cast<farm::StripeRenderer&>(renderer), threads, progress);
     }
     run.close();
     error = run.error();
+    interrupted = run.interrupted();
   }
   progress.finish();
   const farm::QueueProgress p = queue.progress();
@@ -207,6 +225,12 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
       fmt::print(stderr, "render: stopped after {} new frame{}; finished frames are kept, the same command resumes\n",
                  p.frames_stored, p.frames_stored == 1 ? "" : "s");
     throw std::runtime_error(*error);
+  }
+  if (interrupted) {
+    fmt::print(stderr, "render: interrupted by {}: {} of {} frames done ({} in this run); run the same command again to resume\n",
+               signal_name(interrupted), plan.done.size() + static_cast<std::size_t>(p.frames_stored), job.frames.size(),
+               p.frames_stored);
+    return 128 + interrupted;
   }
   const double s = progress.elapsed();
   fmt::print(stderr, "render: done: {} frames in {:.2f} s, {} rays, {:.0f} rays/s, {:.0f} rays per core-second ({} core{}){}{}\n",
@@ -225,10 +249,14 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
 // A worker rank: loads the same job, renders what the master hands out.
 // Prints nothing: the master reports, errors included.
 int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
+  // Under mpirun a Ctrl-C reaches every rank as SIGTERM: the worker tells
+  // the master and waits for its stop, so neither hangs nor is cut off.
+  InterruptGuard interrupts;
   std::optional<std::string> setup_error;
   Job job;
   try {
     job = load_job(cmd);
+    farm::test_pause_after();  // a bad value is this rank's setup error
   } catch (const std::exception& e) {
     setup_error = e.what();
   }
@@ -243,8 +271,15 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
     const bool reuse = !cmd.no_reuse && !farm::memo_refusal(job.rs, mpi.workers_on_node());
     renderer = std::make_unique<farm::SceneStripeRenderer>(*scenes, job.rs, job.layout, reuse);
   }
-  farm::run_mpi_worker(mpi, renderer.get(), job.rs, job.layout, threads, job.digest, setup_error);
-  return 0;
+  // A worker drops the sets it holds as soon as it sees the signal, so the
+  // signal itself may end its pause.
+  const auto paused = renderer ? paused_for_a_test(*renderer, fmt::format("rank {}", mpi.rank()),
+                                                   [&interrupts] { return interrupts.signal() != 0; })
+                               : nullptr;
+  farm::StripeRenderer* used = paused ? static_cast<farm::StripeRenderer*>(paused.get()) : renderer.get();
+  const int sig = farm::run_mpi_worker(mpi, used, job.rs, job.layout, threads,
+                                       job.digest, setup_error, 2, [&interrupts] { return interrupts.signal(); });
+  return sig ? 128 + sig : 0;
 }
 
 }  // namespace

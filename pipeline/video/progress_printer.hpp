@@ -5,7 +5,7 @@
 #include <string>
 
 #include "video/encode_options.hpp"
-#include "video/interrupt.hpp"
+#include "interrupt.hpp"
 
 namespace lc {
 
