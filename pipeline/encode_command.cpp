@@ -13,10 +13,10 @@
 #include "frame_files.hpp"
 #include "image/image_io.hpp"
 #include "image_size.hpp"
+#include "interrupt.hpp"
 #include "video/concat_videos.hpp"
 #include "video/encode_sequence.hpp"
 #include "video/frame_sequence.hpp"
-#include "interrupt.hpp"
 #include "video/progress_printer.hpp"
 #include "video/title_card.hpp"
 

@@ -17,16 +17,6 @@ std::filesystem::path frame_path(const std::filesystem::path& dir, const std::st
   return dir / fmt::format("{}.{:04d}.{}", shot, frame, extension);
 }
 
-namespace {
-
-// "frame 3 was" / "frames 0-4, 7 were".
-std::string frames_were(const std::vector<int>& frames) {
-  return frames.size() == 1 ? fmt::format("frame {} was", frames[0])
-                            : fmt::format("frames {} were", farm::format_frame_list(frames));
-}
-
-}  // namespace
-
 std::vector<int> check_frames_current(const std::filesystem::path& dir, const std::string& shot,
                                       const std::vector<int>& frames, bool allow_stale, const char* command) {
   const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
@@ -43,16 +33,16 @@ std::vector<int> check_frames_current(const std::filesystem::path& dir, const st
   std::vector<std::string> reasons;
   if (!stale.other_settings.empty())
     reasons.push_back(fmt::format("{} rendered with other settings than the latest render ({})",
-                                  frames_were(stale.other_settings), latest.settings.describe()));
+                                  farm::frames_were(stale.other_settings), latest.settings.describe()));
   if (!stale.earlier_script.empty())
     reasons.push_back(fmt::format("{} rendered from an earlier version of the shot (its script or modules)",
-                                  frames_were(stale.earlier_script)));
+                                  farm::frames_were(stale.earlier_script)));
   if (!stale.earlier_sky.empty())
-    reasons.push_back(fmt::format("{} rendered with an earlier version of the sky image", frames_were(stale.earlier_sky)));
+    reasons.push_back(fmt::format("{} rendered with an earlier version of the sky image", farm::frames_were(stale.earlier_sky)));
   if (!stale.unrecorded.empty())
     reasons.push_back(fmt::format("{} not recorded in {}.journal as finished (a render stopped while writing, or the "
                                   "files were put there by hand)",
-                                  frames_were(stale.unrecorded), shot));
+                                  farm::frames_were(stale.unrecorded), shot));
   const std::string what = fmt::format("{}: shot {}: {}", dir.string(), shot, fmt::join(reasons, "; "));
   if (allow_stale) {
     fmt::print(stderr, "{}: warning: --allow-stale: using them as they are: {}\n", command, what);

@@ -22,8 +22,8 @@
 #include "farm/store_sink.hpp"
 #include "farm/threads.hpp"
 #include "frame_range.hpp"
-#include "interrupt.hpp"
 #include "image_size.hpp"
+#include "interrupt.hpp"
 #include "scene/shot.hpp"
 #include "video/encode_options.hpp"
 
@@ -154,10 +154,11 @@ class WorkerStop {
 // The local farm, or the master of an MPI farm (mpi non-null): everything
 // but the rendering itself.
 int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
-  WorkerStop stop_workers(mpi);
   // A Ctrl-C or kill from here on stops the render once the frames in hand
-  // are stored (the farm run watches for it), not mid-write.
+  // are stored (the farm run watches for it), not mid-write; the guard
+  // outlives the workers' stop, which waits for them.
   InterruptGuard interrupts;
+  WorkerStop stop_workers(mpi);
   Job job = load_job(cmd);
   warn_if_not_encodable(job.rs);
   if (job.range && job.range->last_taken() != job.range->last) {

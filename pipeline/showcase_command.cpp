@@ -9,6 +9,7 @@
 
 #include "farm/mpi_session.hpp"
 #include "frame_files.hpp"
+#include "interrupt.hpp"
 #include "render_command.hpp"
 #include "script/script_paths.hpp"
 #include "showcase_plan.hpp"
@@ -16,7 +17,6 @@
 #include "video/contact_sheet.hpp"
 #include "video/encode_sequence.hpp"
 #include "video/frame_sequence.hpp"
-#include "interrupt.hpp"
 #include "video/progress_printer.hpp"
 #include "video/title_card.hpp"
 

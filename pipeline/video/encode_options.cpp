@@ -199,7 +199,7 @@ std::optional<std::string> size_warning(Codec codec, int width, int height) {
   if (macroblocks <= level_62_macroblocks) return std::nullopt;
   return fmt::format(
       "{}x{} is {} macroblocks, beyond H.264's largest level (6.2: {}, e.g. 8192x4320): the video is written, but "
-      "browsers and hardware decoders refuse to play it (FFmpeg-based players such as mpv and VLC do)",
+      "browsers and hardware decoders refuse to play it (ffplay and other players decoding with FFmpeg do)",
       width, height, macroblocks, level_62_macroblocks);
 }
 

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "video/encode_options.hpp"
 #include "interrupt.hpp"
+#include "video/encode_options.hpp"
 
 namespace lc {
 
