@@ -34,18 +34,30 @@ bool looks_like_flag(const std::string& word) {
   return word.size() >= 2 && word[0] == '-' && (letter(word[1]) || (word[1] == '-' && word.size() > 2 && letter(word[2])));
 }
 
+// "unknown option --fram (did you mean --frames?)": `name` among the flags
+// `app` (the program, or one command) takes.
+std::string unknown_flag(const CLI::App& app, const std::string& name) {
+  std::vector<std::string> flags;
+  for (const CLI::Option* o : app.get_options()) {
+    for (const std::string& l : o->get_lnames()) flags.push_back("--" + l);
+    for (const std::string& n : o->get_snames()) flags.push_back("-" + n);
+  }
+  const std::string near = lc::lua::nearest(name, flags);
+  return fmt::format("unknown option {}{}", name, near.empty() ? "" : fmt::format(" (did you mean {}?)", near));
+}
+
 // The first word CLI11 could not place, said with what was probably meant
 // (CLI11 names neither): an unknown command and the closest one, or an
-// unknown flag of the chosen command and its closest flag.  "" when every
-// command and flag is known (the error is about something else).  Also
-// returns the chosen command, for the help hint.
+// unknown flag and the closest flag.  "" when every command and flag is
+// known (the error is about something else).  Also returns the chosen
+// command, for the help hint.
 std::pair<std::string, std::string> unknown_word(CLI::App& app, int argc, char** argv) {
   const std::vector<CLI::App*> commands = app.get_subcommands([](CLI::App*) { return true; });
   std::vector<std::string> names;
   for (const CLI::App* c : commands) names.push_back(c->get_name());
   int k = 1;
   for (; k < argc && argv[k][0] == '-'; ++k)  // the program's own flags (--help, --version)
-    if (!app.get_option_no_throw(argv[k])) return {fmt::format("unknown option {} (name a command first)", argv[k]), ""};
+    if (!app.get_option_no_throw(argv[k])) return {unknown_flag(app, argv[k]), ""};
   if (k == argc) return {fmt::format("no command given; the commands are {}", fmt::join(names, ", ")), ""};
   const std::string command = argv[k];
   const auto it = std::find(names.begin(), names.end(), command);
@@ -62,15 +74,7 @@ std::pair<std::string, std::string> unknown_word(CLI::App& app, int argc, char**
     if (!looks_like_flag(word)) continue;
     // "--out=x" names --out; "-ox" is -o with its value attached.
     const std::string name = word[1] == '-' ? word.substr(0, word.find('=')) : word.substr(0, 2);
-    if (chosen.get_option_no_throw(name)) continue;
-    std::vector<std::string> flags;
-    for (const CLI::Option* o : chosen.get_options()) {
-      for (const std::string& l : o->get_lnames()) flags.push_back("--" + l);
-      for (const std::string& n : o->get_snames()) flags.push_back("-" + n);
-    }
-    const std::string near = lc::lua::nearest(name, flags);
-    return {fmt::format("{}: unknown option {}{}", command, name, near.empty() ? "" : fmt::format(" (did you mean {}?)", near)),
-            command};
+    if (!chosen.get_option_no_throw(name)) return {command + ": " + unknown_flag(chosen, name), command};
   }
   return {"", command};
 }
