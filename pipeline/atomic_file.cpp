@@ -1,5 +1,7 @@
 #include "atomic_file.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -51,6 +53,13 @@ void write_output(const std::optional<std::filesystem::path>& path, std::string_
   }
   if (std::fwrite(data.data(), 1, data.size(), stdout) != data.size() || std::fflush(stdout) != 0)
     throw std::runtime_error(fmt::format("cannot write to standard output: {}", std::strerror(errno)));
+}
+
+void require_extension(const std::filesystem::path& path, std::string_view extension, std::string_view what) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != extension)
+    throw std::invalid_argument(fmt::format("-o {}: {} (name it {})", path.string(), what, extension));
 }
 
 }  // namespace lc

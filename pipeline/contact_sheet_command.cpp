@@ -1,11 +1,11 @@
 #include "contact_sheet_command.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "atomic_file.hpp"
+#include "frame_files.hpp"
 #include "video/contact_sheet.hpp"
 #include "video/frame_sequence.hpp"
 
@@ -14,11 +14,12 @@ namespace lc {
 int run_contact_sheet(const ContactSheetCommand& cmd) {
   // Input: the parsed flags; output: the sheet, and a summary on stderr.
   // Holes in the sequence are allowed here (a sheet is for looking at
-  // whatever exists); the labels show which frames are there.
-  std::string ext = cmd.output.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext != ".png") throw std::invalid_argument(fmt::format("-o {}: a contact sheet is a PNG (name it .png)", cmd.output.string()));
+  // whatever exists); the labels show which frames are there.  Frames of
+  // another version of the shot are not (a sheet would show a film that
+  // never was), unless --allow-stale.
+  require_extension(cmd.output, ".png", "a contact sheet is a PNG");
   const FrameSequence seq = select_frame_sequence(cmd.dir, cmd.shot);
+  check_frames_current(cmd.dir, seq.shot, seq.frames, cmd.allow_stale, "contact-sheet");
   const ContactSheetOptions o{cmd.columns, cmd.width, cmd.count};
   write_contact_sheet(seq, o, cmd.output);
   const std::size_t shown = pick_evenly(seq.files.size(), static_cast<std::size_t>(cmd.count)).size();

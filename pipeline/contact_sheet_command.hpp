@@ -17,6 +17,7 @@ struct ContactSheetCommand {
   int width = 1280;
   int count = 16;
   std::optional<std::string> shot;
+  bool allow_stale = false;  // show frames of other versions of the shot than the latest render's
 };
 
 int run_contact_sheet(const ContactSheetCommand& cmd);

@@ -6,16 +6,17 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <regex>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "frame_files.hpp"
 #include "image/image_io.hpp"
+#include "image_size.hpp"
+#include "interrupt.hpp"
 #include "video/concat_videos.hpp"
 #include "video/encode_sequence.hpp"
 #include "video/frame_sequence.hpp"
-#include "video/interrupt.hpp"
 #include "video/progress_printer.hpp"
 #include "video/title_card.hpp"
 
@@ -38,26 +39,39 @@ std::string size_text(const fs::path& p) {
 }
 
 // The frame rate: --fps, else the "lightcone/fps" attribute of the first
-// frame's EXR (if the renderer recorded it), else 30.  Returns the value and
-// where it came from, for the summary.
-std::pair<double, std::string> frame_rate(const EncodeCommand& cmd, const FrameSequence& seq) {
-  if (cmd.fps) return {*cmd.fps, "--fps"};
+// frame's EXR (if the renderer recorded it), else 30 — divided by the
+// sequence's step, so a preview of every k-th frame keeps the shot's pace
+// instead of playing k times too fast.  Returns the value and where it came
+// from, for the summary.  Throws std::invalid_argument naming --fps, or the
+// EXR when the shot's own rate cannot be a video's.
+std::pair<FrameRate, std::string> frame_rate(const EncodeCommand& cmd, const FrameSequence& seq, int step) {
+  if (cmd.fps) return {parse_frame_rate(*cmd.fps, "--fps"), "--fps"};
   const fs::path exr = seq.files.front().parent_path() /
                        (seq.files.front().stem().string() + ".exr");  // <shot>.<NNNN>.exr beside the PNG
+  std::optional<std::string> recorded;
   std::error_code ec;
   if (fs::exists(exr, ec)) {
     try {
       for (const auto& [key, value] : read_exr_metadata(exr))
-        if (key == "lightcone/fps") return {std::stod(value), fmt::format("the shot, from {}", exr.filename().string())};
+        if (key == "lightcone/fps") recorded = value;
     } catch (const std::exception&) {
       // An unreadable EXR is not the encoder's business: the PNGs are its input.
     }
   }
-  return {30.0, "default; --fps to change"};
+  const FrameRate shot =
+      recorded ? parse_frame_rate(*recorded, fmt::format("the shot's rate (lightcone/fps of {}; --fps overrides it)",
+                                                         exr.string()))
+               : FrameRate{30, 1};
+  if (step == 1)
+    return {shot, recorded ? fmt::format("the shot, from {}", exr.filename().string()) : "default; --fps to change"};
+  return {frame_rate_divided(shot, step),
+          recorded ? fmt::format("the shot's {}, from {}, divided by the step {} to keep its pace", describe(shot),
+                                 exr.filename().string(), step)
+                   : fmt::format("the default 30 divided by the step {} to keep the pace; --fps to change", step)};
 }
 
 // The codec settings shared by every mode that encodes.
-EncodeOptions encode_options(const EncodeCommand& cmd, double fps) {
+EncodeOptions encode_options(const EncodeCommand& cmd, FrameRate fps) {
   EncodeOptions o;
   o.fps = fps;
   if (cmd.codec) o.codec = parse_codec(*cmd.codec);
@@ -82,16 +96,22 @@ int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
   if (!cmd.title.empty() || cmd.size || cmd.seconds)
     throw std::invalid_argument("--size and --seconds go with --title (a title card), not with a frame directory");
   const fs::path& dir = cmd.inputs.front();
-  if (cmd.codec) parse_codec(*cmd.codec);  // a bad flag is reported before the directory is scanned
+  // A bad flag is reported before the directory is scanned.
+  if (cmd.codec) parse_codec(*cmd.codec);
+  if (cmd.fps) parse_frame_rate(*cmd.fps, "--fps");
   const FrameSequence seq = select_frame_sequence(dir, cmd.shot);
-  require_complete(seq, dir);
-  const auto [fps, fps_source] = frame_rate(cmd, seq);
+  require_complete(seq, dir, check_frames_current(dir, seq.shot, seq.frames, cmd.allow_stale, "encode"));
+  const FrameSpacing spacing = frame_spacing(seq.frames);
+  const auto [fps, fps_source] = frame_rate(cmd, seq, spacing.step);
   const EncodeOptions o = encode_options(cmd, fps);
   container_for(cmd.output, o.codec);  // a wrong extension is reported before anything starts
-  const int step = frame_spacing(seq.frames).step;
-  fmt::print(stderr, "encode: shot {}, {} frames ({}-{}{}), {:g} fps ({}), {} -> {}\n", seq.shot, seq.frames.size(),
-             seq.frames.front(), seq.frames.back(), step == 1 ? "" : fmt::format(" every {}", step), fps, fps_source,
-             settings_text(o), cmd.output.string());
+  fmt::print(stderr, "encode: shot {}, {} frames ({}), {} fps ({}), {} -> {}\n", seq.shot, seq.frames.size(),
+             describe_range(seq.frames, spacing), describe(fps), fps_source, settings_text(o), cmd.output.string());
+  // A size the codec refuses outright is encode_sequence's to refuse (before
+  // it decodes a frame); one that encodes but will not play everywhere is
+  // said here.
+  const auto [width, height] = image_size(seq.files.front());
+  if (const auto warning = size_warning(o.codec, width, height)) fmt::print(stderr, "encode: warning: {}\n", *warning);
   const Clock::time_point start = Clock::now();
   const EncodeResult r = encode_sequence(seq.files, o, cmd.output, progress_printer(guard, "encode", "frames"));
   const double s = std::chrono::duration<double>(Clock::now() - start).count();
@@ -100,18 +120,19 @@ int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
                r.width, r.height, r.encoded_width, r.encoded_height,
                r.width % 2 && r.height % 2 ? "column and row" : r.width % 2 ? "column" : "row",
                o.codec == Codec::prores ? "yuv422p10" : "yuv420p");
-  fmt::print(stderr, "encode: done: {} frames {}x{}, {:.3f} s at {:g} fps -> {} ({}) in {:.1f} s, {:.1f} frames/s\n",
-             r.frames, r.encoded_width, r.encoded_height, r.seconds, fps, cmd.output.string(), size_text(cmd.output), s,
+  fmt::print(stderr, "encode: done: {} frames {}x{}, {:.3f} s at {} fps -> {} ({}) in {:.1f} s, {:.1f} frames/s\n",
+             r.frames, r.encoded_width, r.encoded_height, r.seconds, describe(fps), cmd.output.string(), size_text(cmd.output), s,
              r.frames / std::max(s, 1e-9));
   return 0;
 }
 
 // Mode --concat: videos joined without re-encoding.
 int encode_concat(const EncodeCommand& cmd, const InterruptGuard& guard) {
-  if (cmd.fps || cmd.crf || cmd.codec || cmd.preset || cmd.shot || !cmd.title.empty() || cmd.size || cmd.seconds)
+  if (cmd.fps || cmd.crf || cmd.codec || cmd.preset || cmd.shot || !cmd.title.empty() || cmd.size || cmd.seconds ||
+      cmd.allow_stale)
     throw std::invalid_argument(
-        "--concat copies the videos without re-encoding: --fps, --crf, --codec, --preset, --shot, --title, --size and "
-        "--seconds do not apply");
+        "--concat copies the videos without re-encoding: --fps, --crf, --codec, --preset, --shot, --title, --size, "
+        "--seconds and --allow-stale do not apply");
   if (cmd.inputs.empty()) throw std::invalid_argument("--concat: name the videos to join (in order)");
   std::error_code ec;
   for (const fs::path& p : cmd.inputs)
@@ -129,24 +150,21 @@ int encode_concat(const EncodeCommand& cmd, const InterruptGuard& guard) {
 int encode_title(const EncodeCommand& cmd, const InterruptGuard& guard) {
   if (!cmd.inputs.empty())
     throw std::invalid_argument("--title makes a title card: give no frame directory or videos");
-  if (cmd.shot) throw std::invalid_argument("--shot selects frames; a title card has none");
+  if (cmd.shot || cmd.allow_stale)
+    throw std::invalid_argument(fmt::format("{} selects frames; a title card has none", cmd.shot ? "--shot" : "--allow-stale"));
   if (!cmd.size) throw std::invalid_argument("--title needs --size WxH (the size of the film it goes with)");
-  std::smatch m;
-  static const std::regex wxh(R"(([0-9]{1,5})x([0-9]{1,5}))");
-  if (!std::regex_match(*cmd.size, m, wxh))
-    throw std::invalid_argument(fmt::format("--size {}: expected WxH, e.g. 1280x720", *cmd.size));
-  const int w = std::stoi(m[1]), h = std::stoi(m[2]);
-  if (w < 2 || h < 2 || w > 16384 || h > 16384)
-    throw std::invalid_argument(fmt::format("--size {}: each side must be 2 to 16384", *cmd.size));
-  const double fps = cmd.fps.value_or(30.0);
+  const auto [w, h] = parse_image_size(*cmd.size, "--size");
+  if (w < 2 || h < 2 || w > max_frame_side || h > max_frame_side)
+    throw std::invalid_argument(fmt::format("--size {}: each side must be 2 to {}", *cmd.size, max_frame_side));
+  const FrameRate fps = cmd.fps ? parse_frame_rate(*cmd.fps, "--fps") : FrameRate{30, 1};
   const EncodeOptions o = encode_options(cmd, fps);
   const double seconds = cmd.seconds.value_or(3.0);
   if (!(seconds > 0) || seconds > 600)
     throw std::invalid_argument(fmt::format("--seconds {}: must be above 0 and at most 600", seconds));
-  const int frames = std::max(1, static_cast<int>(std::lround(seconds * fps)));
+  const int frames = std::max(1, static_cast<int>(std::lround(seconds * fps.value())));
   const EncodeResult r = encode_title_card(cmd.title, w, h, frames, o, cmd.output, progress_printer(guard, "encode", "frames"));
-  fmt::print(stderr, "encode: title card: {} frames {}x{}, {:.3f} s at {:g} fps, {} -> {} ({})\n", r.frames,
-             r.encoded_width, r.encoded_height, r.seconds, fps, settings_text(o), cmd.output.string(),
+  fmt::print(stderr, "encode: title card: {} frames {}x{}, {:.3f} s at {} fps, {} -> {} ({})\n", r.frames,
+             r.encoded_width, r.encoded_height, r.seconds, describe(fps), settings_text(o), cmd.output.string(),
              size_text(cmd.output));
   return 0;
 }

@@ -16,11 +16,12 @@ namespace lc {
 struct EncodeCommand {
   std::vector<std::filesystem::path> inputs;  // DIR; or the videos to join with --concat
   std::filesystem::path output;
-  std::optional<double> fps;            // default: the frames' "lightcone/fps" EXR attribute, else 30
+  std::optional<std::string> fps;       // "30", "29.97", "30000/1001"; default: the frames' "lightcone/fps" EXR attribute, else 30
   std::optional<int> crf;               // default per codec
   std::optional<std::string> codec;     // default h264
   std::optional<std::string> preset;    // default per codec
   std::optional<std::string> shot;      // which shot's frames when DIR holds several
+  bool allow_stale = false;             // encode frames of other versions of the shot than the latest render's
   bool concat = false;
   std::vector<std::string> title;       // --title lines: encode a title card
   std::optional<std::string> size;      // --size WxH of the title card

@@ -20,7 +20,7 @@
 #include "farm/mpi_worker.hpp"
 #include "farm/threads.hpp"
 #include "frame_files.hpp"
-#include "render_command.hpp"
+#include "image_size.hpp"
 
 namespace lc {
 

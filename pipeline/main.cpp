@@ -1,11 +1,17 @@
 // The lightcone command line: parses flags (the only file that includes
 // CLI11) and hands each subcommand a plain options struct.
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "bench_command.hpp"
 #include "contact_sheet_command.hpp"
@@ -13,10 +19,67 @@
 #include "farm_bench_command.hpp"
 #include "geodesic_command.hpp"
 #include "inspect_command.hpp"
+#include "lua/table_reader.hpp"
 #include "render_command.hpp"
 #include "showcase_command.hpp"
 #include "starfield_command.hpp"
 #include "trace_command.hpp"
+
+namespace {
+
+// Whether a word on the command line is meant as a flag ("--frames",
+// "-o"), not a value that happens to start with '-' ("-1").
+bool looks_like_flag(const std::string& word) {
+  auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+  return word.size() >= 2 && word[0] == '-' && (letter(word[1]) || (word[1] == '-' && word.size() > 2 && letter(word[2])));
+}
+
+// "unknown option --fram (did you mean --frames?)": `name` among the flags
+// `app` (the program, or one command) takes.
+std::string unknown_flag(const CLI::App& app, const std::string& name) {
+  std::vector<std::string> flags;
+  for (const CLI::Option* o : app.get_options()) {
+    for (const std::string& l : o->get_lnames()) flags.push_back("--" + l);
+    for (const std::string& n : o->get_snames()) flags.push_back("-" + n);
+  }
+  const std::string near = lc::lua::nearest(name, flags);
+  return fmt::format("unknown option {}{}", name, near.empty() ? "" : fmt::format(" (did you mean {}?)", near));
+}
+
+// The first word CLI11 could not place, said with what was probably meant
+// (CLI11 names neither): an unknown command and the closest one, or an
+// unknown flag and the closest flag.  "" when every command and flag is
+// known (the error is about something else).  Also returns the chosen
+// command, for the help hint.
+std::pair<std::string, std::string> unknown_word(CLI::App& app, int argc, char** argv) {
+  const std::vector<CLI::App*> commands = app.get_subcommands([](CLI::App*) { return true; });
+  std::vector<std::string> names;
+  for (const CLI::App* c : commands) names.push_back(c->get_name());
+  int k = 1;
+  for (; k < argc && argv[k][0] == '-'; ++k)  // the program's own flags (--help, --version)
+    if (!app.get_option_no_throw(argv[k])) return {unknown_flag(app, argv[k]), ""};
+  if (k == argc) return {fmt::format("no command given; the commands are {}", fmt::join(names, ", ")), ""};
+  const std::string command = argv[k];
+  const auto it = std::find(names.begin(), names.end(), command);
+  if (it == names.end()) {
+    const std::string near = lc::lua::nearest(command, names);
+    return {fmt::format("unknown command '{}'{}; the commands are {}", command,
+                        near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near), fmt::join(names, ", ")),
+            ""};
+  }
+  const CLI::App& chosen = *commands[static_cast<std::size_t>(it - names.begin())];
+  for (int i = k + 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--") break;
+    if (!looks_like_flag(word)) continue;
+    // "--out=x" names --out; "-ox" is -o with its value attached.
+    const std::string name = word[1] == '-' ? word.substr(0, word.find('=')) : word.substr(0, 2);
+    if (!chosen.get_option_no_throw(name)) return {command + ": " + unknown_flag(chosen, name), command};
+  }
+  return {"", command};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"lightcone: general-relativistic black-hole animation, traced along null geodesics", "lightcone"};
@@ -85,12 +148,14 @@ int main(int argc, char** argv) {
       "encode", "Encode a shot's PNG frames to video (H.264 MP4 by default), join videos, or make a title card");
   encode_cmd->add_option("inputs", encode.inputs, "Frame directory; with --concat, the videos to join in order");
   encode_cmd->add_option("-o,--output", encode.output, "Video file to write (.mp4, .mov, .mkv, .webm)")->required();
-  encode_cmd->add_option("--fps", encode.fps, "Frames per second (default: the shot's if recorded, else 30)");
+  encode_cmd->add_option("--fps", encode.fps, "Frames per second: 30, 29.97 or a fraction such as 30000/1001 (default: the shot's if recorded, else 30)");
   encode_cmd->add_option("--crf", encode.crf, "Constant quality: lower is better (default h264 18, hevc 22, vp9 24, av1 30)");
   encode_cmd->add_option("--codec", encode.codec, "h264 (default), hevc, vp9, av1 or prores");
   encode_cmd->add_option("--preset", encode.preset,
                          "Speed/quality: x264/x265 preset (default medium), vp9/av1 speed number, prores profile");
   encode_cmd->add_option("--shot", encode.shot, "The shot whose frames to encode when DIR holds several");
+  encode_cmd->add_flag("--allow-stale", encode.allow_stale,
+                       "Encode frames rendered from another version of the shot or other settings than the latest render");
   encode_cmd->add_flag("--concat", encode.concat, "Join the videos given, without re-encoding");
   encode_cmd->add_option("--title", encode.title, "Make a title card: one line of text (repeat for more lines)");
   encode_cmd->add_option("--size", encode.size, "Title card size WxH");
@@ -104,6 +169,8 @@ int main(int argc, char** argv) {
   sheet_cmd->add_option("--width", sheet.width, "Sheet width in pixels (default 1280)");
   sheet_cmd->add_option("--count", sheet.count, "Frames shown at most (default 16)");
   sheet_cmd->add_option("--shot", sheet.shot, "The shot when DIR holds several");
+  sheet_cmd->add_flag("--allow-stale", sheet.allow_stale,
+                      "Show frames rendered from another version of the shot or other settings than the latest render");
 
   lc::BenchCommand bench;
   auto* bench_cmd = app.add_subcommand(
@@ -138,6 +205,13 @@ int main(int argc, char** argv) {
   showcase_cmd->add_flag("--force", showcase.force, "Re-render frames made from other settings or inputs (as render --force)");
   showcase_cmd->add_option("--progress", showcase.progress, "Seconds between plain progress lines (0: none)");
 
+  // Usage errors in the form of every other error, with a suggestion for a
+  // mistyped command or flag and where to find the right ones.
+  app.failure_message([&app, argc, argv](const CLI::App*, const CLI::Error& e) {
+    const auto [unknown, command] = unknown_word(app, argc, argv);
+    return fmt::format("lightcone: error: {}\nRun 'lightcone{} --help' for the {}.\n", unknown.empty() ? e.what() : unknown,
+                       command.empty() ? "" : " " + command, command.empty() ? "commands" : "options");
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -22,28 +22,12 @@
 #include "farm/store_sink.hpp"
 #include "farm/threads.hpp"
 #include "frame_range.hpp"
+#include "image_size.hpp"
+#include "interrupt.hpp"
 #include "scene/shot.hpp"
+#include "video/encode_options.hpp"
 
 namespace lc {
-
-std::pair<int, int> output_size(int width, int height, const std::optional<std::string>& size, double scale) {
-  if (size) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(size->c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
-      throw std::invalid_argument(fmt::format("--size '{}': expected WxH, e.g. 1280x720", *size));
-    width = w;
-    height = h;
-  }
-  if (!(scale > 0.0) || !std::isfinite(scale))
-    throw std::invalid_argument(fmt::format("--scale {}: must be a positive number", scale));
-  width = static_cast<int>(std::lround(width * scale));
-  height = static_cast<int>(std::lround(height * scale));
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw std::invalid_argument(fmt::format("image size {}x{} is out of range (1 to 16384 a side; check --size and --scale)",
-                                            width, height));
-  return {width, height};
-}
 
 namespace {
 
@@ -54,6 +38,7 @@ struct Job {
   std::unique_ptr<Shot> shot;
   RenderSettings rs;
   std::vector<int> frames;
+  std::optional<FrameRange> range;  // from --frames
   StripeLayout layout{1, 1};
   int preview = 0;
   std::uint64_t digest = 0;
@@ -76,8 +61,8 @@ Job load_job(const RenderCommand& cmd) {
         throw std::invalid_argument(fmt::format("frame list: frame {} is out of order or outside the shot's 0-{}",
                                                 job.frames[k], info.frames - 1));
   } else {
-    const FrameRange range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
-    job.frames = range.frames();
+    job.range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
+    job.frames = job.range->frames();
   }
   std::tie(job.rs.width, job.rs.height) = output_size(info.width, info.height, cmd.size, cmd.scale);
   job.rs.supersample = cmd.supersample.value_or(info.supersample);
@@ -92,6 +77,20 @@ Job load_job(const RenderCommand& cmd) {
         "--preview {}: must be between 2 and the number of stripes ({}; see --stripes)", cmd.preview, job.layout.stripes()));
   job.digest = farm::job_digest(*job.shot, job.rs, job.layout.stripes(), job.preview);
   return job;
+}
+
+// Says so when frames of this size cannot become a video with `lightcone
+// encode`'s default codec, or a video only some players play.  A warning,
+// not a refusal: large stills (prints, plates for compositing) are a use
+// of their own, and the encode refuses such frames at once anyway.
+void warn_if_not_encodable(const RenderSettings& rs) {
+  if (const auto why = size_refusal(Codec::h264, rs.width, rs.height))
+    fmt::print(stderr,
+               "render: warning: these frames cannot be encoded to video by lightcone encode ({}); they are rendered "
+               "as asked — for a video, render smaller (--size, --scale)\n",
+               *why);
+  else if (const auto warning = size_warning(Codec::h264, rs.width, rs.height))
+    fmt::print(stderr, "render: warning: lightcone encode will make an H.264 video of these frames, but {}\n", *warning);
 }
 
 // The rows a preview frame holds, top to bottom.
@@ -123,6 +122,17 @@ double master_cpu_seconds() {
   return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
+// `renderer` wrapped in the test hook's pause when LIGHTCONE_TEST_PAUSE_AFTER
+// asks for one, else nullptr.  `released` ends the pause: once the render
+// has noticed a signal, so an interrupted test render ends as any other
+// (the sets in hand are finished, no new one is begun).
+std::unique_ptr<farm::PausingStripeRenderer> paused_for_a_test(farm::StripeRenderer& renderer, const std::string& who,
+                                                               std::function<bool()> released) {
+  const auto sets = farm::test_pause_after();
+  if (!sets) return nullptr;
+  return std::make_unique<farm::PausingStripeRenderer>(renderer, *sets, who, std::move(released));
+}
+
 // Stops the MPI workers once, on whichever way the master leaves (they
 // wait for its word however it fails).
 class WorkerStop {
@@ -144,8 +154,22 @@ class WorkerStop {
 // The local farm, or the master of an MPI farm (mpi non-null): everything
 // but the rendering itself.
 int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
+  // A Ctrl-C or kill from here on stops the render once the frames in hand
+  // are stored (the farm run watches for it), not mid-write; the guard
+  // outlives the workers' stop, which waits for them.
+  InterruptGuard interrupts;
   WorkerStop stop_workers(mpi);
   Job job = load_job(cmd);
+  warn_if_not_encodable(job.rs);
+  if (job.range && job.range->last_taken() != job.range->last) {
+    const std::vector<int>& taken = job.frames;
+    const std::string list = taken.size() <= 3 ? fmt::format("{}", fmt::join(taken, ", "))
+                                               : fmt::format("{}, {}, ..., {}", taken[0], taken[1], taken.back());
+    fmt::print(stderr,
+               "render: note: --frames {} takes {}: {} is not on the step. To end the sequence on it, render --frames {} "
+               "into the same directory too (encode takes a stepped sequence with one last frame after it)\n",
+               *cmd.frames, list, job.range->last, job.range->last);
+  }
   const ShotInfo& info = job.shot->info();
   const farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
   farm::FrameStore store(cmd.out, info.name);
@@ -173,10 +197,11 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   int cores = threads;
   const double cpu_at_start = master_cpu_seconds();
   std::optional<std::string> error;
+  int interrupted = 0;
   {
     // The MPI master has its cores to itself but for a worker's share:
     // writing frames in parallel keeps up with many workers.
-    farm::FarmRun run(queue, sink, mpi ? farm::master_writer_threads : 1);
+    farm::FarmRun run(queue, sink, mpi ? farm::master_writer_threads : 1, [&interrupts] { return interrupts.signal(); });
     if (mpi) {
       cores = farm::run_mpi_master(*mpi, queue, run, progress, job.digest).worker_threads;
       stop_workers.now();
@@ -187,10 +212,12 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
       const auto refusal = cmd.no_reuse ? std::nullopt : farm::memo_refusal(job.rs, 1);
       if (refusal) fmt::print(stderr, "render: {}\n", *refusal);
       farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout, !cmd.no_reuse && !refusal);
-      farm::run_local_farm(queue, run, renderer, threads, progress);
+      const auto paused = paused_for_a_test(renderer, "render", [&run] { return run.interrupted() != 0 || run.error(); });
+      farm::run_local_farm(queue, run, paused ? *paused : static_cast<farm::StripeRenderer&>(renderer), threads, progress);
     }
     run.close();
     error = run.error();
+    interrupted = run.interrupted();
   }
   progress.finish();
   const farm::QueueProgress p = queue.progress();
@@ -199,6 +226,12 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
       fmt::print(stderr, "render: stopped after {} new frame{}; finished frames are kept, the same command resumes\n",
                  p.frames_stored, p.frames_stored == 1 ? "" : "s");
     throw std::runtime_error(*error);
+  }
+  if (interrupted) {
+    fmt::print(stderr, "render: interrupted by {}: {} of {} frames done ({} in this run); run the same command again to resume\n",
+               signal_name(interrupted), plan.done.size() + static_cast<std::size_t>(p.frames_stored), job.frames.size(),
+               p.frames_stored);
+    return 128 + interrupted;
   }
   const double s = progress.elapsed();
   fmt::print(stderr, "render: done: {} frames in {:.2f} s, {} rays, {:.0f} rays/s, {:.0f} rays per core-second ({} core{}){}{}\n",
@@ -217,10 +250,14 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
 // A worker rank: loads the same job, renders what the master hands out.
 // Prints nothing: the master reports, errors included.
 int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
+  // Under mpirun a Ctrl-C reaches every rank as SIGTERM: the worker tells
+  // the master and waits for its stop, so neither hangs nor is cut off.
+  InterruptGuard interrupts;
   std::optional<std::string> setup_error;
   Job job;
   try {
     job = load_job(cmd);
+    farm::test_pause_after();  // a bad value is this rank's setup error
   } catch (const std::exception& e) {
     setup_error = e.what();
   }
@@ -235,8 +272,15 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
     const bool reuse = !cmd.no_reuse && !farm::memo_refusal(job.rs, mpi.workers_on_node());
     renderer = std::make_unique<farm::SceneStripeRenderer>(*scenes, job.rs, job.layout, reuse);
   }
-  farm::run_mpi_worker(mpi, renderer.get(), job.rs, job.layout, threads, job.digest, setup_error);
-  return 0;
+  // A worker drops the sets it holds as soon as it sees the signal, so the
+  // signal itself may end its pause.
+  const auto paused = renderer ? paused_for_a_test(*renderer, fmt::format("rank {}", mpi.rank()),
+                                                   [&interrupts] { return interrupts.signal() != 0; })
+                               : nullptr;
+  farm::StripeRenderer* used = paused ? static_cast<farm::StripeRenderer*>(paused.get()) : renderer.get();
+  const int sig = farm::run_mpi_worker(mpi, used, job.rs, job.layout, threads,
+                                       job.digest, setup_error, 2, [&interrupts] { return interrupts.signal(); });
+  return sig ? 128 + sig : 0;
 }
 
 }  // namespace

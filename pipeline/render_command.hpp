@@ -38,8 +38,4 @@ int run_render(const RenderCommand& cmd);
 // master is done with it.  Every rank must call it with the same command.
 int render_in_session(const RenderCommand& cmd, const farm::MpiSession& mpi);
 
-// Image size after --size and --scale, for render and trace alike.  Throws
-// std::invalid_argument naming the flag.
-std::pair<int, int> output_size(int width, int height, const std::optional<std::string>& size, double scale);
-
 }  // namespace lc

@@ -9,6 +9,7 @@
 
 #include "farm/mpi_session.hpp"
 #include "frame_files.hpp"
+#include "interrupt.hpp"
 #include "render_command.hpp"
 #include "script/script_paths.hpp"
 #include "showcase_plan.hpp"
@@ -16,7 +17,6 @@
 #include "video/contact_sheet.hpp"
 #include "video/encode_sequence.hpp"
 #include "video/frame_sequence.hpp"
-#include "video/interrupt.hpp"
 #include "video/progress_printer.hpp"
 #include "video/title_card.hpp"
 
@@ -60,11 +60,12 @@ FrameSequence rendered_frames(const SequencePlan& s, const ShowcaseLayout& layou
   return seq;
 }
 
-// Renders every sequence on every rank.  The master returns normally or
-// throws the first failure; a worker returns false when the master failed
-// (it has nothing more to do), true when all went well.
-bool render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const ShowcaseCommand& cmd,
-                const farm::MpiSession& mpi) {
+// Renders every sequence on every rank.  Returns 0 when all went well, else
+// the exit status of an interrupted render (128 + the signal; the master
+// has said what it kept), or -1 on a worker whose master failed (it has
+// nothing more to do); the master throws the first failure.
+int render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const ShowcaseCommand& cmd,
+               const farm::MpiSession& mpi) {
   const bool master = mpi.rank() == 0;
   for (std::size_t k = 0; k < plan.sequences.size(); ++k) {
     const SequencePlan& s = plan.sequences[k];
@@ -82,18 +83,20 @@ bool render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const Sh
       fmt::print(stderr, "showcase: [{}/{}] rendering {}: {} of its {} frames\n", k + 1, plan.sequences.size(), s.name,
                  s.frames.size(), s.shot_frames);
     std::exception_ptr failure;
+    int status = 0;
     try {
-      render_in_session(rc, mpi);
+      status = render_in_session(rc, mpi);
     } catch (...) {
       failure = std::current_exception();
     }
     // Workers learn whether the master is going on to the next sequence.
-    const bool go_on = mpi.broadcast_from_master(failure == nullptr);
+    const bool go_on = mpi.broadcast_from_master(failure == nullptr && status == 0);
     if (master && failure) std::rethrow_exception(failure);
-    if (!go_on) return false;
+    if (status != 0) return status;
+    if (!go_on) return -1;
     if (failure) std::rethrow_exception(failure);  // a worker's own failure after the master succeeded
   }
-  return true;
+  return 0;
 }
 
 // The card's lines, or as many of the first as fit a small frame (a tiny
@@ -119,10 +122,9 @@ std::string size_text(const fs::path& p) {
 
 // Encodes the sequences, their cards and sheets, and joins the film (the
 // master only, after every frame is stored).
-void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout) {
-  InterruptGuard guard;
+void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const InterruptGuard& guard) {
   EncodeOptions o;
-  o.fps = plan.fps;
+  o.fps = frame_rate_near(plan.fps);
   // At least 4 frames: H.264's B-frames make a clip's decode times start up
   // to 2 frames before 0, and they must not reach back into the previous clip.
   const int card_frames = std::max(4, static_cast<int>(std::lround(title_seconds * plan.fps)));
@@ -175,9 +177,17 @@ int run_showcase(const ShowcaseCommand& cmd) {
                plan.sequences.size(), frames, fmt::format("{}x{}", plan.width, plan.height), plan.fps,
                layout.root.string());
   }
-  if (!render_all(plan, layout, cmd, mpi) || !master) return 0;
+  // One guard for the whole film: a Ctrl-C while rendering stops the
+  // render as `render` does (frames kept), while encoding between frames.
+  InterruptGuard interrupts;
+  const int rendered = render_all(plan, layout, cmd, mpi);
+  if (rendered > 0) {
+    if (master) fmt::print(stderr, "showcase: stopped; the same command resumes\n");
+    return rendered;
+  }
+  if (rendered < 0 || !master) return 0;
   try {
-    encode_all(plan, layout);
+    encode_all(plan, layout, interrupts);
   } catch (const Interrupted& e) {
     fmt::print(stderr, "showcase: {}; the frames are kept, the same command resumes\n", e.what());
     return 128 + e.signal;

@@ -5,9 +5,10 @@
 
 #include <fmt/format.h>
 
-#include "render_command.hpp"
+#include "image_size.hpp"
 #include "scene/shot.hpp"
 #include "video/contact_sheet.hpp"
+#include "video/encode_options.hpp"
 
 namespace lc {
 
@@ -48,8 +49,15 @@ ShowcasePlan plan_showcase(const ShowcaseSettings& settings, const fs::path& sho
   if (!(rate >= 0.01 && rate <= 240))
     throw std::invalid_argument(fmt::format("--rate {}: must be between 0.01 and 240 frames per second of story", rate));
   std::optional<std::pair<int, int>> size;
-  if (settings.size) size = output_size(1, 1, settings.size, 1.0);
-  else if (preview) size = {preview_width, preview_height};
+  if (settings.size) {
+    size = output_size(1, 1, settings.size, 1.0);
+    // The showcase always makes a video: a size H.264 cannot take would
+    // only be refused after hours of rendering.
+    if (const auto why = size_refusal(Codec::h264, size->first, size->second))
+      throw std::invalid_argument(fmt::format("--size {}: {}", *settings.size, *why));
+  } else if (preview) {
+    size = {preview_width, preview_height};
+  }
   ShowcasePlan plan;
   plan.opening = {"LIGHTCONE", "GENERAL-RELATIVISTIC BLACK HOLE VISUALIZATION",
                   "AFTER MULLER, BOBLEST AND WEISKOPF"};

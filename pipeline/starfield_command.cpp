@@ -4,11 +4,15 @@
 
 #include <fmt/format.h>
 
+#include "atomic_file.hpp"
 #include "image/image.hpp"
 
 namespace lc {
 
 int run_starfield(const StarfieldCommand& cmd) {
+  // PNG only: the sky texture's exact 8-bit codes (a JPEG would change them;
+  // writing PNG bytes under another format's name misled every viewer).
+  require_extension(cmd.output, ".png", "the star field is written as an 8-bit sRGB PNG");
   if (cmd.width < 64 || cmd.width > 16384 || cmd.width % 2 != 0)
     throw std::invalid_argument(fmt::format("--width {}: must be even, between 64 and 16384", cmd.width));
   // Written beside the target and renamed, like every output.

@@ -9,7 +9,7 @@
 #include "frame_range.hpp"
 #include "geodesic_csv.hpp"
 #include "render/scene_builder.hpp"
-#include "render_command.hpp"
+#include "image_size.hpp"
 #include "render/trace.hpp"
 #include "scene/shot.hpp"
 
@@ -26,10 +26,7 @@ int run_trace(const TraceCommand& cmd) {
   const ShotInfo& info = shot.info();
   const int f = parse_frame_range(std::to_string(cmd.frame), info.frames, "--frame").first;
   const auto [width, height] = output_size(info.width, info.height, cmd.size, cmd.scale);
-  int i = 0, j = 0;
-  char extra = 0;
-  if (std::sscanf(cmd.pixel.c_str(), "%d,%d%c", &i, &j, &extra) != 2)
-    throw std::invalid_argument(fmt::format("--pixel '{}': expected I,J (column from the left, row from the top)", cmd.pixel));
+  const auto [i, j] = parse_pixel(cmd.pixel, "--pixel");
   if (i < 0 || i >= width || j < 0 || j >= height)
     throw std::invalid_argument(fmt::format("--pixel {},{}: outside the {}x{} image", i, j, width, height));
 

@@ -258,6 +258,17 @@ ImageMetadata read_exr_metadata(const std::filesystem::path& path) {
   return metadata;
 }
 
+// Opens by content like the reader, but stops at the header.
+std::pair<int, int> image_size(const std::filesystem::path& path) {
+  constexpr std::string_view what = "cannot read image";
+  check_readable(path, what);
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string());
+  if (!in) fail(what, path, "not an image OpenImageIO can read (" + oiio_reason(OIIO::geterror()) + ")");
+  const OIIO::ImageSpec& spec = in->spec();
+  check_size(spec.width, spec.height, what, path);
+  return {spec.width, spec.height};
+}
+
 // The shared reader, with messages that say "image".
 FrameImage read_image_linear(const std::filesystem::path& path) {
   return detail::read_linear_rgb(path, "cannot read image");

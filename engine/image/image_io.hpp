@@ -47,6 +47,12 @@ FrameImage read_exr(const std::filesystem::path& path);
 // any OpenImageIO or OpenEXR add themselves), in file order.
 ImageMetadata read_exr_metadata(const std::filesystem::path& path);
 
+// The width and height of any image OpenImageIO understands, from its
+// header alone (no pixel is decoded: a check of a 16384x16384 frame costs
+// what one of 16x16 does).  Throws like read_image_linear for a missing or
+// unreadable file, zero size, or a side above max_image_side.
+std::pair<int, int> image_size(const std::filesystem::path& path);
+
 // Reads any image OpenImageIO understands into linear RGB (layers empty).
 // Colour: the file's colour-space tag decides (sRGB, linear, gamma n); with
 // no usable tag integer data is taken as sRGB and floating point as linear.

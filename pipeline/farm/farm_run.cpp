@@ -2,7 +2,8 @@
 
 namespace lc::farm {
 
-FarmRun::FarmRun(WorkQueue& queue, FrameSink& sink, int writers) : queue_(queue), sink_(sink) {
+FarmRun::FarmRun(WorkQueue& queue, FrameSink& sink, int writers, std::function<int()> signal_received)
+    : queue_(queue), sink_(sink), signal_received_(std::move(signal_received)) {
   for (int k = 0; k < std::max(1, writers); ++k) writers_.emplace_back([this] { writer_loop(); });
 }
 
@@ -32,17 +33,40 @@ std::optional<std::string> FarmRun::error() const {
   return error_;
 }
 
-bool FarmRun::over() const {
+void FarmRun::interrupt(int signal) {
   {
     std::lock_guard lock(mutex_);
-    if (error_) return true;
+    if (interrupted_ == 0) interrupted_ = signal;
+  }
+  queue_.stop();
+  changed_.notify_all();
+}
+
+int FarmRun::interrupted() const {
+  std::lock_guard lock(mutex_);
+  return interrupted_;
+}
+
+void FarmRun::notice_signal() {
+  if (!signal_received_) return;
+  if (const int sig = signal_received_(); sig != 0) interrupt(sig);
+}
+
+bool FarmRun::over() {
+  notice_signal();
+  {
+    std::lock_guard lock(mutex_);
+    if (error_ || interrupted_) return true;
   }
   return queue_.all_stored();
 }
 
 void FarmRun::wait(std::chrono::milliseconds timeout) {
-  std::unique_lock lock(mutex_);
-  changed_.wait_for(lock, timeout);
+  {
+    std::unique_lock lock(mutex_);
+    changed_.wait_for(lock, timeout);
+  }
+  notice_signal();
 }
 
 // Each writer thread stores frames in completion order until closed and empty.  After its own

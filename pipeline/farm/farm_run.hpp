@@ -6,6 +6,7 @@
 
 #include <condition_variable>
 #include <deque>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -33,8 +34,9 @@ class FarmRun {
  public:
   // `writers` threads store frames in parallel (encoding and syncing a
   // frame takes a quarter of a second at 1280x720: a master feeding many
-  // workers needs more than one).
-  FarmRun(WorkQueue& queue, FrameSink& sink, int writers = 1);
+  // workers needs more than one).  `signal_received` (may be empty) says
+  // which signal asked the run to stop (0: none); over() and wait() look.
+  FarmRun(WorkQueue& queue, FrameSink& sink, int writers = 1, std::function<int()> signal_received = {});
   ~FarmRun();  // close()s
   FarmRun(const FarmRun&) = delete;
   FarmRun& operator=(const FarmRun&) = delete;
@@ -45,9 +47,17 @@ class FarmRun {
   // Records the first error and stops the queue; later errors are dropped.
   void fail(const std::string& message);
   std::optional<std::string> error() const;
-  // Every frame stored, or an error recorded.
-  bool over() const;
-  // Waits until something changes (a frame stored, an error) or `timeout`.
+  // Stops the queue because a user asked (Ctrl-C, kill; here or on a
+  // worker): no more sets are handed out, the frames complete are still
+  // stored (close()), and it is not an error.  The first signal is kept.
+  void interrupt(int signal);
+  // The signal that stopped the run, 0 if none.
+  int interrupted() const;
+  // Every frame stored, or an error or interruption recorded.  Notices a
+  // signal first.
+  bool over();
+  // Waits until something changes (a frame stored, an error) or `timeout`,
+  // then notices a signal.
   void wait(std::chrono::milliseconds timeout);
   // Lets the writer store what it holds (unless it failed itself), then
   // joins it.
@@ -55,9 +65,12 @@ class FarmRun {
 
  private:
   void writer_loop();
+  void notice_signal();
 
   WorkQueue& queue_;
   FrameSink& sink_;
+  std::function<int()> signal_received_;
+  int interrupted_ = 0;
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<CompletedFrame> pending_;

@@ -119,7 +119,8 @@ void FrameStore::note_inputs(const std::map<std::string, std::string>& files) {
 }
 
 void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata,
-                             const FrameSettings& settings, const std::string& inputs, long rays) {
+                             const FrameSettings& settings, const std::string& inputs, const InputParts& parts,
+                             long rays) {
   with_space_hint(dir_, [&] {
     write_verified(frame_path(dir_, shot_, frame, "exr"), FrameFormat::exr, image, metadata);
     write_verified(frame_path(dir_, shot_, frame, "png"), FrameFormat::png, image);
@@ -129,6 +130,7 @@ void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMeta
   jf.frame = frame;
   jf.settings = settings;
   jf.inputs = inputs;
+  jf.parts = parts;
   jf.rays = rays;
   const auto exr = size_of(frame_path(dir_, shot_, frame, "exr"));
   const auto png = size_of(frame_path(dir_, shot_, frame, "png"));

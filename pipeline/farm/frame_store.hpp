@@ -57,7 +57,7 @@ class FrameStore {
   // naming the file (a full disk, a vanished directory).  Thread-safe for
   // different frames (the journal appends are serialised).
   void write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata, const FrameSettings& settings,
-                   const std::string& inputs, long rays);
+                   const std::string& inputs, const InputParts& parts, long rays);
 
   // Writes DIR/preview/<shot>.<NNNN>.png atomically from a frame of which
   // only `rendered` rows are filled: every other row is copied from the

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -79,6 +80,15 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
   }
   if (inputs->size() != 16) return std::nullopt;
   jf.inputs = *inputs;
+  // Written since encode checks for stale frames (both, or neither).
+  if (const std::string* script = get("script")) {
+    if (script->size() != 16) return std::nullopt;
+    jf.parts.script = *script;
+    if (const std::string* sky = get("sky")) {
+      if (sky->size() != 16) return std::nullopt;
+      jf.parts.sky = *sky;
+    }
+  }
   return jf;
 }
 
@@ -92,9 +102,12 @@ std::string FrameSettings::describe() const {
 std::string journal_header_line() { return with_check(header); }
 
 std::string journal_frame_line(const JournalFrame& f) {
-  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={} inputs={} exr={} png={} rays={}",
+  // The parts go only where known (a sky only with a script, as parse_frame reads them).
+  const std::string parts = f.parts.script.empty() ? ""
+                            : " script=" + f.parts.script + (f.parts.sky.empty() ? "" : " sky=" + f.parts.sky);
+  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={} inputs={}{} exr={} png={} rays={}",
                                 f.frame, f.settings.width, f.settings.height, f.settings.supersample,
-                                f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", f.inputs,
+                                f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", f.inputs, parts,
                                 f.exr_bytes, f.png_bytes, f.rays));
 }
 
@@ -139,6 +152,7 @@ JournalContents parse_journal(const std::string& text, const std::string& name) 
       out.inputs[content->substr(p + 6)] = content->substr(h + 5, p - h - 5);
     } else if (auto jf = parse_frame(*content)) {
       out.frames[jf->frame] = *jf;
+      out.last_frame = jf->frame;
     } else {
       ++out.bad_lines;
       continue;
@@ -146,6 +160,34 @@ JournalContents parse_journal(const std::string& text, const std::string& name) 
     out.valid_bytes = pos;
   }
   // A bad line after the last good one is a torn tail too: cut it off.
+  return out;
+}
+
+StaleFrames stale_frames(const JournalContents& journal, const std::map<int, std::uintmax_t>& png_sizes) {
+  StaleFrames out;
+  if (journal.last_frame < 0 || png_sizes.empty()) return out;
+  const JournalFrame& latest = journal.frames.at(journal.last_frame);
+  std::set<std::string> latest_hashes;  // of every input file, as the last render to see it recorded it
+  for (const auto& [path, hash] : journal.inputs) latest_hashes.insert(hash);
+  // Why `jf` was made otherwise than the latest render, as the list it goes in.
+  auto made_otherwise = [&](const JournalFrame& jf) -> std::vector<int>* {
+    if (!(jf.settings == latest.settings)) return &out.other_settings;
+    if (jf.parts.script.empty() || latest.parts.script.empty())
+      return jf.inputs == latest.inputs ? nullptr : &out.earlier_script;
+    if (jf.parts.script != latest.parts.script) return &out.earlier_script;
+    if (!jf.parts.sky.empty() && !latest_hashes.count(jf.parts.sky)) return &out.earlier_sky;
+    return nullptr;
+  };
+  for (const auto& [frame, bytes] : png_sizes) {
+    const auto it = journal.frames.find(frame);
+    if (it == journal.frames.end() || it->second.png_bytes != bytes)
+      out.unrecorded.push_back(frame);
+    else if (std::vector<int>* list = made_otherwise(it->second))
+      list->push_back(frame);
+  }
+  const int first = png_sizes.begin()->first, last = png_sizes.rbegin()->first;
+  for (auto it = journal.frames.lower_bound(first); it != journal.frames.end() && it->first <= last; ++it)
+    if (!png_sizes.count(it->first) && !made_otherwise(it->second)) out.absent.push_back(it->first);
   return out;
 }
 

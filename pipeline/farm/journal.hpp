@@ -7,14 +7,17 @@
 // it.  Lines:
 //   lightcone-journal 1                                     (first line)
 //   input hash=<16 hex> path=<file>                         (an input file's content as of a run)
-//   frame=<n> size=<W>x<H> supersample=<N> layers=<0|1> inputs=<16 hex> exr=<bytes> png=<bytes> rays=<n>
-// A later frame line for the same frame supersedes an earlier one.
+//   frame=<n> size=<W>x<H> supersample=<N> layers=<0|1> sampling=<adaptive|full> inputs=<16 hex>
+//     script=<16 hex> [sky=<16 hex>] exr=<bytes> png=<bytes> rays=<n>
+// A later frame line for the same frame supersedes an earlier one.  Lines
+// of older journals lack sampling (full), script and sky.
 
 #include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace lc::farm {
 
@@ -28,21 +31,54 @@ struct FrameSettings {
   std::string describe() const;
 };
 
+// What a frame's input hash is made of, recorded beside it: a reader
+// without the shot (encode) can then tell a frame of an earlier version of
+// the script from one that merely has another sky image (stale_frames).
+struct InputParts {
+  std::string script;  // 16 hex: the script and every module it required; "" in older journals
+  std::string sky;     // 16 hex: the frame's sky image; "" when it has none
+  bool operator==(const InputParts&) const = default;
+};
+
 struct JournalFrame {
   int frame = 0;
   FrameSettings settings;
   std::string inputs;  // 16 hex digits: the frame's input hash
+  InputParts parts;
   std::uintmax_t exr_bytes = 0, png_bytes = 0;
   long rays = 0;
 };
 
 struct JournalContents {
   std::map<int, JournalFrame> frames;            // the latest line of each frame
+  int last_frame = -1;                           // the frame of the last frame line (the latest render's), -1: none
   std::map<std::string, std::string> inputs;     // path -> latest recorded hash
   int bad_lines = 0;                             // complete lines that failed their check (skipped)
   bool torn_tail = false;                        // the last line was cut short
   std::uintmax_t valid_bytes = 0;                // length up to the end of the last good line
 };
+
+// How the frames in a shot's directory relate to the latest render the
+// journal records (its last frame line): frames made otherwise would be
+// mixed into one sequence by encode or a contact sheet.  Each list is
+// ascending.
+struct StaleFrames {
+  std::vector<int> other_settings;  // present, journalled with other settings than the latest render's
+  std::vector<int> earlier_script;  // present, from an earlier version of the script or its modules
+  std::vector<int> earlier_sky;     // present, with an earlier version of their sky image
+  std::vector<int> unrecorded;      // present, but no journal line or a PNG of another size than it records
+  std::vector<int> absent;          // journalled like the latest render, between the first and last present frame, no PNG
+  // Any frame made otherwise (absent frames are holes, not stale).
+  bool any() const { return !other_settings.empty() || !earlier_script.empty() || !earlier_sky.empty() || !unrecorded.empty(); }
+};
+
+// Compares the frames present (frame -> the size of its PNG) with the
+// journal: a frame is stale when its line differs from the last frame
+// line's in settings or script hash, or its sky hash is no longer any
+// recorded input's latest hash.  Lines of older journals (without the input
+// parts) compare by their whole input hash.  An empty journal (frames made
+// elsewhere) finds nothing stale.
+StaleFrames stale_frames(const JournalContents& journal, const std::map<int, std::uintmax_t>& png_sizes);
 
 // One line (without the newline) for each kind; with the check appended.
 std::string journal_header_line();

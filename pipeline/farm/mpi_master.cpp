@@ -59,6 +59,11 @@ MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& ru
       case Tag::error:
         run.fail(fmt::format("rank {}: {}", m.source, std::string(m.data.begin(), m.data.end())));
         return;
+      case Tag::interrupted:
+        // Under mpirun a Ctrl-C reaches every rank as SIGTERM; a worker
+        // that gets one alone stops the job the same way.
+        run.interrupt(unpack_count(m.data));
+        return;
       default:
         run.fail(fmt::format("rank {} sent an unexpected message (tag {})", m.source, static_cast<int>(m.tag)));
         return;

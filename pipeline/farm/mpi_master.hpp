@@ -18,8 +18,10 @@ struct MasterReport {
 };
 
 // Runs until every frame is stored or the run fails (a worker's error, a
-// worker that loaded a different job, a failed write).  Errors end up in
-// run.error().  The workers are still waiting afterwards: stop_mpi_workers.
+// worker that loaded a different job, a failed write) or is interrupted
+// (a signal here or on a worker).  Errors end up in run.error(), signals in
+// run.interrupted().  The workers are still waiting afterwards:
+// stop_mpi_workers.
 MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& run, Progress& progress,
                             std::uint64_t digest);
 

@@ -10,6 +10,7 @@
 //   worker -> master  error    text                (the worker cannot go on)
 //   master -> worker  stop                         (finish now, whatever is left)
 //   worker -> master  bye                          (last message of a worker)
+//   worker -> master  interrupted  signal          (a Ctrl-C or kill reached the worker: stop the job)
 
 #include <cstdint>
 #include <span>
@@ -20,7 +21,7 @@
 
 namespace lc::farm {
 
-enum class Tag : int { hello = 11, request, work, result, error, stop, bye };
+enum class Tag : int { hello = 11, request, work, result, error, stop, bye, interrupted };
 
 using Bytes = std::vector<char>;
 

@@ -67,9 +67,10 @@ void render_loop(WorkerShared& s, StripeRenderer& renderer, const StripeLayout& 
 
 }  // namespace
 
-void run_mpi_worker(const MpiSession& /*mpi*/, StripeRenderer* renderer, const RenderSettings& rs,
-                    const StripeLayout& layout, int threads, std::uint64_t digest,
-                    const std::optional<std::string>& setup_error, int reserve_per_thread) {
+int run_mpi_worker(const MpiSession& /*mpi*/, StripeRenderer* renderer, const RenderSettings& rs,
+                   const StripeLayout& layout, int threads, std::uint64_t digest,
+                   const std::optional<std::string>& setup_error, int reserve_per_thread,
+                   const std::function<int()>& signal_received) {
   WorkerShared s;
   SendQueue out;
   std::vector<std::thread> pool;
@@ -82,8 +83,16 @@ void run_mpi_worker(const MpiSession& /*mpi*/, StripeRenderer* renderer, const R
   }
   const int reserve = std::max(1, reserve_per_thread) * threads;
   bool asked = false;
+  int interrupted = 0;
   std::unique_lock lock(s.mutex);
   while (!s.stopping) {
+    if (interrupted == 0 && signal_received && (interrupted = signal_received()) != 0) {
+      // Sets not begun are dropped (the master hands out no more and will
+      // not assemble these frames); the ones on the threads finish.
+      s.inbox.clear();
+      s.no_more = true;
+      out.post(0, Tag::interrupted, pack_count(interrupted));
+    }
     // Post what the render threads finished; delivery goes on meanwhile.
     while (!s.outbox.empty()) {
       auto message = std::move(s.outbox.front());
@@ -102,7 +111,8 @@ void run_mpi_worker(const MpiSession& /*mpi*/, StripeRenderer* renderer, const R
       got = true;
       lock.lock();
       if (m->tag == Tag::work) {
-        const auto items = unpack_items(m->data);
+        // After a signal, work already on its way is not begun.
+        const auto items = interrupted ? std::vector<WorkItem>{} : unpack_items(m->data);
         asked = false;
         if (items.empty()) s.no_more = true;
         for (const auto& item : items) {
@@ -115,6 +125,7 @@ void run_mpi_worker(const MpiSession& /*mpi*/, StripeRenderer* renderer, const R
       } else if (m->tag == Tag::stop) {
         s.stopping = true;
         s.work_ready.notify_all();
+        if (renderer) renderer->stop();
       }
       lock.unlock();
       if (m->tag == Tag::stop) break;
@@ -127,6 +138,7 @@ void run_mpi_worker(const MpiSession& /*mpi*/, StripeRenderer* renderer, const R
   for (auto& t : pool) t.join();  // each finishes the set it is on; results are dropped
   out.post(0, Tag::bye, Bytes{});
   out.drain();
+  return interrupted;
 }
 
 }  // namespace lc::farm

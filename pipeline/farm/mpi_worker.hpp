@@ -6,6 +6,7 @@
 // millisecond between polls.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -19,9 +20,13 @@ namespace lc::farm {
 // render error is sent to the master, which stops the job.  `reserve` is
 // how many sets per thread to hold (rendering or waiting): 2 hides the
 // round trip to the master behind one set; the farm benchmark, whose sets
-// cost nothing, asks for more to keep the master busy.
-void run_mpi_worker(const MpiSession& mpi, StripeRenderer* renderer, const RenderSettings& rs,
-                    const StripeLayout& layout, int threads, std::uint64_t digest,
-                    const std::optional<std::string>& setup_error, int reserve = 2);
+// cost nothing, asks for more to keep the master busy.  When
+// `signal_received` (may be empty) reports a signal, the worker drops the
+// sets it has not begun, asks for no more, tells the master (which stops
+// the job and says stop) and returns with the signal; otherwise 0.
+int run_mpi_worker(const MpiSession& mpi, StripeRenderer* renderer, const RenderSettings& rs,
+                   const StripeLayout& layout, int threads, std::uint64_t digest,
+                   const std::optional<std::string>& setup_error, int reserve = 2,
+                   const std::function<int()>& signal_received = {});
 
 }  // namespace lc::farm

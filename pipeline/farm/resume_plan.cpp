@@ -26,13 +26,12 @@ std::string format_frame_list(std::vector<int> frames, int max_items) {
   return out;
 }
 
-namespace {
-
-// "frame 3 was" / "frames 0-4 were".
 std::string frames_were(const std::vector<int>& frames) {
   return frames.size() == 1 ? fmt::format("frame {} was", frames[0])
                             : fmt::format("frames {} were", format_frame_list(frames));
 }
+
+namespace {
 
 // Why stale frames differ: settings per group, and the input files whose
 // recorded hash differs from today's.

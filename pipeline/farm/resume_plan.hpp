@@ -29,4 +29,7 @@ ResumePlan plan_resume(const FrameStore& store, const ShotSurvey& survey, const 
 // every 10th would otherwise fill the screen).
 std::string format_frame_list(std::vector<int> frames, int max_items = 12);
 
+// "frame 3 was" / "frames 0-4, 7 were": the start of a sentence about frames.
+std::string frames_were(const std::vector<int>& frames);
+
 }  // namespace lc::farm

@@ -42,10 +42,12 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
   for (auto h : script_hashes) base.add(h);
   for (auto& [f, facts] : out.frames) {
     ContentHash h = base;
+    facts.parts.script = base.hex();
     if (auto it = texture_of.find(f); it != texture_of.end()) {
       auto known = out.files.find(it->second);
       if (known == out.files.end()) known = out.files.emplace(it->second, to_hex(hash_file(it->second))).first;
       h.add("sky image ").add(known->second);
+      facts.parts.sky = known->second;
     }
     facts.inputs = h.hex();
   }

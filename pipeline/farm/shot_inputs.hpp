@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "farm/journal.hpp"
 #include "render/renderer.hpp"
 #include "scene/shot.hpp"
 
@@ -20,6 +21,7 @@ namespace lc::farm {
 struct FrameFacts {
   std::string spacetime;  // describe(spacetime), for the EXR header
   std::string inputs;     // 16 hex digits
+  InputParts parts;       // what `inputs` combines, for the journal
 };
 
 struct ShotSurvey {

@@ -27,7 +27,7 @@ void StoreSink::store(const CompletedFrame& cf) {
                                   {"lightcone/spacetime", facts.spacetime},
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};
-  store_.write_frame(cf.frame, cf.image, metadata, frame_settings(rs_), facts.inputs, cf.stats.rays);
+  store_.write_frame(cf.frame, cf.image, metadata, frame_settings(rs_), facts.inputs, facts.parts, cf.stats.rays);
 }
 
 }  // namespace lc::farm

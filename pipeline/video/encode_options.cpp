@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <numeric>
+#include <system_error>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -25,7 +28,91 @@ bool integer_in(const std::string& s, int lo, int hi) {
   return v >= lo && v <= hi;
 }
 
+// a/b in lowest terms (b > 0).
+FrameRate reduced(long long a, long long b) {
+  const long long g = std::gcd(a, b);
+  return {static_cast<int>(a / g), static_cast<int>(b / g)};
+}
+
+// Whether lo <= a/b <= hi, exactly (terms below 2^31, so products fit).
+bool rate_in(long long a, long long b, FrameRate lo, FrameRate hi) {
+  return a * lo.den >= lo.num * b && a * hi.den <= hi.num * b;
+}
+
+// The message for a rate outside the range.
+std::string out_of_range(const std::string& flag, const std::string& text) {
+  return fmt::format("{} {}: must be from 1/1000 (one frame every 1000 s) to 1000 frames per second", flag, text);
+}
+
 }  // namespace
+
+FrameRate frame_rate_near(double fps) {
+  // Continued-fraction convergents p/q of fps, the last one with both terms
+  // within max_rate_term, stopping as soon as one equals fps to double
+  // precision (29.97 -> 2997/100, 0.3333333333333333 -> 1/3).
+  if (!(fps > 0) || !std::isfinite(fps)) return {0, 1};
+  long long p0 = 0, q0 = 1, p1 = 1, q1 = 0;
+  double r = fps;
+  for (int i = 0; i < 64; ++i) {
+    const double a = std::floor(r);
+    if (a > max_rate_term) break;
+    const long long p2 = static_cast<long long>(a) * p1 + p0, q2 = static_cast<long long>(a) * q1 + q0;
+    if (p2 > max_rate_term || q2 > max_rate_term) break;
+    p0 = p1, q0 = q1, p1 = p2, q1 = q2;
+    if (std::abs(static_cast<double>(p1) / static_cast<double>(q1) - fps) <= 1e-12 * fps || r == a) break;
+    r = 1.0 / (r - a);
+  }
+  if (q1 == 0) return {0, 1};  // beyond max_rate_term: validate() refuses it
+  return reduced(p1, q1);
+}
+
+FrameRate parse_frame_rate(const std::string& text, const std::string& flag) {
+  // Inputs: the flag's text and name; output: the exact rate.
+  const std::string expected = fmt::format(
+      "{} '{}': expected frames per second as a number (30, 29.97) or a fraction of whole numbers (30000/1001)", flag,
+      text);
+  if (const auto slash = text.find('/'); slash != std::string::npos) {
+    auto whole = [&](std::string_view digits) {
+      long long v = 0;
+      if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string_view::npos)
+        throw std::invalid_argument(expected);
+      std::from_chars(digits.data(), digits.data() + digits.size(), v);
+      return v;
+    };
+    const long long num = whole(std::string_view(text).substr(0, slash));
+    const long long den = whole(std::string_view(text).substr(slash + 1));
+    if (den == 0) throw std::invalid_argument(fmt::format("{} {}: the denominator is 0", flag, text));
+    if (!rate_in(num, den, min_frame_rate, max_frame_rate)) throw std::invalid_argument(out_of_range(flag, text));
+    const FrameRate r = reduced(num, den);
+    if (r.num > max_rate_term || r.den > max_rate_term)
+      throw std::invalid_argument(fmt::format("{} {}: in lowest terms its numbers must be at most {}", flag, text,
+                                              max_rate_term));
+    return r;
+  }
+  // A decimal: digits first (no sign, no "inf" or "nan"), all of it a number.
+  double v = 0;
+  const char* end = text.data() + text.size();
+  if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.'))
+    throw std::invalid_argument(expected);
+  const auto [stop, ec] = std::from_chars(text.data(), end, v);
+  if (stop != end || (ec != std::errc() && ec != std::errc::result_out_of_range)) throw std::invalid_argument(expected);
+  const FrameRate r = frame_rate_near(v);
+  if (ec == std::errc::result_out_of_range || r.num == 0 || !rate_in(r.num, r.den, min_frame_rate, max_frame_rate))
+    throw std::invalid_argument(out_of_range(flag, text));
+  return r;
+}
+
+FrameRate frame_rate_divided(FrameRate rate, int k) {
+  return reduced(rate.num, static_cast<long long>(rate.den) * std::max(1, k));
+}
+
+std::string describe(FrameRate rate) {
+  if (rate.den == 1) return fmt::format("{}", rate.num);
+  // A short decimal that is exactly the rate ("29.97", "2.5") says it all.
+  const std::string decimal = fmt::format("{:.6g}", rate.value());
+  if (frame_rate_near(std::stod(decimal)) == rate) return decimal;
+  return fmt::format("{}/{} ({:.4g})", rate.num, rate.den, rate.value());
+}
 
 Codec parse_codec(const std::string& name) {
   // Input: the --codec text; output: the enum, or a message listing choices.
@@ -87,10 +174,39 @@ Container container_for(const std::filesystem::path& out, Codec codec) {
   return c;
 }
 
+std::optional<std::string> size_refusal(Codec codec, int width, int height) {
+  // Inputs: the frames' size as rendered; output: the reason, naming the size.
+  if (width < 1 || height < 1) return fmt::format("{}x{} is not a frame size", width, height);
+  const long long w = width + width % 2, h = height + height % 2;
+  if (codec == Codec::av1 && (w < 64 || h < 64 || w > 16384 || h > 8704))
+    return fmt::format("av1 (SVT-AV1) takes frames from 64x64 to 16384x8704; these are {}x{}", width, height);
+  if (codec == Codec::h264 && (w > 16384 || h > 16384))
+    return fmt::format("libx264 takes at most 16384 pixels a side; these frames are {}x{}", width, height);
+  // FFmpeg's av_image_check_size, which every encoder applies on opening.
+  constexpr long long ffmpeg_area_limit = 2147483647 / 8;
+  if ((w + 128) * (h + 128) >= ffmpeg_area_limit)
+    return fmt::format(
+        "{}x{} frames are too large for FFmpeg's encoders, which need (W+128)x(H+128) below {} (16384x16128 or "
+        "16254x16254 at most)",
+        width, height, ffmpeg_area_limit);
+  return std::nullopt;
+}
+
+std::optional<std::string> size_warning(Codec codec, int width, int height) {
+  if (codec != Codec::h264) return std::nullopt;
+  constexpr long long level_62_macroblocks = 139264;
+  const long long macroblocks = ((width + 15) / 16) * static_cast<long long>((height + 15) / 16);
+  if (macroblocks <= level_62_macroblocks) return std::nullopt;
+  return fmt::format(
+      "{}x{} is {} macroblocks, beyond H.264's largest level (6.2: {}, e.g. 8192x4320): the video is written, but "
+      "browsers and hardware decoders refuse to play it (ffplay and other players decoding with FFmpeg do)",
+      width, height, macroblocks, level_62_macroblocks);
+}
+
 void validate(const EncodeOptions& o) {
   // Input: options as parsed; throws naming the first bad flag.
-  if (!(o.fps > 0 && o.fps <= 1000) || !std::isfinite(o.fps))
-    throw std::invalid_argument(fmt::format("--fps {}: must be above 0 and at most 1000", o.fps));
+  if (o.fps.num <= 0 || o.fps.den <= 0 || !rate_in(o.fps.num, o.fps.den, min_frame_rate, max_frame_rate))
+    throw std::invalid_argument(out_of_range("--fps", fmt::format("{}/{}", o.fps.num, o.fps.den)));
   if (o.crf) {
     const int hi = o.codec == Codec::vp9 || o.codec == Codec::av1 ? 63 : 51;
     if (o.codec == Codec::prores)

@@ -1,5 +1,6 @@
 #include "video/frame_sequence.hpp"
 
+#include <algorithm>
 #include <numeric>
 #include <regex>
 #include <stdexcept>
@@ -73,12 +74,27 @@ FrameSequence select_frame_sequence(const fs::path& dir, const std::optional<std
 FrameSpacing frame_spacing(const std::vector<int>& frames) {
   // Input: ascending distinct numbers; output: their step and the holes.
   FrameSpacing s;
-  int g = 0;
-  for (std::size_t i = 1; i < frames.size(); ++i) g = std::gcd(g, frames[i] - frames[i - 1]);
+  const std::size_t n = frames.size();
+  // The step of all but the last frame, and of all of them.
+  int body = 0;
+  for (std::size_t i = 1; i + 1 < n; ++i) body = std::gcd(body, frames[i] - frames[i - 1]);
+  const int last_gap = n >= 2 ? frames[n - 1] - frames[n - 2] : 0;
+  s.final_off_step = n >= 3 && last_gap < body;
+  const int g = s.final_off_step ? body : std::gcd(body, last_gap);
   s.step = g > 0 ? g : 1;
-  for (std::size_t i = 1; i < frames.size(); ++i)
+  const std::size_t progression = s.final_off_step ? n - 1 : n;
+  for (std::size_t i = 1; i < progression; ++i)
     for (int f = frames[i - 1] + s.step; f < frames[i]; f += s.step) s.missing.push_back(f);
   return s;
+}
+
+std::string describe_range(const std::vector<int>& frames, const FrameSpacing& spacing) {
+  if (frames.empty()) return "no frames";
+  const int end = spacing.final_off_step ? frames[frames.size() - 2] : frames.back();
+  std::string out = fmt::format("{}-{}", frames.front(), end);
+  if (spacing.step > 1) out += fmt::format(" every {}", spacing.step);
+  if (spacing.final_off_step) out += fmt::format(", then {}", frames.back());
+  return out;
 }
 
 std::string describe_frames(const std::vector<int>& frames, int step, int max_items) {
@@ -102,13 +118,19 @@ std::string describe_frames(const std::vector<int>& frames, int step, int max_it
   return out;
 }
 
-void require_complete(const FrameSequence& sequence, const fs::path& dir) {
+void require_complete(const FrameSequence& sequence, const fs::path& dir, const std::vector<int>& lost) {
   // Input: a found sequence; throws when it has holes, returns otherwise.
-  const FrameSpacing s = frame_spacing(sequence.frames);
-  if (s.missing.empty()) return;
-  const std::string range = s.step == 1 ? fmt::format("frames {}-{}", sequence.frames.front(), sequence.frames.back())
-                                        : fmt::format("frames {}-{} every {}", sequence.frames.front(),
-                                                      sequence.frames.back(), s.step);
+  FrameSpacing s = frame_spacing(sequence.frames);
+  if (s.missing.empty() && lost.empty()) return;
+  if (!lost.empty()) {
+    // Lost frames between the members of a step are holes of every frame.
+    s.missing.insert(s.missing.end(), lost.begin(), lost.end());
+    std::sort(s.missing.begin(), s.missing.end());
+    s.missing.erase(std::unique(s.missing.begin(), s.missing.end()), s.missing.end());
+    s.step = 1;
+    s.final_off_step = false;
+  }
+  const std::string range = "frames " + describe_range(sequence.frames, s);
   // With a step, "30-50" in the list means 30, 40, 50: the range text
   // before it ("frames 0-890 every 10") says so.
   throw std::runtime_error(fmt::format("{}: shot {}, {}: missing frame{} {} (render them, or encode a complete range)",

@@ -33,12 +33,21 @@ FrameSequence select_frame_sequence(const std::filesystem::path& dir, const std:
 // The spacing of ascending, distinct frame numbers: the step is the greatest
 // common divisor of the gaps (1 for one frame), so a sequence rendered every
 // k-th frame with a frame lost still shows step k; `missing` lists what the
-// progression first, first+step, ..., last lacks.
+// progression first, first+step, ..., last lacks.  One exception: a
+// progression of at least two frames followed by one frame closer than its
+// step (--frames 0:95:8 renders 0, 8, ..., 88; a render of --frames 95 adds
+// the shot's last frame) is whole, with `final_off_step` set: a preview
+// that ends on the shot's last frame.
 struct FrameSpacing {
   int step = 1;
   std::vector<int> missing;
+  bool final_off_step = false;  // the last frame follows the progression at less than a step
 };
 FrameSpacing frame_spacing(const std::vector<int>& frames);
+
+// "0-88 every 8, then 95", "0-9 every 3", "0-11": the sequence's range for
+// messages.
+std::string describe_range(const std::vector<int>& frames, const FrameSpacing& spacing);
 
 // Missing frames written compactly: runs of consecutive members of the
 // progression (a, a+step, ..., b) as "a-b", others alone, comma-separated:
@@ -47,6 +56,9 @@ std::string describe_frames(const std::vector<int>& frames, int step, int max_it
 
 // Throws std::runtime_error when `sequence` has holes, naming the directory,
 // the shot, its range and step and the missing frames (describe_frames).
-void require_complete(const FrameSequence& sequence, const std::filesystem::path& dir);
+// `lost` adds holes known otherwise (frames the journal says were rendered
+// and whose files are gone), which need not lie on the sequence's step.
+void require_complete(const FrameSequence& sequence, const std::filesystem::path& dir,
+                      const std::vector<int>& lost = {});
 
 }  // namespace lc

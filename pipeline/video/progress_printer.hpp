@@ -4,8 +4,8 @@
 
 #include <string>
 
+#include "interrupt.hpp"
 #include "video/encode_options.hpp"
-#include "video/interrupt.hpp"
 
 namespace lc {
 

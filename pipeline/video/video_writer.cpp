@@ -124,11 +124,8 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
   // container header, so an unwritable path fails before any encoding.
   validate(options);
   const Container container = container_for(out, options.codec);
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw std::invalid_argument(fmt::format("{}: frame size {}x{} out of range (1 to 16384)", out.string(), width, height));
-  if (options.codec == Codec::av1 && (width < 64 || height < 64))
-    throw std::invalid_argument(
-        fmt::format("{}: av1 (SVT-AV1) needs frames of at least 64x64; these are {}x{}", out.string(), width, height));
+  if (const auto why = size_refusal(options.codec, width, height))
+    throw std::invalid_argument(fmt::format("cannot write {}: {}", out.string(), *why));
   libav::quiet_logs();
   impl_ = std::make_unique<Impl>(out, width, height);
   Impl& m = *impl_;
@@ -146,8 +143,9 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
   m.packet = av_packet_alloc();
   if (!m.stream || !m.enc || !m.frame || !m.packet) throw std::bad_alloc();
 
-  // av_d2q keeps common rates exact (30 -> 30/1; 29.97 -> 30000/1001).
-  const AVRational rate = av_d2q(options.fps, 1000000);
+  // The rate as the fraction it is: 30000/1001 frames per second, a time
+  // base of 1001/30000 s.
+  const AVRational rate{options.fps.num, options.fps.den};
   m.enc->width = width + width % 2;
   m.enc->height = height + height % 2;
   m.enc->pix_fmt = options.codec == Codec::prores ? AV_PIX_FMT_YUV422P10LE : AV_PIX_FMT_YUV420P;

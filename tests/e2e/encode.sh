@@ -41,6 +41,21 @@ grep -q "24 fps (the shot, from tiny.0000.exr)" tiny24.log || fail "fps source n
 # --fps overrides it: 12 frames at 30 fps last 0.4 s.
 "$LIGHTCONE" encode frames -o tiny30.mp4 --fps 30 2>/dev/null || fail "encode at 30 fps"
 check_probe tiny30.mp4 nb_read_frames=12 avg_frame_rate=30/1 duration=0.400000
+# Fractions are kept exactly: NTSC's 30000/1001 is the stream's rate (12
+# frames last 0.4004 s), and 29.97 is 2997/100.
+"$LIGHTCONE" encode frames -o ntsc.mp4 --fps 30000/1001 2>ntsc.log || fail "encode --fps 30000/1001: $(cat ntsc.log)"
+check_probe ntsc.mp4 nb_read_frames=12 avg_frame_rate=30000/1001 duration=0.400400
+"$LIGHTCONE" encode frames -o decimal.mp4 --fps 29.97 2>/dev/null || fail "encode --fps 29.97"
+check_probe decimal.mp4 nb_read_frames=12 avg_frame_rate=2997/100
+# Rates no container can hold are refused up front, naming the range (1e-9
+# used to pass the check and fail in the muxer).
+fps_range="must be from 1/1000 (one frame every 1000 s) to 1000 frames per second"
+expect_error fps_tiny "--fps 1e-9: $fps_range" -- "$LIGHTCONE" encode frames -o fps1.mp4 --fps 1e-9
+expect_error fps_huge "--fps 1001: $fps_range" -- "$LIGHTCONE" encode frames -o fps2.mp4 --fps 1001
+expect_error fps_junk "--fps '30fps': expected frames per second" -- "$LIGHTCONE" encode frames -o fps3.mp4 --fps 30fps
+expect_error fps_zero_den "--fps 30/0: the denominator is 0" -- "$LIGHTCONE" encode frames -o fps4.mp4 --fps 30/0
+expect_error fps_title "--fps 1e-9: $fps_range" -- "$LIGHTCONE" encode --title X --size 32x18 --fps 1e-9 -o fps5.mp4
+for f in fps1 fps2 fps3 fps4 fps5; do [ -e $f.mp4 ] && fail "$f.mp4 written for a refused --fps"; done
 # Colour survives: a flat orange frame decodes (as a player does, by the
 # stream's BT.709 tags) to its PNG's bytes within 2 codes.  A BT.601 matrix
 # under a BT.709 tag would be ~10 codes off.
@@ -64,6 +79,25 @@ no_leftovers "basic encode"
 "$LIGHTCONE" encode step -o step.mp4 --fps 8 2>step.log || fail "encode step: $(cat step.log)"
 check_probe step.mp4 nb_read_frames=4 duration=0.500000
 grep -q "frames (0-9 every 3)" step.log || fail "step not reported: $(cat step.log)"
+# Without --fps a preview keeps the shot's pace: 24 fps / 3 = 8 fps (it
+# used to play at 24, three times too fast).
+"$LIGHTCONE" encode step -o step_pace.mp4 2>step_pace.log || fail "encode step at its pace: $(cat step_pace.log)"
+check_probe step_pace.mp4 nb_read_frames=4 avg_frame_rate=8/1 duration=0.500000
+grep -q "8 fps (the shot's 24, from tiny.0000.exr, divided by the step 3 to keep its pace)" step_pace.log \
+  || fail "the divided rate is not explained: $(cat step_pace.log)"
+# 11, the shot's last frame, is off the step: the render says so; rendered
+# as well, it ends the preview instead of being called a hole.
+"$LIGHTCONE" render tiny.lua --out step --frames 0:11:3 2>step_note.log || fail "render step again"
+grep -q "render: note: --frames 0:11:3 takes 0, 3, ..., 9: 11 is not on the step" step_note.log \
+  || fail "no note about the last frame: $(cat step_note.log)"
+"$LIGHTCONE" render tiny.lua --out step --frames 11 2>/dev/null || fail "render the last frame"
+"$LIGHTCONE" encode step -o step_last.mp4 2>step_last.log || fail "a stepped sequence and its last frame: $(cat step_last.log)"
+check_probe step_last.mp4 nb_read_frames=5 avg_frame_rate=8/1
+grep -q "5 frames (0-9 every 3, then 11)" step_last.log || fail "last frame not reported: $(cat step_last.log)"
+# Frames the journal says were rendered and whose files are gone are holes,
+# however regular the numbers left look (0, 9, 10 is not "every 9th, then 10").
+mkdir lost && cp frames/tiny.* lost/ && rm lost/tiny.000[1-8].* lost/tiny.0011.*
+expect_error lost "frames 0-10: missing frames 1-8" -- "$LIGHTCONE" encode lost -o lost.mp4
 
 # --- holes: refused, holes named compactly, nothing written ----------------
 mkdir holes
@@ -74,11 +108,67 @@ mkdir stephole
 for f in 0 3 9; do cp frames/tiny.$(printf %04d $f).png stephole/; done
 expect_error stephole "frames 0-9 every 3: missing frame 6" -- "$LIGHTCONE" encode stephole -o sh.mp4
 
+# --- stale frames: a changed shot, a --force render stopped part way -------
+# 30 frames rendered, the shot changed, then a --force render that stopped
+# after frames 0-5 (deterministically: it was asked for 0-5 only).  Encode
+# and contact-sheet refuse to mix the versions, naming the old frames,
+# until the render is finished or --allow-stale is given.
+sed -e 's/frames = 12/frames = 30/' -e 's/width = 32, height = 18/width = 16, height = 10/' \
+  -e 's/name = "tiny"/name = "stale"/' tiny.lua >stale.lua
+"$LIGHTCONE" render stale.lua --out stale --progress 0 2>/dev/null || fail "render stale"
+sed -i 's/outer = 14/outer = 11/' stale.lua
+"$LIGHTCONE" render stale.lua --out stale --force --frames 0:5 --progress 0 2>stale_force.log \
+  || fail "render --force 0:5: $(cat stale_force.log)"
+expect_error stale "stale: shot stale: frames 6-29 were rendered from an earlier version of the shot" -- \
+  "$LIGHTCONE" encode stale -o stale.mp4
+grep -q -- "--allow-stale" stale.err && grep -q -- "--force" stale.err || fail "no way out named: $(cat stale.err)"
+expect_error stale_sheet "frames 6-29 were rendered from an earlier version of the shot" -- \
+  "$LIGHTCONE" contact-sheet stale -o stale.png
+[ -e stale.mp4 ] || [ -e stale.png ] && fail "stale frames were encoded or shown without --allow-stale"
+"$LIGHTCONE" encode stale -o stale.mp4 --allow-stale 2>stale_allowed.log || fail "--allow-stale: $(cat stale_allowed.log)"
+grep -q "warning: --allow-stale: using them as they are: .*frames 6-29" stale_allowed.log \
+  || fail "--allow-stale does not say what it mixes: $(cat stale_allowed.log)"
+check_probe stale.mp4 nb_read_frames=30
+# Other settings and a frame put there by hand are named too.
+mkdir stale2 && cp stale/stale.* stale2/
+"$LIGHTCONE" render stale.lua --out stale2 --force --frames 7 --size 32x20 --progress 0 2>/dev/null || fail "render 7 bigger"
+cp frames/tiny.0003.png stale2/stale.0003.png
+expect_error stale_settings "frames 0-2, 4-6, 8-29 were rendered with other settings than the latest render (32x20" -- \
+  "$LIGHTCONE" encode stale2 -o stale2.mp4
+grep -q "frame 3 was not recorded in stale.journal as finished" stale_settings.err \
+  || fail "a frame without its journal line is not named: $(cat stale_settings.err)"
+# Finished, the sequence is one version again.
+"$LIGHTCONE" render stale.lua --out stale --force --progress 0 2>/dev/null || fail "finish the --force render"
+"$LIGHTCONE" encode stale -o stale_done.mp4 2>stale_done.log || fail "encode after finishing: $(cat stale_done.log)"
+check_probe stale_done.mp4 nb_read_frames=30
+
 # --- odd sizes are padded to even ----------------------------------------
 "$LIGHTCONE" render tiny.lua --out odd --size 33x19 --frames 0:2 2>/dev/null || fail "render odd"
 "$LIGHTCONE" encode odd -o odd.mp4 2>odd.log || fail "encode odd: $(cat odd.log)"
 check_probe odd.mp4 width=34 height=20 pix_fmt=yuv420p nb_read_frames=3
 grep -q "padded to 34x20" odd.log || fail "padding not reported: $(cat odd.log)"
+
+# --- sizes the encoder cannot take: refused from the first frame's header --
+# png_header W H FILE: a PNG whose header says W x H and whose pixel data is
+# garbage, so only a check that reads no pixel gets past it (a 16384x16384
+# frame used to be decoded, 6.4 GB, before the encoder said "(0x0): Invalid
+# argument").  The header's CRC is gzip's (the same CRC-32), byte-reversed.
+hex_bytes() { sed 's/../\\x&/g'; }
+png_header() {
+  local body crc
+  body="49484452$(printf '%08x%08x' "$1" "$2")0802000000"  # IHDR: W, H, 8-bit RGB
+  crc=$(printf "$(hex_bytes <<<"$body")" | gzip -c | tail -c8 | head -c4 | od -An -tx1 | tr -d ' \n')
+  crc=${crc:6:2}${crc:4:2}${crc:2:2}${crc:0:2}
+  printf "$(hex_bytes <<<"89504e470d0a1a0a0000000d${body}${crc}00000004494441540000000000000000")" >"$3"
+}
+mkdir big
+png_header 16384 16384 big/big.0000.png
+iinfo big/big.0000.png | grep -q "16384 x 16384" || fail "the test's PNG header is not read as 16384x16384: $(iinfo big/big.0000.png)"
+expect_error big "big/big.0000.png: 16384x16384 frames are too large for FFmpeg's encoders" -- \
+  "$LIGHTCONE" encode big -o big.mp4
+expect_error big_title "16384x16384 frames are too large for FFmpeg's encoders" -- \
+  "$LIGHTCONE" encode --title BIG --size 16384x16384 -o bigcard.mp4
+[ -e big.mp4 ] || [ -e bigcard.mp4 ] && fail "an output was written for frames too large to encode"
 
 # --- bad inputs and outputs: clear errors, nothing left ------------------
 mkdir empty

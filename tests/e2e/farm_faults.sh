@@ -23,18 +23,22 @@ same_frames() {  # DIR: all ten frames equal the reference's
 }
 
 # --- A second render on the same directory while one runs: refused, naming its pid.
-# The holder must still be running when the second one starts: full 4x4
-# grids of 640x400 take it minutes (it is killed once the refusal is seen).
-"$LIGHTCONE" render "$SHOT" --out locked --threads 1 --size 640x400 --supersample 4 --full-supersample --progress 0 \
-  2>locked_first.log &
+# The holder must still be running when the second one starts: the test
+# hook LIGHTCONE_TEST_PAUSE_AFTER=0 holds it at its first working set (it
+# says so once it has the lock) until it is killed, however fast the machine.
+LIGHTCONE_TEST_PAUSE_AFTER=0 "$LIGHTCONE" render "$SHOT" --out locked --threads 1 --progress 0 2>locked_first.log &
 first=$!
-for _ in $(seq 1 200); do [ -s locked/lightcone.lock ] && break; sleep 0.05; done
+for _ in $(seq 1 1200); do
+  grep -q "test pause: pid $first" locked_first.log 2>/dev/null && break
+  kill -0 "$first" 2>/dev/null || break
+  sleep 0.05
+done
+grep -q "test pause: pid $first" locked_first.log || fail "the lock holder never paused: $(cat locked_first.log)"
 expect_error second_render "another lightcone render is writing there (pid $first on" -- \
   "$LIGHTCONE" render "$SHOT" --out locked --progress 0
-kill -9 "$first" 2>/dev/null || true
+kill -9 "$first" || fail "the lock holder was gone before the kill"
 wait "$first" 2>/dev/null || true
-"$LIGHTCONE" render "$SHOT" --out locked --threads 2 --size 640x400 --supersample 4 --full-supersample --frames 0 \
-  --progress 0 2>locked_resume.log \
+"$LIGHTCONE" render "$SHOT" --out locked --threads 2 --frames 0 --progress 0 2>locked_resume.log \
   || fail "render after the lock holder died: $(cat locked_resume.log)"
 
 # --- A shot whose inputs change: script module and sky image.

@@ -1,15 +1,22 @@
 #!/usr/bin/env bash
-# Stop a render with SIGKILL at random moments, several times, and resume
-# it each time; under mpirun kill one worker rank (the job aborts) and
-# resume.  The final frames must equal an uninterrupted render's byte for
-# byte, no frame may be journalled twice, and no half-written file may ever
-# sit under a frame's final name.
+# Stop a render with SIGKILL at several points and resume it each time;
+# under mpirun kill one worker rank (the job aborts) and resume; stop it
+# with Ctrl-C (SIGINT) and SIGTERM, alone and under mpirun.  The final
+# frames must equal an uninterrupted render's byte for byte, no frame may be
+# journalled twice, and no half-written file may ever sit under a frame's
+# final name.
+#
+# Every stop happens at a known point, whatever the machine's speed: the
+# test hook LIGHTCONE_TEST_PAUSE_AFTER=N makes each render process (each
+# worker rank) hold its working sets after N of them and say so with its
+# pid, so the test kills or interrupts a render that is certainly mid-job
+# (a sleep-based kill once found the worker already gone).
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
 use_mpirun  # lib.sh: Open MPI settings for a test
 SHOT="$SRC/tests/data/farm/farm_orbit.lua"
-ARGS=(--supersample 2 --full-supersample --progress 0)  # the full grid: slow enough to be killed mid-job
+ARGS=(--supersample 2 --full-supersample --progress 0)  # 10 frames of 40 stripes: 400 working sets
 
 "$LIGHTCONE" render "$SHOT" --out ref --threads 2 "${ARGS[@]}" 2>ref.log || fail "reference render: $(cat ref.log)"
 
@@ -33,81 +40,117 @@ same_frames() {
   if ls "$1" | grep -q tmp; then fail "$1: temporary files left: $(ls "$1")"; fi
 }
 
-# Local: four kills.  The first at a random moment of the first 1.5 s
-# (maybe before any frame is done); the others at a random moment within
-# 0.4 s after the next frame is journalled, so every round makes progress
-# however slow the machine is.
-frames_done() { grep -c '^frame=' "$1/farm_orbit.journal" 2>/dev/null || true; }
+# The journal's frame lines (0 without a journal).
+frames_done() { cat "$1/farm_orbit.journal" 2>/dev/null | grep -c '^frame=' || true; }
+
+# wait_paused LOG COUNT PID [DIR FRAMES]: until LOG shows COUNT processes
+# paused by the test hook (and, with DIR, its journal FRAMES frames: the
+# frames finished before the pause are stored by a writer thread, a little
+# later).  Fails if the render ends first: it cannot, while its sets are held.
+wait_paused() {
+  local log="$1" count="$2" pid="$3" dir="${4:-}" frames="${5:-1}"
+  for _ in $(seq 1 1200); do
+    if [ "$(grep -c 'test pause: pid' "$log" 2>/dev/null)" -ge "$count" ] &&
+       { [ -z "$dir" ] || [ "$(frames_done "$dir")" -ge "$frames" ]; }; then
+      return 0
+    fi
+    kill -0 "$pid" 2>/dev/null || { fail "$log: the render ended before it paused: $(cat "$log")"; return 1; }
+    sleep 0.05
+  done
+  fail "$log: no pause in 60 s: $(cat "$log")"
+  return 1
+}
+
+# --- SIGKILL, four times: before the first set, then after 90 more sets
+# each time (two frames and a bit), so every round makes progress and
+# every kill lands while the render holds unfinished work.
 for round in 1 2 3 4; do
+  sets=$([ "$round" -eq 1 ] && echo 0 || echo 90)
   before=$(frames_done local)
-  "$LIGHTCONE" render "$SHOT" --out local --threads 2 "${ARGS[@]}" 2>>local.log &
+  LIGHTCONE_TEST_PAUSE_AFTER=$sets "$LIGHTCONE" render "$SHOT" --out local --threads 2 "${ARGS[@]}" \
+    2>"local.$round.log" &
   pid=$!
-  if [ "$round" -gt 1 ]; then
-    for _ in $(seq 1 600); do
-      [ "$(frames_done local)" -gt "${before:-0}" ] && break
-      kill -0 "$pid" 2>/dev/null || break
-      sleep 0.05
-    done
-    sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 0.4 * r / 32768 }')"
-  else
-    sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 1.5 * r / 32768 }')"
-  fi
-  kill -9 "$pid" 2>/dev/null || true
+  wait_paused "local.$round.log" 1 "$pid" local $((before + (round > 1 ? 2 : 0)))
+  kill -9 "$pid" 2>/dev/null || fail "round $round: the render was gone before the kill"
   wait "$pid" 2>/dev/null || true
   check_store local
 done
+[ "$(frames_done local)" -ge 6 ] || fail "rounds 2-4 should have finished two frames each: $(cat local/farm_orbit.journal)"
 "$LIGHTCONE" render "$SHOT" --out local --threads 2 "${ARGS[@]}" 2>final.log || fail "final resume: $(cat final.log)"
 check_store local
 same_frames local
-[ "$(grep -c '^frame=' local/farm_orbit.journal)" -eq 10 ] || fail "journal: $(cat local/farm_orbit.journal)"
-grep -q "resuming" local.log final.log || fail "no run ever resumed: $(cat local.log final.log)"
+[ "$(frames_done local)" -eq 10 ] || fail "journal: $(cat local/farm_orbit.journal)"
+grep -q "resuming" local.*.log final.log || fail "no run ever resumed: $(cat local.*.log final.log)"
 
-# MPI: kill one worker rank once at least one frame is finished; the job
-# aborts (Open MPI has no fault tolerance) and a new run resumes.
-descendants() {
-  for c in $(pgrep -P "$1"); do
-    echo "$c"
-    descendants "$c"
-  done
+# --- Ctrl-C and SIGTERM: the render stores the frames it holds complete,
+# says how far it got, leaves a valid journal and nothing half-written, and
+# exits 130 (SIGINT) or 143 (SIGTERM); the same command then finishes it.
+# 90 sets with 2 threads complete exactly frames 0 and 1.
+interrupt_round() {  # NAME SIGNAL STATUS MESSAGE
+  local name="$1" sig="$2" want="$3" message="$4" rc=0
+  LIGHTCONE_TEST_PAUSE_AFTER=90 "$LIGHTCONE" render "$SHOT" --out "$name" --threads 2 "${ARGS[@]}" 2>"$name.log" &
+  local pid=$!
+  wait_paused "$name.log" 1 "$pid" "$name" 2 || return
+  kill "-$sig" "$pid"
+  wait "$pid" || rc=$?
+  [ "$rc" -eq "$want" ] || fail "$name: exit $rc after SIG$sig, want $want: $(cat "$name.log")"
+  grep -q "$message" "$name.log" || fail "$name: no message '$message': $(cat "$name.log")"
+  check_store "$name"
+  if ls "$name" | grep -q tmp; then fail "$name: temporaries left: $(ls "$name")"; fi
+  "$LIGHTCONE" render "$SHOT" --out "$name" --threads 2 "${ARGS[@]}" 2>"$name.resume.log" \
+    || fail "$name: resume: $(cat "$name.resume.log")"
+  grep -q "resuming: 2 of 10 frames already finished in $name (0-1)" "$name.resume.log" \
+    || fail "$name: the journal left by the interruption was not read back as frames 0-1: $(cat "$name.resume.log")"
+  same_frames "$name"
+  [ "$(frames_done "$name")" -eq 10 ] || fail "$name journal: $(cat "$name/farm_orbit.journal")"
 }
-worker_pid() {  # a process below `timeout mpirun` whose rank is not 0
-  for c in $(descendants "$1"); do
-    if tr '\0' '\n' <"/proc/$c/environ" 2>/dev/null | grep -q '^OMPI_COMM_WORLD_RANK=[12]$'; then
-      echo "$c"
-      return
-    fi
-  done
-}
-KILLS=0
+interrupt_round ctrl_c INT 130 \
+  "render: interrupted by Ctrl-C (SIGINT): 2 of 10 frames done (2 in this run); run the same command again to resume"
+interrupt_round sigterm TERM 143 "render: interrupted by SIGTERM: 2 of 10 frames done"
+
+# --- MPI: kill one worker rank, twice.  Each worker holds its sets after
+# 40 (together two frames' worth, so at least one frame is stored); the
+# job cannot end before the kill, and aborts after it (Open MPI has no
+# fault tolerance); a new run resumes.
 for round in 1 2; do
-  timeout 120 mpirun --oversubscribe --bind-to none -n 3 "$LIGHTCONE" render "$SHOT" --out mpi "${ARGS[@]}" \
-    >>mpi.log 2>&1 &
+  LIGHTCONE_TEST_PAUSE_AFTER=40 timeout 120 mpirun --oversubscribe --bind-to none -n 3 "$LIGHTCONE" render "$SHOT" \
+    --out mpi "${ARGS[@]}" >"mpi.$round.log" 2>&1 &
   mpirun_pid=$!
-  for _ in $(seq 1 300); do  # up to 30 s for the first frame
-    [ -f mpi/farm_orbit.journal ] && grep -q '^frame=' mpi/farm_orbit.journal && break
-    kill -0 "$mpirun_pid" 2>/dev/null || break
-    sleep 0.1
-  done
-  sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 0.5 * r / 32768 }')"
-  w=$(worker_pid "$mpirun_pid")
-  killed=no
-  if [ -n "$w" ] && kill -9 "$w" 2>/dev/null; then killed=yes; fi
-  echo "round $round: killed worker: $killed ($w)" >>mpi.log
+  wait_paused "mpi.$round.log" 2 "$mpirun_pid" mpi
+  w=$(sed -n 's/^render: test pause: pid \([0-9]*\) (rank 1).*/\1/p' "mpi.$round.log")
+  [ -n "$w" ] && kill -9 "$w" || fail "round $round: no worker to kill: $(cat "mpi.$round.log")"
   rc=0
   wait "$mpirun_pid" || rc=$?
-  if [ "$killed" = yes ] && [ "$rc" -eq 0 ] && [ "$(grep -c '^frame=' mpi/farm_orbit.journal)" -lt 10 ]; then
-    fail "round $round: a worker was killed but mpirun exited 0 with frames missing"
-  fi
-  [ "$killed" = yes ] && KILLS=$((KILLS + 1))
+  [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] || fail "round $round: mpirun exited $rc after a worker was killed"
   check_store mpi
 done
 timeout 120 mpirun --oversubscribe --bind-to none -n 2 "$LIGHTCONE" render "$SHOT" --out mpi "${ARGS[@]}" 2>mpi_final.log \
   || fail "MPI resume: $(cat mpi_final.log)"
 check_store mpi
 same_frames mpi
-[ "$(grep -c '^frame=' mpi/farm_orbit.journal)" -eq 10 ] || fail "MPI journal: $(cat mpi/farm_orbit.journal)"
-# A worker finishing all frames before the kill can happen is possible on a
-# fast machine, but not twice in a row at this size.
-[ "$KILLS" -ge 1 ] || fail "no worker rank was ever killed: $(cat mpi.log)"
-CHECKS=$((CHECKS + 7))
+[ "$(frames_done mpi)" -eq 10 ] || fail "MPI journal: $(cat mpi/farm_orbit.journal)"
+
+# --- MPI and a Ctrl-C: mpirun turns it into SIGTERM for every rank (and
+# SIGKILL a second later); sent here straight to the ranks, the master
+# stores what it holds, stops the workers and exits 143, and no rank is
+# left waiting.
+LIGHTCONE_TEST_PAUSE_AFTER=40 timeout 120 mpirun --oversubscribe --bind-to none -n 3 "$LIGHTCONE" render "$SHOT" \
+  --out mpi_int "${ARGS[@]}" >mpi_int.log 2>&1 &
+timeout_pid=$!
+if wait_paused mpi_int.log 2 "$timeout_pid" mpi_int; then
+  mpirun_pid=$(pgrep -P "$timeout_pid")
+  ranks=$(pgrep -P "$mpirun_pid" | tr '\n' ' ')
+  [ "$(wc -w <<<"$ranks")" -eq 3 ] || fail "expected 3 ranks under mpirun $mpirun_pid, found: $ranks"
+  kill -TERM $ranks
+  rc=0
+  wait "$timeout_pid" || rc=$?
+  [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] || fail "mpirun exited $rc after SIGTERM (124: a rank hung)"
+  grep -q "render: interrupted by SIGTERM: [0-9]* of 10 frames done" mpi_int.log || fail "no message: $(cat mpi_int.log)"
+  grep -q "Exit code:    143" mpi_int.log || fail "no rank exited 143 (128 + SIGTERM): $(cat mpi_int.log)"
+  check_store mpi_int
+  timeout 120 mpirun --oversubscribe --bind-to none -n 3 "$LIGHTCONE" render "$SHOT" --out mpi_int "${ARGS[@]}" \
+    2>mpi_int_resume.log || fail "resume after SIGTERM under mpirun: $(cat mpi_int_resume.log)"
+  same_frames mpi_int
+fi
+CHECKS=$((CHECKS + 9))
 e2e_end

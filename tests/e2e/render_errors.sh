@@ -35,6 +35,24 @@ expect_error zero_size "image size 0x10 is out of range" -- "$LIGHTCONE" render 
 expect_error absurd_size "image size 100000x10 is out of range" -- "$LIGHTCONE" render ok.lua --out out --size 100000x10
 expect_error bad_size "--size 'big': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size big
 expect_error bad_scale "--scale -1: must be a positive number" -- "$LIGHTCONE" render ok.lua --out out --scale -1
+# Sizes are parsed strictly by every command that takes one: 2^32 + 64 once
+# wrapped around to 64 and rendered 64x36; signs and trailing junk are refused.
+expect_error size_overflow "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" render ok.lua --out out --size 4294967360x36
+expect_error size_sign "--size '-64x36': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size -64x36
+expect_error size_plus "--size '64x+36': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size 64x+36
+expect_error size_junk "--size '64x36px': expected WxH" -- "$LIGHTCONE" render ok.lua --out out --size 64x36px
+expect_error trace_size "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" trace ok.lua --frame 0 --pixel 0,0 --size 4294967360x36 -o trace.csv
+expect_error trace_pixel "--pixel '4294967297,0': 4294967297 is far too large" -- \
+  "$LIGHTCONE" trace ok.lua --frame 0 --pixel 4294967297,0 -o trace.csv
+expect_error showcase_size "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" showcase --size 4294967360x36 --out showcase_out
+expect_error title_size "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" encode --title X --size 4294967360x36 -o title.mp4
+expect_error farm_bench_size "--size '4294967360x36': 4294967360 is far too large" -- \
+  "$LIGHTCONE" farm-bench --size 4294967360x36 --frames 1
+[ -e trace.csv ] || [ -e title.mp4 ] || [ -e showcase_out ] && fail "a refused size left an output behind"
 expect_error bench_seconds "--seconds -1: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds -1
 expect_error bench_seconds_nan "--seconds nan: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds nan
 expect_error bench_seconds_long "--seconds 4000: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds 4000
@@ -114,6 +132,35 @@ LUA
 expect_error bad_name "name '../evil' may only use letters, digits" -- "$LIGHTCONE" render bad_name.lua --out out
 touch not_a_dir
 expect_error out_is_file "--out not_a_dir: cannot create the output directory" -- "$LIGHTCONE" render ok.lua --out not_a_dir
+# A size lightcone encode cannot take is said at the start of a render (here
+# one that then fails at once, so nothing 16384x16384 is rendered); a
+# showcase, which always encodes, refuses it.
+expect_error big_render "--out not_a_dir/sub: cannot create the output directory" -- \
+  "$LIGHTCONE" render ok.lua --out not_a_dir/sub --size 16384x16384
+grep -q "render: warning: these frames cannot be encoded to video by lightcone encode (16384x16384 frames are too large" \
+  big_render.err || fail "no warning that 16384x16384 frames cannot be encoded: $(cat big_render.err)"
+expect_error big_showcase "--size 16384x16384: 16384x16384 frames are too large for FFmpeg's encoders" -- \
+  "$LIGHTCONE" showcase --size 16384x16384 --out big_showcase
+[ -e big_showcase ] && fail "a refused showcase created its output directory"
+
+# The star field is a PNG: another extension is refused (PNG bytes were
+# written under sky.jpg), nothing is left under it.
+expect_error starfield_jpg "-o sky.jpg: the star field is written as an 8-bit sRGB PNG (name it .png)" -- \
+  "$LIGHTCONE" starfield -o sky.jpg --width 64
+[ -e sky.jpg ] && fail "starfield wrote sky.jpg"
+"$LIGHTCONE" starfield -o sky.PNG --width 64 2>/dev/null || fail "starfield -o sky.PNG"
+iinfo sky.PNG 2>&1 | grep -q "64 x   32, 3 channel, uint8 png" || fail "sky.PNG: $(iinfo sky.PNG 2>&1)"
+
+# Usage errors look like every other error and suggest what was meant.
+expect_error typo_command "lightcone: error: unknown command 'rendr' (did you mean 'render'?)" -- "$LIGHTCONE" rendr ok.lua
+expect_error typo_flag "lightcone: error: render: unknown option --fram (did you mean --frames?)" -- \
+  "$LIGHTCONE" render ok.lua --fram 0 --out out
+expect_error typo_flag2 "lightcone: error: contact-sheet: unknown option --colums (did you mean --columns?)" -- \
+  "$LIGHTCONE" contact-sheet out -o sheet.png --colums 3
+expect_error no_command "lightcone: error: no command given; the commands are geodesic, render" -- "$LIGHTCONE"
+expect_error required "lightcone: error: --output is required" -- "$LIGHTCONE" encode out
+expect_error not_a_number "lightcone: error: Could not convert: --crf = abc" -- "$LIGHTCONE" encode out -o x.mp4 --crf abc
+grep -q "Run 'lightcone encode --help' for the options." not_a_number.err || fail "no help hint: $(cat not_a_number.err)"
 
 # script NAME BEFORE [FRAME-BODY]: a one-frame shot with BEFORE on line 2
 # and FRAME-BODY (then a good scene) in frame(i), from line 5.

@@ -13,8 +13,30 @@ use_mpirun
 CHECK="$TOOLS/storyboard_check"
 ARGS=(--size 128x72 --rate 0.25 --progress 0)
 
+# --- Ctrl-C while the first sequence renders: the render stores what it
+# holds, says how far it got, and the showcase exits 130; the next run
+# resumes (its frames are compared with an uninterrupted run under mpirun
+# below).  The test hook LIGHTCONE_TEST_PAUSE_AFTER holds the render after
+# 100 working sets (a frame is 72), so the Ctrl-C lands mid-render.
+LIGHTCONE_TEST_PAUSE_AFTER=100 "$LIGHTCONE" showcase "${ARGS[@]}" --threads 2 --out sc 2>stop.log &
+pid=$!
+for _ in $(seq 1 1200); do
+  grep -q "test pause" stop.log && grep -q '^frame=' sc/frames/kerr_accrDisk/kerr_accrDisk.journal 2>/dev/null && break
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.05
+done
+kill -INT "$pid" || fail "the showcase ended before its Ctrl-C: $(cat stop.log)"
+rc=0
+wait "$pid" || rc=$?
+[ "$rc" -eq 130 ] || fail "showcase after Ctrl-C: exit $rc, want 130: $(cat stop.log)"
+grep -q "render: interrupted by Ctrl-C (SIGINT): 1 of 8 frames done (1 in this run); run the same command again to resume" \
+  stop.log || fail "no render message: $(cat stop.log)"
+grep -q "showcase: stopped; the same command resumes" stop.log || fail "no showcase message: $(cat stop.log)"
+[ -z "$(find sc -name '*.tmp-*')" ] || fail "temporaries left after Ctrl-C: $(find sc -name '*.tmp-*')"
+
 "$LIGHTCONE" showcase "${ARGS[@]}" --out sc 2>sc.log || fail "showcase: $(cat sc.log)"
 grep -q "showcase: done" sc.log || fail "no summary: $(cat sc.log)"
+grep -q "resuming: 1 of 8 frames already finished" sc.log || fail "the interrupted render was not resumed: $(cat sc.log)"
 
 # --- videos: 8 + 14 + 18 frames (4 per 16 s of story, first and last
 # included) and four 4-frame title cards, all at 0.25 fps ----------------

@@ -73,6 +73,42 @@ TEST(encode_sequence, HolesAreFoundAtTheSequenceStep) {
   EXPECT_EQ(t.missing, (std::vector<int>{30, 40}));
 }
 
+TEST(encode_sequence, AStepMayEndOnOneLastFrameOffTheStep) {
+  // --frames 0:95:8 (0, 8, ..., 88), then --frames 95: a preview ending on the last frame.
+  std::vector<int> frames;
+  for (int f = 0; f <= 88; f += 8) frames.push_back(f);
+  frames.push_back(95);
+  const lc::FrameSpacing s = lc::frame_spacing(frames);
+  EXPECT_EQ(s.step, 8);
+  EXPECT_TRUE(s.final_off_step);
+  EXPECT_TRUE(s.missing.empty());
+  EXPECT_EQ(lc::describe_range(frames, s), "0-88 every 8, then 95");
+  // Holes before it are still holes at the step.
+  frames.erase(frames.begin() + 2);  // 16
+  const lc::FrameSpacing t = lc::frame_spacing(frames);
+  EXPECT_EQ(t.step, 8);
+  EXPECT_EQ(t.missing, (std::vector<int>{16}));
+  // A last gap as long as the step or longer is no such frame: 0, 3, 9 lacks 6.
+  const lc::FrameSpacing u = lc::frame_spacing({0, 3, 9});
+  EXPECT_FALSE(u.final_off_step);
+  EXPECT_EQ(u.missing, (std::vector<int>{6}));
+  // Two frames are a progression of their own; contiguous frames have no last frame apart.
+  EXPECT_FALSE(lc::frame_spacing({0, 5}).final_off_step);
+  EXPECT_FALSE(lc::frame_spacing({0, 1, 2}).final_off_step);
+  EXPECT_EQ(lc::describe_range({0, 1, 2}, lc::frame_spacing({0, 1, 2})), "0-2");
+  EXPECT_EQ(lc::describe_range({0, 10, 20}, lc::frame_spacing({0, 10, 20})), "0-20 every 10");
+}
+
+TEST(encode_sequence, LostFramesOffTheStepAreHolesToo) {
+  // The frame numbers 0, 9, 10 look like every 9th plus a last frame; the
+  // journal knows 1-8 were rendered and are gone.
+  TempDir d;
+  lc::FrameSequence seq{"s", {0, 9, 10}, {}};
+  EXPECT_NO_THROW(lc::require_complete(seq, d.path));
+  const std::string message = error_of([&] { lc::require_complete(seq, d.path, {1, 2, 3, 4, 5, 6, 7, 8}); });
+  EXPECT_NE(message.find("shot s, frames 0-10: missing frames 1-8"), std::string::npos) << message;
+}
+
 TEST(encode_sequence, MissingFramesAreListedCompactly) {
   EXPECT_EQ(lc::describe_frames({12, 13, 14, 15, 40}, 1), "12-15, 40");
   EXPECT_EQ(lc::describe_frames({7}, 1), "7");

@@ -103,7 +103,7 @@ TEST(encode_writer, OptionsAreCheckedAgainstTheCodec) {
   o.preset = "medium";
   EXPECT_NE(error_of<std::invalid_argument>([&] { lc::validate(o); }).find("--preset medium"), std::string::npos);
   o = {};
-  o.fps = 0;
+  o.fps = {0, 1};
   EXPECT_NE(error_of<std::invalid_argument>([&] { lc::validate(o); }).find("--fps"), std::string::npos);
   o = {};
   o.codec = Codec::prores;
@@ -114,6 +114,78 @@ TEST(encode_writer, OptionsAreCheckedAgainstTheCodec) {
             std::string::npos);
   EXPECT_NE(error_of<std::invalid_argument>([] { lc::container_for("x.avi", lc::Codec::h264); }).find("'.avi'"),
             std::string::npos);
+}
+
+TEST(encode_writer, FrameRatesAreExactFractions) {
+  using lc::FrameRate;
+  EXPECT_EQ(lc::parse_frame_rate("30", "--fps"), (FrameRate{30, 1}));
+  EXPECT_EQ(lc::parse_frame_rate("30000/1001", "--fps"), (FrameRate{30000, 1001}));
+  EXPECT_EQ(lc::parse_frame_rate("48/2", "--fps"), (FrameRate{24, 1}));  // in lowest terms
+  EXPECT_EQ(lc::parse_frame_rate("29.97", "--fps"), (FrameRate{2997, 100}));
+  EXPECT_EQ(lc::parse_frame_rate("2.5e1", "--fps"), (FrameRate{25, 1}));
+  EXPECT_EQ(lc::parse_frame_rate(".5", "--fps"), (FrameRate{1, 2}));
+  // A long decimal becomes the nearest fraction with small terms (what the
+  // renderer records for a third: "0.3333333333333333").
+  EXPECT_EQ(lc::parse_frame_rate("0.3333333333333333", "--fps"), (FrameRate{1, 3}));
+  EXPECT_EQ(lc::parse_frame_rate("29.97002997002997", "--fps"), (FrameRate{30000, 1001}));
+  // The ends of the range are allowed, beyond them not.
+  EXPECT_EQ(lc::parse_frame_rate("1/1000", "--fps"), (FrameRate{1, 1000}));
+  EXPECT_EQ(lc::parse_frame_rate("1000", "--fps"), (FrameRate{1000, 1}));
+  const std::string range = "must be from 1/1000 (one frame every 1000 s) to 1000 frames per second";
+  for (const char* bad : {"1e-9", "0", "0.0009", "1001", "1000001/1000", "1/1001", "1e400", "0/5"})
+    EXPECT_EQ(error_of<std::invalid_argument>([&] { lc::parse_frame_rate(bad, "--fps"); }),
+              std::string("--fps ") + bad + ": " + range)
+        << bad;
+  for (const char* junk : {"", "abc", "-30", "+30", "inf", "nan", "30fps", "30 ", "30/", "/2", "30/-1", "1.5/2",
+                           "30/1001/2", "0x1e", "1234567890/1"})
+    EXPECT_NE(error_of<std::invalid_argument>([&] { lc::parse_frame_rate(junk, "--fps"); })
+                  .find(std::string("--fps '") + junk + "': expected frames per second"),
+              std::string::npos)
+        << junk;
+  EXPECT_EQ(error_of<std::invalid_argument>([] { lc::parse_frame_rate("30/0", "--fps"); }), "--fps 30/0: the denominator is 0");
+  EXPECT_EQ(lc::describe(FrameRate{24, 1}), "24");
+  EXPECT_EQ(lc::describe(FrameRate{2997, 100}), "29.97");
+  EXPECT_EQ(lc::describe(FrameRate{30000, 1001}), "30000/1001 (29.97)");
+  EXPECT_EQ(lc::frame_rate_divided(FrameRate{24, 1}, 8), (FrameRate{3, 1}));
+  EXPECT_EQ(lc::frame_rate_divided(FrameRate{30000, 1001}, 10), (FrameRate{3000, 1001}));
+  EXPECT_EQ(lc::frame_rate_near(3.0), (FrameRate{3, 1}));
+  EXPECT_EQ(lc::frame_rate_near(-1.0), (FrameRate{0, 1}));
+}
+
+TEST(encode_writer, SizesTheEncodersCannotTakeAreRefusedBeforeOpening) {
+  using lc::Codec;
+  // FFmpeg's av_image_check_size: (W+128)(H+128) < INT_MAX/8.
+  EXPECT_FALSE(lc::size_refusal(Codec::h264, 16384, 16128));
+  EXPECT_FALSE(lc::size_refusal(Codec::h264, 16254, 16254));
+  EXPECT_FALSE(lc::size_refusal(Codec::h264, 16253, 16253));  // padded to 16254 x 16254
+  EXPECT_TRUE(lc::size_refusal(Codec::h264, 16384, 16130));
+  EXPECT_TRUE(lc::size_refusal(Codec::h264, 16256, 16256));
+  const auto big = lc::size_refusal(Codec::h264, 16384, 16384);
+  ASSERT_TRUE(big);
+  EXPECT_NE(big->find("16384x16384 frames are too large for FFmpeg's encoders"), std::string::npos) << *big;
+  EXPECT_TRUE(lc::size_refusal(Codec::vp9, 16384, 16384));
+  // libx264 takes at most 16384 a side; SVT-AV1 64x64 to 16384x8704.
+  EXPECT_NE(lc::size_refusal(Codec::h264, 16400, 100).value_or("").find("libx264 takes at most 16384"), std::string::npos);
+  EXPECT_FALSE(lc::size_refusal(Codec::vp9, 16400, 100));
+  EXPECT_TRUE(lc::size_refusal(Codec::av1, 62, 64));
+  EXPECT_FALSE(lc::size_refusal(Codec::av1, 63, 64));  // padded to 64 x 64
+  EXPECT_FALSE(lc::size_refusal(Codec::av1, 64, 64));
+  EXPECT_FALSE(lc::size_refusal(Codec::av1, 16384, 8704));
+  EXPECT_NE(lc::size_refusal(Codec::av1, 1920, 8706).value_or("").find("64x64 to 16384x8704"), std::string::npos);
+  EXPECT_FALSE(lc::size_refusal(Codec::h264, 1, 1));
+  // Beyond H.264 level 6.2 (139264 macroblocks) it encodes, with a warning.
+  EXPECT_FALSE(lc::size_warning(Codec::h264, 8192, 4320));  // 512 x 270 = 138240 macroblocks
+  EXPECT_FALSE(lc::size_warning(Codec::h264, 4096, 2160));
+  EXPECT_NE(lc::size_warning(Codec::h264, 8192, 8192).value_or("").find("beyond H.264's largest level"),
+            std::string::npos);
+  EXPECT_FALSE(lc::size_warning(Codec::vp9, 8192, 8192));
+  // The writer refuses at once, naming the file and the limit, and leaves
+  // nothing (it used to fail inside the encoder with "(0x0): Invalid argument").
+  TempDir d;
+  const std::string message =
+      error_of<std::invalid_argument>([&] { lc::VideoWriter(d.path / "big.mp4", 16384, 16384, lc::EncodeOptions{}); });
+  EXPECT_NE(message.find("big.mp4: 16384x16384 frames are too large"), std::string::npos) << message;
+  EXPECT_EQ(d.entries(), 0u);
 }
 
 TEST(encode_writer, StillHoldsForTheFramesAsked) {

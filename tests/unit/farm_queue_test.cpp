@@ -220,6 +220,31 @@ TEST(FarmQueue, ThreadsShareTheQueue) {
   EXPECT_EQ(q.progress().stats.rays, 8 * 2 + 8 * 6);
 }
 
+// A signal noticed by the run stops the queue but is no error: the frame
+// completed before it is still stored, the one half done is not.
+TEST(FarmQueue, AnInterruptedRunStoresWhatIsComplete) {
+  WorkQueue q(settings(2, 4), StripeLayout(4, 2), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 3});
+  RecordingSink sink;
+  int signal = 0;
+  {
+    FarmRun run(q, sink, 1, [&signal] { return signal; });
+    for (int k = 0; k < 3; ++k) run.finish(*q.take(), {});  // frame 0 (two sets), half of frame 1
+    EXPECT_FALSE(run.over());
+    signal = 2;  // SIGINT arrives
+    EXPECT_TRUE(run.over());
+    EXPECT_EQ(run.interrupted(), 2);
+    EXPECT_FALSE(q.take().has_value()) << "work handed out after the signal";
+    const auto last = q.take_wait();
+    EXPECT_FALSE(last.has_value());
+    signal = 15;  // a second one does not replace the first
+    run.wait(std::chrono::milliseconds(1));
+    EXPECT_EQ(run.interrupted(), 2);
+    run.close();
+    EXPECT_FALSE(run.error().has_value());
+  }
+  EXPECT_EQ(sink.frames, (std::vector<int>{0}));
+}
+
 TEST(FarmMessages, ResultRoundTripsRowsAndLayers) {
   RenderSettings rs = settings(3, 5);
   rs.layers = true;

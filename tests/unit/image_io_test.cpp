@@ -297,6 +297,24 @@ TEST(ImageIo, ReadImageLinearKeepsFloatExrLinear) {
   EXPECT_TRUE(same_bits(lc::read_image_linear(file).rgb, im.rgb));
 }
 
+TEST(ImageIo, ImageSizeReadsTheHeaderOnly) {
+  ScratchDir dir;
+  const fs::path png = dir / "frame.png";
+  lc::write_png(png, ramp(8, 4));
+  EXPECT_EQ(lc::image_size(png), std::make_pair(8, 4));
+  // The same file cut off inside its pixel data: the size is still known
+  // (no pixel was decoded), reading the pixels fails.
+  std::ifstream in(png, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t data = bytes.find("IDAT");  // the first chunk of pixel data, after the header chunks
+  ASSERT_NE(data, std::string::npos);
+  const fs::path cut = dir / "cut.png";
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, data + 6);
+  EXPECT_EQ(lc::image_size(cut), std::make_pair(8, 4));
+  EXPECT_THROW(lc::read_image_linear(cut), std::runtime_error);
+  EXPECT_NE(error_of([&] { lc::image_size(dir / "none.png"); }).find("none.png': no such file"), std::string::npos);
+}
+
 // ------------------------------------------------------------ Texture ----
 
 TEST(Texture, LoadErrorsNameTheFileAndTheReason) {

@@ -4,7 +4,9 @@
 // else's file is refused.
 
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -136,6 +138,114 @@ TEST(Journal, WriterCreatesLazilyAndCutsTornTail) {
   EXPECT_EQ(j.frames.count(2), 1u);
   EXPECT_EQ(slurp(file), journal_header_line() + "\n" + journal_frame_line(frame(0)) + "\n" +
                              journal_frame_line(frame(2)) + "\n");
+}
+
+TEST(Journal, InputPartsRoundTripAndOlderLinesLackThem) {
+  JournalFrame f = frame(4);
+  f.parts = {"00000000000000aa", "00000000000000bb"};
+  JournalFrame no_sky = frame(5);
+  no_sky.parts.script = "00000000000000aa";
+  const std::string text = journal_text(1) + journal_frame_line(f) + "\n" + journal_frame_line(no_sky) + "\n";
+  const JournalContents j = parse_journal(text, "j");
+  EXPECT_EQ(j.frames.at(4).parts, f.parts);
+  EXPECT_EQ(j.frames.at(5).parts, no_sky.parts);
+  EXPECT_EQ(j.frames.at(0).parts, InputParts{});  // a line without them (as older journals wrote)
+  EXPECT_EQ(j.last_frame, 5);
+  EXPECT_EQ(parse_journal(journal_text(3), "j").last_frame, 2);
+  EXPECT_EQ(parse_journal(journal_header_line() + "\n", "j").last_frame, -1);
+}
+
+// A journal built line by line, as renders append to it.
+struct JournalBuilder {
+  std::string text = journal_header_line() + "\n";
+  void input(const std::string& path, const std::string& hash) { text += journal_input_line(hash, path) + "\n"; }
+  void frame(int n, const std::string& script, const std::string& sky = "", int width = 48) {
+    JournalFrame f = ::lc::farm::frame(n);
+    f.settings = {width, 32, 2, true, true};
+    f.inputs = script;  // the whole hash, as far as these tests care
+    f.parts = {script, sky};
+    text += journal_frame_line(f) + "\n";
+  }
+  JournalContents contents() const { return parse_journal(text, "j"); }
+};
+
+// Frames 0..n-1 present, with the PNG sizes frame() records.
+std::map<int, std::uintmax_t> present(std::initializer_list<int> frames) {
+  std::map<int, std::uintmax_t> out;
+  for (int f : frames) out[f] = 200 + static_cast<std::uintmax_t>(f);
+  return out;
+}
+
+TEST(Journal, StaleFramesAreThoseOfAnEarlierScriptThanTheLatestRender) {
+  // 0-4 rendered; the script changed; a --force render stopped after 0-1.
+  JournalBuilder b;
+  b.input("/s/shot.lua", "00000000000000a1");
+  for (int f = 0; f < 5; ++f) b.frame(f, "00000000000000a1");
+  b.input("/s/shot.lua", "00000000000000a2");
+  b.frame(1, "00000000000000a2");
+  b.frame(0, "00000000000000a2");
+  const StaleFrames s = stale_frames(b.contents(), present({0, 1, 2, 3, 4}));
+  EXPECT_EQ(s.earlier_script, (std::vector<int>{2, 3, 4}));
+  EXPECT_TRUE(s.other_settings.empty());
+  EXPECT_TRUE(s.unrecorded.empty());
+  EXPECT_TRUE(s.any());
+  // The script changed back and frame 3 was rendered again: now 0-1 are the odd ones.
+  b.input("/s/shot.lua", "00000000000000a1");
+  b.frame(3, "00000000000000a1");
+  EXPECT_EQ(stale_frames(b.contents(), present({0, 1, 2, 3, 4})).earlier_script, (std::vector<int>{0, 1}));
+}
+
+TEST(Journal, SkyImagesTellAnEarlierVersionFromAnotherImage) {
+  JournalBuilder b;
+  b.input("/s/a.png", "00000000000000c1");
+  b.input("/s/b.png", "00000000000000d1");
+  b.frame(0, "00000000000000a1", "00000000000000c1");  // frames 0-1 under sky a, 2-3 under sky b
+  b.frame(1, "00000000000000a1", "00000000000000c1");
+  b.frame(2, "00000000000000a1", "00000000000000d1");
+  b.frame(3, "00000000000000a1", "00000000000000d1");
+  EXPECT_FALSE(stale_frames(b.contents(), present({0, 1, 2, 3})).any());
+  // b.png changed and frame 2 was rendered again: 3 still shows the old b.
+  b.input("/s/b.png", "00000000000000d2");
+  b.frame(2, "00000000000000a1", "00000000000000d2");
+  const StaleFrames s = stale_frames(b.contents(), present({0, 1, 2, 3}));
+  EXPECT_EQ(s.earlier_sky, (std::vector<int>{3}));
+  EXPECT_TRUE(s.earlier_script.empty());
+}
+
+TEST(Journal, OtherSettingsUnrecordedAndAbsentFrames) {
+  JournalBuilder b;
+  for (int f = 0; f < 6; ++f) b.frame(f, "00000000000000a1", "", 48);
+  b.frame(4, "00000000000000a1", "", 96);  // the latest render: twice the size
+  b.frame(5, "00000000000000a1", "", 96);
+  auto frames = present({0, 1, 4, 5, 6, 7});
+  frames[1] = 999;  // a PNG other than the one journalled (stopped between its rename and the journal)
+  const StaleFrames s = stale_frames(b.contents(), frames);
+  EXPECT_EQ(s.other_settings, (std::vector<int>{0}));
+  EXPECT_EQ(s.unrecorded, (std::vector<int>{1, 6, 7}));  // 6 and 7 have no line at all
+  // 2 and 3 are journalled but gone; as the old size, they are not holes of the new render.
+  EXPECT_TRUE(s.absent.empty());
+  b.frame(2, "00000000000000a1", "", 96);
+  EXPECT_EQ(stale_frames(b.contents(), present({0, 4, 5})).absent, (std::vector<int>{2}));
+  EXPECT_TRUE(stale_frames(b.contents(), present({4, 5})).absent.empty());  // outside the frames present
+}
+
+TEST(Journal, OlderLinesCompareByTheirWholeInputHash) {
+  std::string text = journal_header_line() + "\n";
+  const int order[] = {0, 1, 2, 1};  // lines without input parts; frame 1 again, from other inputs
+  for (int k = 0; k < 4; ++k) {
+    JournalFrame f = frame(order[k]);
+    f.settings.adaptive = true;
+    if (k == 3) f.inputs = "fedcba9876543210";
+    text += journal_frame_line(f) + "\n";
+  }
+  const StaleFrames s = stale_frames(parse_journal(text, "j"), present({0, 1, 2}));
+  EXPECT_EQ(s.earlier_script, (std::vector<int>{0, 2}));
+}
+
+TEST(Journal, WithoutAJournalNothingIsStale) {
+  const StaleFrames s = stale_frames(JournalContents{}, present({0, 1, 2}));
+  EXPECT_FALSE(s.any());
+  EXPECT_TRUE(s.absent.empty());
 }
 
 TEST(Journal, MissingFileReadsEmpty) {

@@ -71,6 +71,14 @@ TEST(ShowcasePlan, BadChoicesNameTheFlag) {
   }
   EXPECT_THROW(plan_showcase({ShowcaseQuality::preview, {}, 0.0}, project_shots), std::invalid_argument);
   EXPECT_THROW(plan_showcase({ShowcaseQuality::preview, "wide", {}}, project_shots), std::invalid_argument);
+  // A size the video cannot have is refused before hours of rendering.
+  try {
+    plan_showcase({ShowcaseQuality::preview, "16384x16384", {}}, project_shots);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--size 16384x16384: 16384x16384 frames are too large"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ShowcasePlan, ShotsThatCannotBeJoinedAreRefused) {
