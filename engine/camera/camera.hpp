@@ -14,6 +14,7 @@
 #include "camera/camera_axes.hpp"
 #include "camera/pinhole.hpp"
 #include "core/fields.hpp"
+#include "core/registry.hpp"
 
 namespace lc {
 
@@ -30,39 +31,24 @@ concept CameraModel = requires(const C& c, const typename C::Params& p, double p
   { c.axes() } -> std::same_as<const CameraAxes&>;
 };
 
-using CameraKinds = std::variant<PinholeCamera>;
+// Every camera kind, one line each.
+using CameraRegistry = Registry<PinholeCamera>;
 
 namespace detail {
-template <class V>
-struct CameraRegistry;
 template <class... C>
-struct CameraRegistry<std::variant<C...>> {
-  static_assert((CameraModel<C> && ...), "every registered camera must satisfy CameraModel");
-  using Spec = std::variant<typename C::Params...>;
-};
+constexpr bool all_cameras(Registry<C...>*) {
+  return (CameraModel<C> && ...);
+}
 }  // namespace detail
+static_assert(detail::all_cameras(static_cast<CameraRegistry*>(nullptr)), "every registered camera must satisfy CameraModel");
 
 // The camera a shot asked for: one of the registered kinds' parameters.
-using CameraSpec = detail::CameraRegistry<CameraKinds>::Spec;
-
-// The name of the kind a spec is for ("camera": lc.camera{...}).
-inline std::string_view camera_name(const CameraSpec& spec) {
-  static constexpr auto names = []<class... C>(std::variant<C...>*) {
-    return std::array<std::string_view, sizeof...(C)>{C::name...};
-  }(static_cast<CameraKinds*>(nullptr));
-  return names[spec.index()];
-}
-
-// f(TypeTag-like) for each registered camera kind C: f(static_cast<C*>(nullptr)).
-template <class F>
-void for_each_camera_type(F&& f) {
-  [&]<class... C>(std::variant<C...>*) { (f(static_cast<C*>(nullptr)), ...); }(static_cast<CameraKinds*>(nullptr));
-}
+using CameraSpec = CameraRegistry::Spec;
 
 // The camera of a frame, for its image size.
 class Camera {
  public:
-  Camera(const CameraSpec& spec, int width, int height) : kind_(build(spec, width, height)) {}
+  Camera(const CameraSpec& spec, int width, int height) : kind_(CameraRegistry::build(spec, width, height)) {}
 
   Vec3 direction(double px, double py) const {
     return std::visit([&](const auto& c) { return c.direction(px, py); }, kind_);
@@ -72,15 +58,7 @@ class Camera {
   }
 
  private:
-  // The kind whose parameters the spec holds (same position in both variants).
-  template <std::size_t I = 0>
-  static CameraKinds build(const CameraSpec& spec, int width, int height) {
-    using C = std::variant_alternative_t<I, CameraKinds>;
-    if constexpr (I + 1 < std::variant_size_v<CameraKinds>)
-      if (spec.index() != I) return build<I + 1>(spec, width, height);
-    return C(std::get<I>(spec), width, height);
-  }
-  CameraKinds kind_;
+  CameraRegistry::Kinds kind_;
 };
 
 }  // namespace lc

@@ -77,8 +77,7 @@ std::string to_json(const FrameScene& fs, int frame, const std::string& evaluate
   else
     out += fmt::format("\"observer\": {{\"kind\": \"{}\", \"position\": {}}}, ",
                        o.kind == ObserverKind::zamo ? "zamo" : "static", position(o.position, polar));
-  out += fmt::format("\"camera\": {{\"kind\": \"{}\"{}}}, ", camera_name(fs.camera),
-                     std::visit([](const auto& c) { return fields_json(c); }, fs.camera));
+  out += "\"camera\": " + CameraRegistry::json(fs.camera) + ", ";
   if (fs.disk)
     out += fmt::format(
         "\"disk\": {{\"inner\": {}, \"outer\": {}, \"rings\": {}, \"sectors\": {}, \"colors\": [{}, {}]}}, ",
@@ -86,8 +85,7 @@ std::string to_json(const FrameScene& fs, int frame, const std::string& evaluate
         color(fs.disk->color_b));
   else
     out += "\"disk\": null, ";
-  out += fmt::format("\"sky\": {{\"kind\": \"{}\"{}}}, ", sky_name(fs.sky),
-                     std::visit([](const auto& k) { return fields_json(k); }, fs.sky));
+  out += "\"sky\": " + SkyRegistry::json(fs.sky) + ", ";
   out += "\"objects\": [";
   for (std::size_t i = 0; i < fs.spheres.size(); ++i) {
     const SphereSpec& s = fs.spheres[i];

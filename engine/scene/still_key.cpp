@@ -36,15 +36,13 @@ std::string still_key(const FrameScene& fs) {
       // Moving: no two of its frames are the same scene shifted in time.
       return {};
   }
-  k += fmt::format("|camera {}", camera_name(fs.camera));
-  k += std::visit([](const auto& c) { return fields_key(c); }, fs.camera);
+  k += "|camera " + CameraRegistry::key(fs.camera);
   if (fs.disk) {
     const DiskSpec& d = *fs.disk;
     k += fmt::format("|disk {} {} {} {} {} {}", hex(d.inner), hex(d.outer), d.rings, d.sectors, color(d.color_a),
                      color(d.color_b));
   }
-  k += fmt::format("|sky {}", sky_name(fs.sky));
-  k += std::visit([](const auto& sky) { return fields_key(sky); }, fs.sky);
+  k += "|sky " + SkyRegistry::key(fs.sky);
   for (const SphereSpec& sp : fs.spheres) {
     k += fmt::format("|sphere {} {} {} {} {}", hex(sp.radius), sp.rows, sp.columns, color(sp.color_a), color(sp.color_b));
     if (sp.position)

@@ -104,9 +104,9 @@ void install_engine_api(lua::Sandbox& sandbox) {
   };
   // Every registered spacetime (spacetime/spacetime.hpp) by its name.
   for_each_spacetime_type([&](auto tag) { add(decltype(tag)::type::name, validate_spacetime); });
-  for_each_sky_type([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_sky); });
+  SkyRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_sky); });
   for (const char* observer : {"static_observer", "zamo", "free_fall"}) add(observer, validate_observer);
-  for_each_camera_type([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera); });
+  CameraRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera); });
   add("disk", validate_disk);
   add("worldline", validate_worldline);
   add("sphere", validate_sphere);

@@ -41,6 +41,27 @@ void expect_kind(TableReader& t, std::initializer_list<const char*> kinds, const
   fail(t, fmt::format("expected a value made by {}{}", made_by, k.empty() ? "" : fmt::format(", got a {}", k)));
 }
 
+// The parameters of whichever kind of registry R (core/registry.hpp) made
+// the table: its declared fields read and checked.  `what` and `more` name
+// the constructors in the error for a table none of them made.
+template <class R>
+typename R::Spec read_kind(TableReader& t, const char* what, const char* more = "") {
+  const std::string k = kind_of(t);
+  std::optional<typename R::Spec> out;
+  std::string kinds;
+  R::for_each([&](auto* kind) {
+    using K = std::remove_pointer_t<decltype(kind)>;
+    kinds += fmt::format("{}lc.{}{{...}}", kinds.empty() ? "" : ", ", K::name);
+    if (out || k != K::name) return;
+    typename K::Params p;
+    read_fields(t, p);
+    t.finish();
+    out = p;
+  });
+  if (!out) fail(t, fmt::format("expected a value made by {}: {}{}", what, kinds, more));
+  return *out;
+}
+
 double positive(TableReader& t, const char* key, std::optional<double> fallback = std::nullopt) {
   const double v = fallback ? t.number_or(key, *fallback) : t.number(key);
   if (!(v > 0.0)) fail(t, fmt::format("field '{}' must be > 0, got {}", key, v));
@@ -109,22 +130,7 @@ Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::s
   return p.coords;
 }
 
-CameraSpec read_camera(TableReader& t) {
-  const std::string k = kind_of(t);
-  std::optional<CameraSpec> out;
-  std::string kinds;
-  for_each_camera_type([&](auto* kind) {
-    using C = std::remove_pointer_t<decltype(kind)>;
-    kinds += fmt::format("{}lc.{}{{...}}", kinds.empty() ? "" : ", ", C::name);
-    if (out || k != C::name) return;
-    typename C::Params p;
-    read_fields(t, p);
-    t.finish();
-    out = p;
-  });
-  if (!out) fail(t, fmt::format("expected a value made by a camera constructor: {}", kinds));
-  return *out;
-}
+CameraSpec read_camera(TableReader& t) { return read_kind<CameraRegistry>(t, "a camera constructor"); }
 
 DiskSpec read_disk(TableReader& t) {
   expect_kind(t, {"disk"}, "lc.disk{...}");
@@ -141,20 +147,7 @@ DiskSpec read_disk(TableReader& t) {
 }
 
 SkySpec read_sky(TableReader& t) {
-  const std::string k = kind_of(t);
-  std::optional<SkySpec> out;
-  std::string kinds;
-  for_each_sky_type([&](auto* kind) {
-    using K = std::remove_pointer_t<decltype(kind)>;
-    kinds += fmt::format("lc.{}{{...}}, ", K::name);
-    if (out || k != K::name) return;
-    typename K::Params p;
-    read_fields(t, p);
-    t.finish();
-    out = p;
-  });
-  if (!out) fail(t, fmt::format("expected a value made by a sky constructor: {}or lc.starfield{{...}}", kinds));
-  return *out;
+  return read_kind<SkyRegistry>(t, "a sky constructor", ", or lc.starfield{...}");
 }
 
 WorldlineSpec read_worldline(TableReader& t) {

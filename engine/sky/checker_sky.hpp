@@ -12,7 +12,7 @@
 #include "core/color.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
-#include "sky/longitude.hpp"
+#include "sky/texture_sky.hpp"
 
 namespace lc {
 

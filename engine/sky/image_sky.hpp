@@ -16,13 +16,13 @@
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "image/texture.hpp"
-#include "sky/longitude.hpp"
+#include "sky/texture_sky.hpp"
 
 namespace lc {
 
 class ShotResources;
 
-class ImageSky {
+class ImageSky : public TextureSky {
  public:
   static constexpr std::string_view name = "sky_image";
   struct Params {
@@ -39,15 +39,6 @@ class ImageSky {
   static std::vector<std::string> assets(const Params& p) { return {p.file}; }
 
   ImageSky(const Params& p, ShotResources& res);
-
-  // Colour in the direction (theta from +z, phi = atan2(y, x)).
-  Color color(double theta, double phi) const {
-    return equirectangular_color(*texture_, theta, rotated_longitude(phi, rotate_));
-  }
-
- private:
-  double rotate_;
-  std::shared_ptr<const Texture> texture_;
 };
 
 }  // namespace lc

@@ -15,6 +15,7 @@
 
 #include "core/color.hpp"
 #include "core/fields.hpp"
+#include "core/registry.hpp"
 #include "sky/checker_sky.hpp"
 #include "sky/image_sky.hpp"
 #include "sky/star_sky.hpp"
@@ -36,45 +37,38 @@ concept SkyModel = requires(const K& k, const typename K::Params& p, ShotResourc
   { k.color(a, a) } -> std::same_as<Color>;
 };
 
-using SkyKinds = std::variant<CheckerSky, ImageSky, StarSky>;
+// Every sky kind, one line each.
+using SkyRegistry = Registry<CheckerSky, ImageSky, StarSky>;
 
 namespace detail {
-template <class V>
-struct SkyRegistry;
 template <class... K>
-struct SkyRegistry<std::variant<K...>> {
-  static_assert((SkyModel<K> && ...), "every registered sky must satisfy SkyModel");
-  using Spec = std::variant<typename K::Params...>;
-  static constexpr std::array<std::string_view, sizeof...(K)> names = {K::name...};
-};
+constexpr bool all_skies(Registry<K...>*) {
+  return (SkyModel<K> && ...);
+}
 }  // namespace detail
+static_assert(detail::all_skies(static_cast<SkyRegistry*>(nullptr)), "every registered sky must satisfy SkyModel");
 
 // The sky a shot asked for: one of the registered kinds' parameters.
-using SkySpec = detail::SkyRegistry<SkyKinds>::Spec;
+using SkySpec = SkyRegistry::Spec;
 
-// f(static_cast<K*>(nullptr)) for each registered sky kind K.
-template <class F>
-void for_each_sky_type(F&& f) {
-  [&]<class... K>(std::variant<K...>*) { (f(static_cast<K*>(nullptr)), ...); }(static_cast<SkyKinds*>(nullptr));
-}
-
-// The name of the kind a spec is for ("sky_checker": lc.sky_checker{...}).
-inline std::string_view sky_name(const SkySpec& spec) { return detail::SkyRegistry<SkyKinds>::names[spec.index()]; }
-
-// The files a sky reads.
+// The files a sky reads (for a shot's input hash).
 inline std::vector<std::string> sky_assets(const SkySpec& spec) {
-  return [&]<class... K>(std::variant<K...>*) {
-    std::vector<std::string> out;
-    std::size_t i = 0;
-    ((spec.index() == i++ ? (void)(out = K::assets(std::get<typename K::Params>(spec))) : void()), ...);
-    return out;
-  }(static_cast<SkyKinds*>(nullptr));
+  return std::visit(
+      [](const auto& p) {
+        std::vector<std::string> out;
+        SkyRegistry::for_each([&](auto* kind) {
+          using K = std::remove_pointer_t<decltype(kind)>;
+          if constexpr (std::is_same_v<typename K::Params, std::decay_t<decltype(p)>>) out = K::assets(p);
+        });
+        return out;
+      },
+      spec);
 }
 
 // The sky of a frame, built.
 class Sky {
  public:
-  Sky(const SkySpec& spec, ShotResources& res) : kind_(build(spec, res)) {}
+  Sky(const SkySpec& spec, ShotResources& res) : kind_(SkyRegistry::build(spec, res)) {}
 
   // Colour in the direction (theta from +z, phi = atan2(y, x)).
   Color color(double theta, double phi) const {
@@ -82,14 +76,7 @@ class Sky {
   }
 
  private:
-  template <std::size_t I = 0>
-  static SkyKinds build(const SkySpec& spec, ShotResources& res) {
-    using K = std::variant_alternative_t<I, SkyKinds>;
-    if constexpr (I + 1 < std::variant_size_v<SkyKinds>)
-      if (spec.index() != I) return build<I + 1>(spec, res);
-    return K(std::get<I>(spec), res);
-  }
-  SkyKinds kind_;
+  SkyRegistry::Kinds kind_;
 };
 
 }  // namespace lc

@@ -6,6 +6,6 @@ namespace lc {
 
 // The field is made once per shot, seed and size (ShotResources).
 StarSky::StarSky(const Params& p, ShotResources& res)
-    : rotate_(p.rotate), texture_(res.starfield(p.seed, p.resolution)) {}
+    : TextureSky(p.rotate, res.starfield(p.seed, p.resolution)) {}
 
 }  // namespace lc

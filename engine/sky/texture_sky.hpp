@@ -1,0 +1,39 @@
+#pragma once
+// What every sky does with a direction first: its longitude turned by the
+// sky's `rotate` (degrees), back in [0, 2 pi); and the skies that look an
+// equirectangular texture up there (image_sky, star_sky).
+
+#include <cmath>
+#include <memory>
+#include <utility>
+
+#include "core/color.hpp"
+#include "core/constants.hpp"
+#include "image/texture.hpp"
+
+namespace lc {
+
+inline double rotated_longitude(double phi, double rotate_degrees) {
+  phi += rotate_degrees * degree;
+  return phi - two_pi * std::floor(phi / two_pi);
+}
+
+// A sky that is an equirectangular texture: longitude 0 at the left edge,
+// the top edge at theta = 0, turned by `rotate` degrees.
+class TextureSky {
+ public:
+  TextureSky(double rotate, std::shared_ptr<const Texture> texture) : rotate_(rotate), texture_(std::move(texture)) {}
+
+  // Colour in the direction (theta from +z, phi = atan2(y, x)).
+  Color color(double theta, double phi) const {
+    Color c;
+    texture_->sample(rotated_longitude(phi, rotate_) / two_pi, theta / pi, c.data());
+    return c;
+  }
+
+ private:
+  double rotate_;
+  std::shared_ptr<const Texture> texture_;
+};
+
+}  // namespace lc
