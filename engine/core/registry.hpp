@@ -33,14 +33,30 @@ struct Registry {
     (f(static_cast<K*>(nullptr)), ...);
   }
 
-  // "name field=value ...", exactly: what frames are compared by.
+  // "name field=value ...", exactly: what frames are compared by.  A kind
+  // whose Params hold more than their declared fields (a sphere's
+  // placement) adds it with extra_key().
   static std::string key(const Spec& s) {
-    return std::string(name(s)) + std::visit([](const auto& p) { return fields_key(p); }, s);
+    return std::string(name(s)) + std::visit(
+                                      [](const auto& p) {
+                                        std::string k = fields_key(p);
+                                        if constexpr (requires { p.extra_key(); }) k += p.extra_key();
+                                        return k;
+                                      },
+                                      s);
   }
 
-  // {"kind": "name", <each field>: value}.
-  static std::string json(const Spec& s) {
-    return fmt::format("{{\"kind\": \"{}\"{}}}", name(s), std::visit([](const auto& p) { return fields_json(p); }, s));
+  // {"kind": "name", <each field>: value}, and extra_json(polar) where a
+  // kind has it (polar: whether the scene's positions are polar).
+  static std::string json(const Spec& s, bool polar = false) {
+    return fmt::format("{{\"kind\": \"{}\"{}}}", name(s), std::visit(
+                                                              [polar](const auto& p) {
+                                                                std::string j = fields_json(p);
+                                                                if constexpr (requires { p.extra_json(polar); })
+                                                                  j += p.extra_json(polar);
+                                                                return j;
+                                                              },
+                                                              s));
   }
 
   // The kind a spec is for, made from its parameters and `args`.

@@ -30,11 +30,14 @@ AccuracyReport compare_samples(const std::vector<RaySample>& reference, const st
       ++rep.kind_mismatches;
       continue;
     }
-    if (a.kind == HitKind::disk && scene.disk) {
-      const DiskSpec& d = *scene.disk;
+    // The bench's disk metrics: the first disk of the scene's.
+    const Disk::Params* d = nullptr;
+    for (const ObjectSpec& o : scene.objects)
+      if (!d) d = std::get_if<Disk::Params>(&o);
+    if (a.kind == HitKind::disk && d) {
       auto cell = [&](const RaySample& s) {
-        return std::pair{static_cast<long>(std::floor((s.r - d.inner) / (d.outer - d.inner) * d.rings)),
-                         static_cast<long>(std::floor(s.phi / two_pi * d.sectors))};
+        return std::pair{static_cast<long>(std::floor((s.r - d->inner) / (d->outer - d->inner) * d->rings)),
+                         static_cast<long>(std::floor(s.phi / two_pi * d->sectors))};
       };
       if (cell(a) != cell(b)) ++rep.cell_mismatches;
       dr.push_back(std::abs(a.r - b.r));

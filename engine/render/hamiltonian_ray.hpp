@@ -17,7 +17,6 @@
 #include "observer/ray_direction.hpp"
 #include "render/hit.hpp"
 #include "render/scene.hpp"
-#include "render/sphere_test.hpp"
 #include "spacetime/chart.hpp"
 
 namespace lc {
@@ -77,59 +76,31 @@ class HamiltonianRay {
   }
 
   // The visitor: sees each accepted step; true when the ray hit an object
-  // (res filled).
+  // (res filled).  Every object of the scene tests the step (the earliest
+  // hit wins); a crossing of the equatorial plane before where the ray ends
+  // counts towards hit.order (located only when a hit in the step makes its
+  // order matter, or an object located it anyway).
   bool visit(const RayStep& step, RayResult& res) {
     const S& st = sc_.spacetime;
     on_step_(step.start(), step.t0);
-    const double l1 = step.t0 + step.h;
-    double best = l1 + 1.0;
-    int hit_sphere = -1;
-    std::optional<StepHull> hull;  // for the spheres the coarse boxes let through
-    for (std::size_t k = 0; k < sc_.spheres.size(); ++k) {
-      const Sphere& sphere = sc_.spheres[k];
-      const SphereReach reach = detail::sphere_near_step(sphere, step);
-      if (reach == SphereReach::never) continue;
-      const bool timeless_yet = !out_.depends_on_time;
-      if (reach == SphereReach::not_now && !timeless_yet) continue;
-      if (!hull) hull = step_hull(step);
-      // Near a moving sphere's path what the ray sees depends on where the
-      // sphere is at the frame's time: no other frame may reuse it.  Near
-      // one at rest too, though only to rounding: the sphere test works in
-      // absolute coordinate time, so shifted in time its samples round
-      // differently, and a grazing hit could flip.
-      if (timeless_yet && hull_near_centres(*hull, sphere, sphere.life_lo, sphere.life_hi)) out_.depends_on_time = true;
-      if (reach == SphereReach::not_now) continue;
-      double none = std::numeric_limits<double>::quiet_NaN();
-      double& t_near = k < sphere_times_.size() ? sphere_times_[k] : none;
-      if (auto l = detail::sphere_entry(st, sphere, step, *hull, t_near); l && *l < best) {
-        best = *l;
-        hit_sphere = static_cast<int>(k);
+    StepTest t(step, out_.depends_on_time, warm_);
+    std::size_t winner = no_object;
+    for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
+      if (const auto l = o.first_hit(st, t, index)) {
+        t.take(*l);
+        winner = index;
       }
+    });
+    if (t.crosses_equator()) {
+      const double lz = t.found() || t.equator_located() ? t.equator_crossing() : step.t0;
+      if (lz < t.best()) ++crossings_;
     }
-    const double z0 = step.start()[3], z1 = step.component(3, l1);
-    if ((z0 > 0.0) != (z1 > 0.0) && z0 != 0.0) {
-      // Without a disk a crossing only counts (hit.order); it is located only
-      // when a sphere hit in the same step makes its order matter.
-      const double lz = sc_.disk || hit_sphere >= 0
-                            ? locate_crossing(step, [](const RayState& y) { return y[3]; }, z0, z1)
-                            : step.t0;
-      if (!sc_.disk) {
-        if (lz < best) ++crossings_;
-      } else if (lz < best) {
-        const RayState y = step.at(lz);
-        double t, r, phi;
-        scene_polar(st, {y[0], y[1], y[2], y[3]}, t, r, phi);
-        if (r >= sc_.disk->spec.inner && r <= sc_.disk->spec.outer)
-          return hit(HitKind::disk, sc_.disk->color(r, phi), y, lz, res);
-        ++crossings_;
-      }
-    }
-    if (hit_sphere >= 0) {
-      const RayState y = step.at(best);
-      const Sphere& sp = sc_.spheres[hit_sphere];
-      return hit(HitKind::object, sp.color(detail::sphere_local(st, sp, {y[0], y[1], y[2], y[3]})), y, best, res);
-    }
-    return false;
+    if (winner == no_object) return false;
+    const RayState y = step.at(t.best());
+    for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
+      if (index == winner) hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y), y, t.best(), res);
+    });
+    return true;
   }
 
   // The sample, once the integration has ended with `res`.
@@ -177,9 +148,8 @@ class HamiltonianRay {
   Vec4 p0_;
   RaySample out_;
   int crossings_ = 0;
-  // Per sphere (the first few), the last simultaneity answer along this ray.
-  std::array<double, 4> sphere_times_ = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
-                                         std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  static constexpr std::size_t no_object = static_cast<std::size_t>(-1);
+  ObjectWarmStarts warm_ = no_warm_starts();  // per object (the first few), carried along the ray
 };
 
 }  // namespace detail

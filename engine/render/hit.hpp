@@ -2,13 +2,14 @@
 // What one traced ray (one sample) found: its colour and the data-layer
 // values of docs/layers.md.
 
+#include <array>
+
+#include "core/color.hpp"
+#include "core/hit_kind.hpp"
 #include "geodesic/stop_reason.hpp"
-#include "scene/frame_scene.hpp"
 
 namespace lc {
 
-// Values of the hit.kind layer.
-enum class HitKind : int { sky = 0, disk = 1, horizon = 2, object = 3, gave_up = 4 };
 
 struct RaySample {
   Color color{0.0f, 0.0f, 0.0f};  // linear RGB

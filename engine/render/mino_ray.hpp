@@ -64,15 +64,16 @@ class MinoRay {
       const double lz = locate_crossing(step, [](const MinoState& y) { return y[2]; }, step.t0, l1, c0, c1);
       const Event e = event_at(step, lz);
       fill_event(e);
-      if (sc_.disk && out_.r >= sc_.disk->spec.inner && out_.r <= sc_.disk->spec.outer) {
-        out_.kind = HitKind::disk;
-        out_.color = sc_.disk->color(out_.r, out_.phi);
-        res.reason = StopReason::hit;
-        res.y = e.y;
-        res.lambda = lz;
-        at_hit_ = e;
-        return true;
-      }
+      for (const Disk& disk : std::get<std::vector<Disk>>(sc_.objects))
+        if (disk.covers(out_.r)) {
+          out_.kind = Disk::hit_kind;
+          out_.color = disk.color(out_.r, out_.phi);
+          res.reason = StopReason::hit;
+          res.y = e.y;
+          res.lambda = lz;
+          at_hit_ = e;
+          return true;
+        }
       if (e.y[1] > u_escape_) ++crossings_;  // as the Kerr–Schild path counts: up to the escape radius
     }
     if (u0 > u_escape_ && u1 <= u_escape_) {

@@ -12,7 +12,8 @@
 
 #include "geodesic/null_ray.hpp"
 #include "camera/camera.hpp"
-#include "render/objects.hpp"
+#include "objects/objects.hpp"
+#include "sky/sky.hpp"
 
 namespace lc {
 
@@ -24,9 +25,8 @@ struct SceneOf {
   Mat4 metric{};         // at the observer
   Tetrad frame{};
   Camera camera;
-  std::optional<Disk> disk;
   Sky sky;
-  std::vector<Sphere> spheres;
+  ObjectLists objects;
   RayOptions rays;
   Vec4 observer_scene{};  // the observer's event in scene coordinates, exact where the shot gave it (on the axis)
   // still_key() of the frame's scene where the spacetime is stationary, else

@@ -18,35 +18,8 @@ namespace {
 template <class S>
 double free_radius(const SceneOf<S>& sc) {
   double reach = sc.spacetime.photon_reach();
-  if (sc.disk) reach = std::max(reach, sc.disk->spec.outer + std::abs(sc.spacetime.asymptotic_mass()));
-  for (const Sphere& sp : sc.spheres)
-    for (int k = 0; k < 3; ++k)
-      reach = std::max({reach, std::abs(sp.life_lo[k]) + 2.0 * sp.spec.radius, std::abs(sp.life_hi[k]) + 2.0 * sp.spec.radius});
+  for_each_object(sc.objects, [&](const auto& o, std::size_t) { reach = std::max(reach, o.reach(sc.spacetime.asymptotic_mass())); });
   return 2.0 * std::max(reach, 1.0);
-}
-
-// A free-falling sphere's worldline must last as long as this frame's rays
-// may meet it: after its end the body would be nowhere (its centre is held
-// at the last event, whose time no ray point shares).  Light reaches the
-// observer at t from no earlier than t minus the Euclidean coordinate
-// distance, since in these charts (Kerr–Schild g = eta + f l l with f >= 0,
-// the dihole's isotropic U^2 >= 1) light is no faster than 1 in coordinates;
-// the sphere's coordinate extent is within its proper radius, so its
-// centre's box grown by 2R holds it.  Throws std::invalid_argument.
-void check_worldline_lasts(const Sphere& sp, const Vec4& observer) {
-  double d2 = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    const double lo = sp.life_lo[k] - 2.0 * sp.spec.radius, hi = sp.life_hi[k] + 2.0 * sp.spec.radius;
-    const double out = std::max({lo - observer[k + 1], observer[k + 1] - hi, 0.0});
-    d2 += out * out;
-  }
-  const double latest = observer[0] - std::sqrt(d2);
-  const Worldline& w = *sp.worldline;
-  if (latest <= w.end_time()) return;
-  throw std::invalid_argument(fmt::format(
-      "a sphere's worldline ({}) ends {:.4g} M of coordinate time before this frame's rays may last meet the sphere "
-      "(after it the sphere would vanish): lengthen its duration ({:.6g} of proper time)",
-      sp.spec.worldline->where, latest - w.end_time(), w.duration()));
 }
 
 template <class S>
@@ -60,8 +33,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
           w.where, what, w.where, describe(w.spacetime), here));
   };
 
-  SceneOf<S> sc{st, {}, 0.0, {}, {}, Camera(fs.camera, width, height), std::nullopt, Sky(fs.sky, res), {},
-                rays};
+  SceneOf<S> sc{st, {}, 0.0, {}, {}, Camera(fs.camera, width, height), Sky(fs.sky, res), {}, rays};
   const ObserverSpec& ob = fs.observer;
   try {
     if (ob.kind == ObserverKind::free_fall) {
@@ -86,24 +58,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
   double r_unused, phi_unused;
   scene_polar(st, sc.observer, sc.observer_time, r_unused, phi_unused);
 
-  if (fs.disk) sc.disk = Disk{*fs.disk};
-  for (const SphereSpec& spec : fs.spheres) {
-    Sphere sp{spec, nullptr, {}, {}};
-    if (spec.worldline) {
-      check_same(*spec.worldline, "a sphere");
-      sp.worldline = res.worldline(*spec.worldline);
-    } else {
-      sp.rest_position = st.trace_from_scene(*spec.position);
-      try {
-        sp.rest_frame = static_frame(st, *spec.position);
-      } catch (const ObserverError& e) {
-        throw std::invalid_argument(fmt::format("sphere at rest: {}", e.what()));
-      }
-    }
-    sp.bounds(-1e300, 1e300, sp.life_lo, sp.life_hi);
-    if (sp.worldline) check_worldline_lasts(sp, sc.observer);
-    sc.spheres.push_back(std::move(sp));
-  }
+  for (const ObjectSpec& o : fs.objects) add_object(sc.objects, o, st, res, sc.observer);
   sc.rays.free_radius = free_radius(sc);
   // Where the spacetime's far field is known (far_field_radius), rays
   // escape there, or beyond the objects; the sky lookup adds the rest of

@@ -8,6 +8,7 @@
 
 #include "render/scene.hpp"
 #include "render/shot_resources.hpp"
+#include "scene/frame_scene.hpp"
 
 namespace lc {
 

@@ -19,13 +19,14 @@
 namespace lc {
 
 // Whether a scene's rays take the Boyer–Lindquist–Mino fast path: Kerr
-// scenes without spheres (a sphere's worldline and frame live in the trace
-// chart), unless the options ask for Kerr–Schild.  Everything else takes the
-// Hamiltonian in the trace chart.
+// scenes whose objects it handles (objects/objects.hpp: in_fast_path; not a
+// sphere, whose worldline and frame live in the trace chart), unless the
+// options ask for Kerr–Schild.  Everything else takes the Hamiltonian in the
+// trace chart.
 template <class S>
 bool takes_mino_path(const SceneOf<S>& sc) {
   if constexpr (std::is_same_v<S, Kerr>)
-    return sc.spheres.empty() && sc.rays.kerr_chart == KerrChart::boyer_lindquist_mino;
+    return objects_in_fast_path(sc.objects) && sc.rays.kerr_chart == KerrChart::boyer_lindquist_mino;
   else
     return false;
 }

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "core/json.hpp"
 #include "scene/frame_scene.hpp"
 
 namespace lc {
@@ -12,10 +13,5 @@ namespace lc {
 // JSON object added as the field "evaluated" (what the engine made of it).
 std::string to_json(const FrameScene& scene, int frame, const std::string& evaluated = {});
 
-// Pieces for other JSON reports: a number (null when not finite), a scene
-// position (polar ones with angles in degrees), four components.
-std::string json_number(double v);
-std::string json_position(const Vec4& p, bool polar);
-std::string json_components(const Vec4& v);
 
 }  // namespace lc

@@ -6,19 +6,17 @@ namespace lc {
 
 namespace {
 
-// A new field in these structs must join the key, or frames that differ in
-// it would share rays: their sizes (x86-64, libstdc++) trip when one is
-// added.  Update them with the key.
+// The camera, the sky and the objects are keyed by their registries from
+// their declared fields (core/registry.hpp), so a new kind or field joins
+// the key by itself.  A new field of these two structs must be added here,
+// or frames that differ in it would share rays: their sizes (x86-64,
+// libstdc++) trip when one is added.
 #if defined(__x86_64__) && defined(__GLIBCXX__)
-static_assert(sizeof(FrameScene) == 448, "FrameScene changed: add the field to still_key");
+static_assert(sizeof(FrameScene) == 392, "FrameScene changed: add the field to still_key");
 static_assert(sizeof(ObserverSpec) == 216, "ObserverSpec changed: add the field to still_key");
-static_assert(sizeof(DiskSpec) == 48, "DiskSpec changed: add the field to still_key");
-static_assert(sizeof(SphereSpec) == 248, "SphereSpec changed: add the field to still_key");
 #endif
 
 std::string hex(double v) { return fmt::format("{:a}", v); }
-
-std::string color(const Color& c) { return fmt::format("{:a},{:a},{:a}", c[0], c[1], c[2]); }
 
 }  // namespace
 
@@ -37,18 +35,8 @@ std::string still_key(const FrameScene& fs) {
       return {};
   }
   k += "|camera " + CameraRegistry::key(fs.camera);
-  if (fs.disk) {
-    const DiskSpec& d = *fs.disk;
-    k += fmt::format("|disk {} {} {} {} {} {}", hex(d.inner), hex(d.outer), d.rings, d.sectors, color(d.color_a),
-                     color(d.color_b));
-  }
   k += "|sky " + SkyRegistry::key(fs.sky);
-  for (const SphereSpec& sp : fs.spheres) {
-    k += fmt::format("|sphere {} {} {} {} {}", hex(sp.radius), sp.rows, sp.columns, color(sp.color_a), color(sp.color_b));
-    if (sp.position)
-      k += fmt::format(" at {} {} {}", hex((*sp.position)[1]), hex((*sp.position)[2]), hex((*sp.position)[3]));
-    if (sp.worldline) k += " along " + sp.worldline->key();
-  }
+  for (const ObjectSpec& o : fs.objects) k += "|object " + ObjectRegistry::key(o);
   return k;
 }
 

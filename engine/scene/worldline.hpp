@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "observer/tetrad.hpp"
-#include "scene/frame_scene.hpp"
+#include "scene/worldline_spec.hpp"
 
 namespace lc {
 

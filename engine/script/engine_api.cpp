@@ -58,10 +58,9 @@ int construct(lua_State* L) {
 
 void validate_spacetime(lua::TableReader& t) { read_spacetime(t); }
 void validate_camera(lua::TableReader& t) { read_camera(t); }
-void validate_disk(lua::TableReader& t) { read_disk(t); }
+void validate_object(lua::TableReader& t) { read_object(t, nullptr); }
 void validate_sky(lua::TableReader& t) { read_sky(t); }
 void validate_worldline(lua::TableReader& t) { read_worldline(t); }
-void validate_sphere(lua::TableReader& t) { read_sphere(t, nullptr); }
 void validate_observer(lua::TableReader& t) { read_observer(t, nullptr); }
 
 // apocentres(w) -> array of {t = scene time, tau = proper time, r = radius}
@@ -107,9 +106,8 @@ void install_engine_api(lua::Sandbox& sandbox) {
   SkyRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_sky); });
   for (const char* observer : {"static_observer", "zamo", "free_fall"}) add(observer, validate_observer);
   CameraRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera); });
-  add("disk", validate_disk);
+  ObjectRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_object); });
   add("worldline", validate_worldline);
-  add("sphere", validate_sphere);
   lua_pushcfunction(L, l_apocentres);
   lua_setfield(L, -2, "apocentres");
   lua_setglobal(L, "__lightcone");

@@ -42,10 +42,12 @@ void expect_kind(TableReader& t, std::initializer_list<const char*> kinds, const
 }
 
 // The parameters of whichever kind of registry R (core/registry.hpp) made
-// the table: its declared fields read and checked.  `what` and `more` name
-// the constructors in the error for a table none of them made.
-template <class R>
-typename R::Spec read_kind(TableReader& t, const char* what, const char* more = "") {
+// the table: its declared fields read and checked, then extra(params) for
+// what a kind holds besides them, then the kind's own validate() where it
+// has one.  `what` and `more` name the constructors in the error for a table
+// none of them made.
+template <class R, class Extra = void (*)(const void*)>
+typename R::Spec read_kind(TableReader& t, const char* what, const char* more = "", Extra extra = [](const void*) {}) {
   const std::string k = kind_of(t);
   std::optional<typename R::Spec> out;
   std::string kinds;
@@ -55,6 +57,14 @@ typename R::Spec read_kind(TableReader& t, const char* what, const char* more = 
     if (out || k != K::name) return;
     typename K::Params p;
     read_fields(t, p);
+    extra(&p);
+    if constexpr (requires { p.validate(); }) {
+      try {
+        p.validate();
+      } catch (const std::invalid_argument& e) {
+        fail(t, e.what());
+      }
+    }
     t.finish();
     out = p;
   });
@@ -132,19 +142,6 @@ Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::s
 
 CameraSpec read_camera(TableReader& t) { return read_kind<CameraRegistry>(t, "a camera constructor"); }
 
-DiskSpec read_disk(TableReader& t) {
-  expect_kind(t, {"disk"}, "lc.disk{...}");
-  DiskSpec d;
-  d.inner = t.number("inner");
-  d.outer = t.number("outer");
-  if (!(d.inner >= 0.0)) fail(t, fmt::format("inner radius must be >= 0, got {}", d.inner));
-  if (!(d.outer > d.inner)) fail(t, fmt::format("inner radius {} must be below the outer radius {}", d.inner, d.outer));
-  d.rings = count(t, "rings", d.rings, 1, 100000);
-  d.sectors = count(t, "sectors", d.sectors, 1, 100000);
-  read_colors(t, d.color_a, d.color_b);
-  t.finish();
-  return d;
-}
 
 SkySpec read_sky(TableReader& t) {
   return read_kind<SkyRegistry>(t, "a sky constructor", ", or lc.starfield{...}");
@@ -170,10 +167,12 @@ WorldlineSpec read_worldline(TableReader& t) {
   return w;
 }
 
-SphereSpec read_sphere(TableReader& t, const Spacetime* st) {
-  expect_kind(t, {"sphere"}, "lc.sphere{...}");
-  SphereSpec s;
-  s.radius = positive(t, "radius");
+namespace {
+
+// What a sphere holds besides its declared fields: where it is held at rest
+// (`position`) or the worldline it falls along (`worldline`), one of the two.
+// Positions resolve against `st` when given.  Other kinds hold nothing more.
+void read_placement(TableReader& t, Sphere::Params& s, const Spacetime* st) {
   const bool has_pos = t.has("position"), has_wl = t.has("worldline");
   if (has_pos == has_wl) fail(t, "give either position (held at rest) or worldline (free fall)");
   if (has_pos) {
@@ -184,11 +183,15 @@ SphereSpec read_sphere(TableReader& t, const Spacetime* st) {
     auto w = t.table("worldline");
     s.worldline = read_worldline(w);
   }
-  s.rows = count(t, "rows", s.rows, 1, 100000);
-  s.columns = count(t, "columns", s.columns, 1, 100000);
-  read_colors(t, s.color_a, s.color_b);
-  t.finish();
-  return s;
+}
+template <class P>
+void read_placement(TableReader&, P&, const Spacetime*) {}
+
+}  // namespace
+
+ObjectSpec read_object(TableReader& t, const Spacetime* st) {
+  return read_kind<ObjectRegistry>(t, "an object constructor", "",
+                                   [&](auto* p) { read_placement(t, *p, st); });
 }
 
 ObserverSpec read_observer(TableReader& t, const Spacetime* st) {
@@ -227,14 +230,14 @@ FrameScene read_frame_scene(TableReader& t) {
     fs.observer.position[0] = *time;
   }
   if (auto c = t.optional_table("camera")) fs.camera = read_camera(*c);
-  if (auto d = t.optional_table("disk")) fs.disk = read_disk(*d);
+  if (auto d = t.optional_table("disk")) fs.objects.push_back(read_object(*d, &fs.spacetime));
   if (auto s = t.optional_table("sky")) fs.sky = read_sky(*s);
   if (auto objs = t.optional_table("objects")) {
     if (objs->length() > kMaxObjects)
-      fail(*objs, fmt::format("at most {} spheres, got {}", kMaxObjects, objs->length()));
+      fail(*objs, fmt::format("at most {} objects, got {}", kMaxObjects, objs->length()));
     for (std::size_t i = 1; i <= objs->length(); ++i) {
       auto o = objs->table_at(i);
-      fs.spheres.push_back(read_sphere(o, &fs.spacetime));
+      fs.objects.push_back(read_object(o, &fs.spacetime));
     }
     objs->finish();
   }

@@ -26,12 +26,12 @@ ScriptPosition read_position(lua::TableReader& t);
 // the form does not match the spacetime.
 Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::string& context);
 
+// A table made by a constructor of the camera, sky or object registries.
 CameraSpec read_camera(lua::TableReader& t);
-DiskSpec read_disk(lua::TableReader& t);
-SkySpec read_sky(lua::TableReader& t);  // sky_checker or sky_image tables
+SkySpec read_sky(lua::TableReader& t);
 WorldlineSpec read_worldline(lua::TableReader& t);
-// Sphere and observer positions resolve against `st` when given.
-SphereSpec read_sphere(lua::TableReader& t, const Spacetime* st);
+// Object (a sphere's) and observer positions resolve against `st` when given.
+ObjectSpec read_object(lua::TableReader& t, const Spacetime* st);
 ObserverSpec read_observer(lua::TableReader& t, const Spacetime* st);
 
 // The table a shot's frame(i) returns.

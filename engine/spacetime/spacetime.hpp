@@ -62,6 +62,16 @@ inline Spacetime trace_chart(const Spacetime& s) { return for_tracing(s, TimeDir
 // Whether scene positions are polar {r, theta, phi}.
 inline bool has_polar_scene(const Spacetime& s) { return scene_chart(s) == SceneChart::polar; }
 
+// {"kind": name, <each declared parameter>: value}.
+inline std::string spacetime_json(const Spacetime& s) {
+  return std::visit(
+      [](const auto& st) {
+        using S = std::decay_t<decltype(st)>;
+        return fmt::format("{{\"kind\": \"{}\"{}}}", S::name, fields_json(st.params()));
+      },
+      s);
+}
+
 // The spacetime and its exact parameters, e.g. "kerr(mass=1, spin=0.9)";
 // equal strings mean the same spacetime (hex-float exact with exact = true).
 inline std::string describe(const Spacetime& s, bool exact = false) {

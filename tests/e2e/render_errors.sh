@@ -25,7 +25,7 @@ echo "not an image" >garbage.png
 shot garbage_texture "$good_kerr sky = lc.sky_image{file = 'garbage.png'}"
 expect_error garbage_texture "garbage.png" -- "$LIGHTCONE" render garbage_texture.lua --out out
 shot negative_radius "$good_kerr disk = lc.disk{inner = -1, outer = 5}"
-expect_error negative_radius "negative_radius.lua:5: disk: inner radius must be >= 0" -- "$LIGHTCONE" render negative_radius.lua --out out
+expect_error negative_radius "negative_radius.lua:5: disk: field 'inner' must be at least 0 M, got -1" -- "$LIGHTCONE" render negative_radius.lua --out out
 shot inverted_disk "$good_kerr disk = lc.disk{inner = 10, outer = 5}"
 expect_error inverted_disk "inverted_disk.lua:5: disk: inner radius 10 must be below the outer radius 5" -- "$LIGHTCONE" render inverted_disk.lua --out out
 shot zero_width "$good_kerr" "width = 0,"
@@ -115,7 +115,7 @@ expect_error scene_typo2 "scene_typo2.lua: frame 0: unknown field 'camra' (did y
 shot wrong_coords "spacetime = lc.kerr{mass = 1}, observer = lc.static_observer{x = 30, y = 0, z = 0},"
 expect_error wrong_coords "positions in kerr are Boyer–Lindquist" -- "$LIGHTCONE" render wrong_coords.lua --out out
 shot raw_table "$good_kerr disk = {inner = 6, outer = 10},"
-expect_error raw_table "expected a value made by lc.disk{...}" -- "$LIGHTCONE" render raw_table.lua --out out
+expect_error raw_table "expected a value made by an object constructor: lc.disk{...}" -- "$LIGHTCONE" render raw_table.lua --out out
 shot runtime "$good_kerr camera = lc.camera{fov = nil + 1},"
 expect_error runtime "runtime.lua:5: attempt to perform arithmetic" -- "$LIGHTCONE" render runtime.lua --out out
 cat >"$WORK/not_a_scene.lua" <<'LUA'

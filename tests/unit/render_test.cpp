@@ -23,7 +23,7 @@ FrameScene kerr_scene(double M, double a, double r, double theta_deg, double fov
   fs.observer.kind = ObserverKind::static_observer;
   fs.observer.position = {0, r, theta_deg * degree, 0};
   std::get<PinholeCamera::Params>(fs.camera).fov = fov;
-  if (disk) fs.disk = DiskSpec{6, 15, 9, 24};
+  if (disk) fs.objects.push_back(Disk::Params{6, 15, 9, 24});
   return fs;
 }
 
@@ -288,17 +288,17 @@ std::vector<std::pair<std::string, FrameScene>> scenes_of_every_path() {
   FrameScene flat;
   flat.spacetime = Minkowski{};
   flat.observer.position = {0, 0, 30, 5};
-  flat.spheres.push_back(test::falling_sphere(flat.spacetime, {0, 3, 0, 0}, {0, 0.1, 0}, 100, 1.0));
+  flat.objects.push_back(test::falling_sphere(flat.spacetime, {0, 3, 0, 0}, {0, 0.1, 0}, 100, 1.0));
   out.emplace_back("minkowski", flat);
   out.emplace_back("kerr bl-mino", kerr_scene(1, 0.9, 30, 80, 40, true));
   FrameScene kerr_sphere = kerr_scene(1, 0.9, 30, 80, 40, true);
-  kerr_sphere.spheres.push_back(test::falling_sphere(kerr_sphere.spacetime, {0, 10, 90 * degree, 0}, {0, 0, 0.3}, 60, 1.0));
+  kerr_sphere.objects.push_back(test::falling_sphere(kerr_sphere.spacetime, {0, 10, 90 * degree, 0}, {0, 0, 0.3}, 60, 1.0));
   out.emplace_back("kerr kerr-schild", kerr_sphere);
   FrameScene di;
   di.spacetime = Dihole(0.4, 0.4, 1.0);
   di.observer.position = {90, 0, 40, 0};
   std::get<PinholeCamera::Params>(di.camera).fov = 30;
-  di.spheres.push_back(test::falling_sphere(di.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
+  di.objects.push_back(test::falling_sphere(di.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
   out.emplace_back("dihole", di);
   return out;
 }
@@ -350,10 +350,10 @@ TEST(Render, SphereInFlatSpaceHasItsAngularSize) {
   fs.spacetime = Dihole(0.0, 0.0, 1.0);
   fs.observer.position = {0, 0, 80, 0};
   std::get<PinholeCamera::Params>(fs.camera).fov = 12;
-  SphereSpec sp;
+  Sphere::Params sp;
   sp.radius = 1.0;
   sp.position = Vec4{0, 5, 0, 0};
-  fs.spheres.push_back(sp);
+  fs.objects.push_back(sp);
   ShotResources res;
   const int W = 400;
   const Scene scene = build_scene(fs, W, 1, res);
@@ -401,11 +401,11 @@ TEST(Render, SphereSimultaneityIsSolvedNearAMovingSphere) {
   FrameScene fs;
   fs.spacetime = Dihole(0.4, 0.4, 1.0);
   fs.observer.position = {200, 0, 80, 0};
-  fs.spheres.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 200, 1.0));
+  fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 200, 1.0));
   ShotResources res;
   const Scene scene = build_scene(fs, 8, 8, res);
   const auto& sc = std::get<SceneOf<Dihole>>(scene);
-  const Sphere& sphere = sc.spheres.front();
+  const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects).front();
   double worst = 0.0;
   for (double t = 30.0; t < 150.0; t += 0.37) {
     Vec4 C, u;
@@ -435,7 +435,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   fs.spacetime = Minkowski{};
   fs.observer.position = {150, 0, 60, 0};  // at t = 150, on the y axis, looking at the origin
   std::get<PinholeCamera::Params>(fs.camera).fov = 90;
-  fs.spheres.push_back(test::falling_sphere(Minkowski{}, {0, -70, 0, 0}, {0.6, 0, 0}, 300, 3.0));
+  fs.objects.push_back(test::falling_sphere(Minkowski{}, {0, -70, 0, 0}, {0.6, 0, 0}, 300, 3.0));
   ShotResources res;
   const int W = 600, H = 600;
   const Scene scene = build_scene(fs, W, H, res);
@@ -457,7 +457,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   // horizontally by 1/cos^2 vs 1/cos, about 6%); compare against the same
   // measurement of a sphere at rest at the same apparent place instead.
   FrameScene still = fs;
-  still.spheres[0].worldline.reset();
+  std::get<Sphere::Params>(still.objects[0]).worldline.reset();
   // Apparent position: straight back along the centre ray of the moving image.
   const Vec3 n = std::get<SceneOf<Minkowski>>(scene).camera.direction(cx0, H / 2.0);
   const Tetrad rest = static_polar_tetrad(Minkowski{}, fs.observer.position);
@@ -465,7 +465,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   for (int k = 0; k < 3; ++k)
     for (int leg = 0; leg < 3; ++leg) dir[k] += n[leg] * rest.e[leg + 1][k + 1];
   const double dist = 60.0 / std::abs(dir[1]);  // reach the plane y = 0
-  still.spheres[0].position = Vec4{0, dist * dir[0], 60 + dist * dir[1], dist * dir[2]};
+  std::get<Sphere::Params>(still.objects[0]).position = Vec4{0, dist * dir[0], 60 + dist * dir[1], dist * dir[2]};
   ShotResources res2;
   const Scene still_scene = build_scene(still, W, H, res2);
   const double w0 = extent(still_scene, cx0, H / 2.0, 1, 0, 200);

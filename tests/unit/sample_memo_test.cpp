@@ -22,7 +22,7 @@ FrameScene dihole_at(double t) {
   fs.spacetime = Dihole(0.4, 0.4, 1.0);
   fs.observer.position = {t, 0, 40, 0};
   std::get<PinholeCamera::Params>(fs.camera).fov = 30;
-  fs.spheres.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
+  fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
   return fs;
 }
 
@@ -97,8 +97,8 @@ TEST(SampleMemo, RaysNearASphereAtRestAreTracedAgain) {
   SampleMemo memo(rs);
   auto held = [](double t) {
     FrameScene fs = dihole_at(t);
-    fs.spheres[0].worldline.reset();
-    fs.spheres[0].position = Vec4{0, 5, 0, 0};
+    std::get<Sphere::Params>(fs.objects[0]).worldline.reset();
+    std::get<Sphere::Params>(fs.objects[0]).position = Vec4{0, 5, 0, 0};
     return fs;
   };
   render(held(100), rs, res, &memo);

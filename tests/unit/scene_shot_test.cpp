@@ -60,7 +60,7 @@ TEST(SceneShot, ErrorsInsideFrameNameTheFrame) {
   EXPECT_EQ(msg.rfind(f + ": frame 517: ", 0), 0u) << msg;
   EXPECT_NE(msg.find(tail), std::string::npos) << msg;
   EXPECT_EQ(error_of<lc::lua::ScriptError>([&] { shot.frame(3); })
-                .rfind(f + ": frame 3: " + f + ":4: disk: inner radius must be >= 0, got -1", 0),
+                .rfind(f + ": frame 3: " + f + ":4: disk: field 'inner' must be at least 0 M, got -1", 0),
             0u);
   EXPECT_NO_THROW(shot.frame(0));  // the state is fine after errors
 }
@@ -93,9 +93,9 @@ TEST(SceneShot, ObjectsAndNamesAreBounded) {
                                        "            objects = i == 0 and {s, s} or many}\n"
                                        "  end}\n");
   lc::Shot shot(file);
-  EXPECT_EQ(shot.frame(0).spheres.size(), 2u);
+  EXPECT_EQ(shot.frame(0).objects.size(), 2u);
   EXPECT_EQ(error_of<lc::lua::FieldError>([&] { shot.frame(1); }),
-            file.string() + ": frame 1.objects: at most 1000 spheres, got 1000000");
+            file.string() + ": frame 1.objects: at most 1000 objects, got 1000000");
 
   const fs::path named = write_shot(dir, "named.lua",
                                     "return {name = string.rep('n', 1e6), frames = 1, width = 8, height = 8,\n"

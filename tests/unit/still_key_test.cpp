@@ -14,10 +14,10 @@ FrameScene scene() {
   FrameScene fs;
   fs.spacetime = Kerr(1.0, 0.9);
   fs.observer.position = {10.0, 30.0, 1.2, 0.3};
-  fs.disk = DiskSpec{};
-  SphereSpec sp;
+  fs.objects.push_back(Disk::Params{});
+  Sphere::Params sp;
   sp.position = Vec4{0.0, 12.0, 1.5, 0.0};
-  fs.spheres.push_back(sp);
+  fs.objects.push_back(sp);
   return fs;
 }
 
@@ -37,15 +37,15 @@ TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.observer.position[1] = std::nextafter(30.0, 31.0); }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.spacetime = Kerr(1.0, std::nextafter(0.9, 1.0)); }));
   EXPECT_TRUE(differs([](FrameScene& fs) { std::get<PinholeCamera::Params>(fs.camera).roll = 1e-12; }));
-  EXPECT_TRUE(differs([](FrameScene& fs) { fs.disk->sectors = 25; }));
-  EXPECT_TRUE(differs([](FrameScene& fs) { fs.disk.reset(); }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { std::get<Disk::Params>(fs.objects[0]).sectors = 25; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.objects.erase(fs.objects.begin()); }));
   EXPECT_TRUE(differs([](FrameScene& fs) { std::get<CheckerSky::Params>(fs.sky).rotate = 1e-12; }));
   EXPECT_TRUE(differs([](FrameScene& fs) { fs.sky = StarSky::Params{2}; }));
-  EXPECT_TRUE(differs([](FrameScene& fs) { (*fs.spheres[0].position)[1] = 12.5; }));
-  EXPECT_TRUE(differs([](FrameScene& fs) { fs.spheres[0].color_a[0] = 0.5f; }));
-  EXPECT_TRUE(differs([](FrameScene& fs) { fs.spheres.push_back(fs.spheres[0]); }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { (*std::get<Sphere::Params>(fs.objects[1]).position)[1] = 12.5; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { std::get<Sphere::Params>(fs.objects[1]).colors.a[0] = 0.5f; }));
+  EXPECT_TRUE(differs([](FrameScene& fs) { fs.objects.push_back(fs.objects[1]); }));
   // A sphere at rest ignores the time in its position.
-  EXPECT_FALSE(differs([](FrameScene& fs) { (*fs.spheres[0].position)[0] = 99.0; }));
+  EXPECT_FALSE(differs([](FrameScene& fs) { (*std::get<Sphere::Params>(fs.objects[1]).position)[0] = 99.0; }));
 }
 
 TEST(StillKey, AFreeFallingObserverHasNone) {

@@ -3,13 +3,14 @@
 // worldline.
 
 #include "scene/frame_scene.hpp"
+#include "objects/sphere.hpp"
 
 namespace lc::test {
 
 // A sphere of `radius` free-falling in `spacetime` from `start` with
 // 3-velocity `velocity` (relative to the static observer there), for
 // `duration` of proper time.
-inline SphereSpec falling_sphere(const Spacetime& spacetime, const Vec4& start, const Vec3& velocity, double duration,
+inline Sphere::Params falling_sphere(const Spacetime& spacetime, const Vec4& start, const Vec3& velocity, double duration,
                                  double radius) {
   WorldlineSpec w;
   w.spacetime = spacetime;
@@ -17,7 +18,7 @@ inline SphereSpec falling_sphere(const Spacetime& spacetime, const Vec4& start, 
   w.velocity = velocity;
   w.duration = duration;
   w.where = "test";
-  SphereSpec sp;
+  Sphere::Params sp;
   sp.radius = radius;
   sp.worldline = w;
   return sp;

@@ -1,9 +1,8 @@
 #pragma once
 // Whether and where a ray step meets a sphere riding its worldline (the
 // paper's spacetime tube): the simultaneity of a ray point with the
-// sphere's centre, the step's hull, the cheap box tests every step runs and
-// the sampling of |xi|^2 - R^2 along what they let through.  For
-// render/hamiltonian_ray.hpp.
+// sphere's centre, the cheap box tests every step runs and the sampling of
+// |xi|^2 - R^2 along what they let through.  For objects/sphere.hpp.
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +11,8 @@
 
 #include "geodesic/crossing.hpp"
 #include "geodesic/ray_loop.hpp"
-#include "render/objects.hpp"
+#include "objects/sphere_body.hpp"
+#include "objects/step_test.hpp"
 
 namespace lc::detail {
 
@@ -56,9 +56,9 @@ struct MetricAt {
 // sphere tracing needs.  (Newton with the exact slope, from the metric's rate and
 // du/dt, converged in fewer steps but cost 8% more per frame.)
 template <class S>
-double sphere_simultaneous_time(const S& st, const Sphere& sphere, const Vec4& X, double t_start, Vec4& C, Vec4& u,
+double sphere_simultaneous_time(const S& st, const SphereBody& sphere, const Vec4& X, double t_start, Vec4& C, Vec4& u,
                                 MetricAt<S>& g) {
-  const double R = sphere.spec.radius;
+  const double R = sphere.radius;
   // To 1e-8 in proper time (the centre moves by less than that) near the
   // sphere; farther out sphere tracing only needs |xi| to a fraction of the
   // distance to spare: 10% of the coordinate distance beyond 1.5 R, judged
@@ -111,7 +111,7 @@ double sphere_simultaneous_time(const S& st, const Sphere& sphere, const Vec4& X
 // t_near: where the search starts (NaN: at X's own time); set to the
 // simultaneous time found, so the next point along the ray starts near it.
 template <class S>
-double sphere_distance2(const S& st, const Sphere& sphere, const Vec4& X, double& t_near) {
+double sphere_distance2(const S& st, const SphereBody& sphere, const Vec4& X, double& t_near) {
   Vec4 C, u;
   MetricAt<S> g;
   t_near = sphere_simultaneous_time(st, sphere, X, std::isnan(t_near) ? X[0] : t_near, C, u, g);
@@ -121,7 +121,7 @@ double sphere_distance2(const S& st, const Sphere& sphere, const Vec4& X, double
 }
 
 template <class S>
-Vec3 sphere_local(const S& st, const Sphere& sphere, const Vec4& X) {
+Vec3 sphere_local(const S& st, const SphereBody& sphere, const Vec4& X) {
   // The simultaneous event first; the frame, with its metric and
   // Gram–Schmidt, once there.
   Vec4 C, u;
@@ -151,14 +151,14 @@ enum class SphereReach {
 // (a step strays from its chord by less than that), then against the
 // centre's box over the step's time range (a table lookup); neither
 // evaluates the step's dense output inside.
-[[gnu::always_inline]] inline SphereReach sphere_near_step(const Sphere& sphere, const RayStep& step) {
+[[gnu::always_inline]] inline SphereReach sphere_near_step(const SphereBody& sphere, const RayStep& step) {
   const RayState& a = step.start();
   const double l1 = step.t0 + step.h;
   Vec3 rlo, rhi, clo, chi;
   double chord1 = 0.0, b[4];  // the chord's L1 length: no square root, and >= its length
   for (int k = 0; k < 4; ++k) b[k] = step.component(k, l1);
   for (int k = 0; k < 3; ++k) chord1 += std::abs(b[k + 1] - a[k + 1]);
-  const double far = 2.0 * sphere.spec.radius + 0.5 * chord1;
+  const double far = 2.0 * sphere.radius + 0.5 * chord1;
   for (int k = 0; k < 3; ++k) {
     rlo[k] = std::min(a[k + 1], b[k + 1]);
     rhi[k] = std::max(a[k + 1], b[k + 1]);
@@ -174,65 +174,21 @@ enum class SphereReach {
   return boxes_overlap(rlo, rhi, clo, chi) ? SphereReach::maybe : SphereReach::not_now;
 }
 
-// Where a step goes, for the sphere tests that sphere_near_step's coarse
-// boxes let through: the box of its ends and of its points at 1/4, 1/2 and
-// 3/4, and how far it may stray beyond: twice the largest distance of those
-// points from the chord (a step is a smooth, nearly polynomial arc).  Long
-// straight steps (far from the holes) then keep a tight box instead of one
-// grown by a fraction of their length.
-struct StepHull {
-  RayState end{};
-  Vec3 lo{}, hi{};
-  double chord2 = 0.0;   // squared chord
-  double quarter = 0.0;  // the longest chord of a quarter of the step
-  double margin = 0.0;   // how far beyond the box the step may stray
-};
-
-inline StepHull step_hull(const RayStep& step) {
-  StepHull h;
-  const double l0 = step.t0, l1 = step.t0 + step.h;
-  const RayState& a = step.start();
-  const RayState& b = h.end = step.at(l1);
-  for (int k = 0; k < 3; ++k) {
-    h.chord2 += (b[k + 1] - a[k + 1]) * (b[k + 1] - a[k + 1]);
-    h.lo[k] = std::min(a[k + 1], b[k + 1]);
-    h.hi[k] = std::max(a[k + 1], b[k + 1]);
-  }
-  double bulge = 0.0;
-  RayState prev = a;
-  for (const double q : {0.25, 0.5, 0.75, 1.0}) {
-    const RayState m = q == 1.0 ? b : step.at(l0 + q * (l1 - l0));
-    double d2 = 0.0, seg2 = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      h.lo[k] = std::min(h.lo[k], m[k + 1]);
-      h.hi[k] = std::max(h.hi[k], m[k + 1]);
-      const double off = m[k + 1] - (a[k + 1] + q * (b[k + 1] - a[k + 1]));
-      d2 += off * off;
-      seg2 += (m[k + 1] - prev[k + 1]) * (m[k + 1] - prev[k + 1]);
-    }
-    bulge = std::max(bulge, std::sqrt(d2));
-    h.quarter = std::max(h.quarter, std::sqrt(seg2));
-    prev = m;
-  }
-  h.margin = 2.0 * bulge + 1e-9 * std::sqrt(h.chord2);
-  return h;
-}
-
 // Whether the step (its hull) comes within 2R of the box [lo, hi] of
 // centres: the test both for "may meet the sphere now" (the centre's box
 // over the step's time range) and for "may depend on the sphere's motion"
 // (the box it never leaves).
 // grow_by_reach grows such a box of centres in place (the tube sphere_entry
 // clips the step to).
-inline void grow_by_reach(const StepHull& h, const Sphere& sphere, Vec3& lo, Vec3& hi) {
-  const double grow = 2.0 * sphere.spec.radius + h.margin;
+inline void grow_by_reach(const StepHull& h, const SphereBody& sphere, Vec3& lo, Vec3& hi) {
+  const double grow = 2.0 * sphere.radius + h.margin;
   for (int k = 0; k < 3; ++k) {
     lo[k] -= grow;
     hi[k] += grow;
   }
 }
 
-inline bool hull_near_centres(const StepHull& h, const Sphere& sphere, Vec3 lo, Vec3 hi) {
+inline bool hull_near_centres(const StepHull& h, const SphereBody& sphere, Vec3 lo, Vec3 hi) {
   grow_by_reach(h, sphere, lo, hi);
   return boxes_overlap(h.lo, h.hi, lo, hi);
 }
@@ -244,7 +200,7 @@ inline bool hull_near_centres(const StepHull& h, const Sphere& sphere, Vec3 lo, 
 // t_near carries the last simultaneity answer along the ray (NaN: none yet),
 // so the searches of consecutive steps start close to theirs.
 template <class S>
-[[gnu::noinline]] std::optional<double> sphere_entry(const S& st, const Sphere& sphere, const RayStep& step,
+[[gnu::noinline]] std::optional<double> sphere_entry(const S& st, const SphereBody& sphere, const RayStep& step,
                                                      const StepHull& hull, double& t_near) {
   const double l0 = step.t0, l1 = step.t0 + step.h;
   const RayState& a = step.start();
@@ -259,7 +215,7 @@ template <class S>
   // the margin, for the bulge), then sample F = |xi|^2 - R^2 at spacing R/4
   // along what is left, so no sphere slips between samples however long
   // the step.
-  const double R = sphere.spec.radius, R2 = R * R;
+  const double R = sphere.radius, R2 = R * R;
   double s0 = 0.0, s1 = 1.0;
   for (int k = 0; k < 3; ++k) {
     const double d = b[k + 1] - a[k + 1];

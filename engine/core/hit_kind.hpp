@@ -1,0 +1,9 @@
+#pragma once
+// What a ray found, as the hit.kind data layer records it (docs/layers.md).
+// Object kinds say which of these their hits are.
+
+namespace lc {
+
+enum class HitKind : int { sky = 0, disk = 1, horizon = 2, object = 3, gave_up = 4 };
+
+}  // namespace lc

@@ -1,0 +1,94 @@
+#pragma once
+// lc.disk{...}: the infinitely thin equatorial accretion disk, inner <= r <=
+// outer in the chart's radius (Boyer–Lindquist r for Kerr), checkered in r
+// (rings) and phi (sectors).  Rays meet it where they cross the plane z = 0.
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "core/color.hpp"
+#include "core/constants.hpp"
+#include "core/fields.hpp"
+#include "core/hit_kind.hpp"
+#include "objects/step_test.hpp"
+#include "spacetime/chart.hpp"
+
+namespace lc {
+
+class ShotResources;
+
+class Disk {
+ public:
+  static constexpr std::string_view name = "disk";
+  static constexpr HitKind hit_kind = HitKind::disk;
+  // The BL–Mino path finds it at its own equatorial crossings (render/mino_ray.hpp).
+  static constexpr bool in_fast_path = true;
+
+  struct Params {
+    double inner = 6.0, outer = 20.0;
+    int rings = 7, sectors = 24;
+    Palette colors = {{1.0f, 0.55f, 0.15f}, {0.35f, 0.12f, 0.03f}};
+    static constexpr auto fields = std::tuple{
+        field("inner", &Params::inner, std::optional<double>{}, at_least(0.0), std::nullopt, "inner radius", "M"),
+        field("outer", &Params::outer, std::optional<double>{}, std::nullopt, std::nullopt, "outer radius", "M"),
+        field("rings", &Params::rings, std::optional<int>{7}, at_least(1), at_most(100000), "checker cells in r"),
+        field("sectors", &Params::sectors, std::optional<int>{24}, at_least(1), at_most(100000),
+              "checker cells in phi"),
+        field("colors", &Params::colors, std::optional<Palette>{Palette{{1.0f, 0.55f, 0.15f}, {0.35f, 0.12f, 0.03f}}},
+              std::nullopt, std::nullopt, "the two colours {{r, g, b}, {r, g, b}}, linear RGB"),
+    };
+    // Throws std::invalid_argument unless inner < outer.
+    void validate() const {
+      if (!(outer > inner))
+        throw std::invalid_argument(fmt::format("inner radius {} must be below the outer radius {}", inner, outer));
+    }
+  };
+
+  template <class S>
+  Disk(const Params& p, const S&, ShotResources&, const Vec4&) : p_(p) {}
+  explicit Disk(const Params& p) : p_(p) {}
+
+  // How far from the origin (coordinates) it reaches; the chart's r and the
+  // coordinate radius differ by up to ~M.
+  double reach(double asymptotic_mass) const { return p_.outer + std::abs(asymptotic_mass); }
+  bool covers(double r) const { return r >= p_.inner && r <= p_.outer; }
+
+  // Colour at the chart's (r, phi), r in [inner, outer], phi in [0, 2 pi).
+  Color color(double r, double phi) const {
+    const long ring = static_cast<long>(std::floor((r - p_.inner) / (p_.outer - p_.inner) * p_.rings));
+    const long sector = static_cast<long>(std::floor(phi / two_pi * p_.sectors));
+    return checker(ring, sector, p_.colors);
+  }
+
+  // Where the test's step crosses the plane within the disk, if before the
+  // earliest hit found so far.
+  template <class S>
+  std::optional<double> first_hit(const S& st, StepTest& t, std::size_t) const {
+    if (!t.crosses_equator()) return std::nullopt;
+    const double lz = t.equator_crossing();
+    if (!(lz < t.best())) return std::nullopt;
+    const RayState y = t.step().at(lz);
+    double time, r, phi;
+    scene_polar(st, {y[0], y[1], y[2], y[3]}, time, r, phi);
+    if (!covers(r)) return std::nullopt;
+    return lz;
+  }
+
+  template <class S>
+  Color color_at(const S& st, const RayState& y) const {
+    double time, r, phi;
+    scene_polar(st, {y[0], y[1], y[2], y[3]}, time, r, phi);
+    return color(r, phi);
+  }
+
+ private:
+  Params p_;
+};
+
+}  // namespace lc

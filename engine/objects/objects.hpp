@@ -1,0 +1,104 @@
+#pragma once
+// The registry of object kinds: every kind lightcone knows, one line each,
+// each a class satisfying ObjectKind in its own files.  A scene holds what
+// a shot gave (ObjectSpec: lc.<name>{...}), the built scene the objects,
+// one list per kind (ObjectLists), so the ray's visitor loops over each
+// kind's list with that kind's own test inlined: no call through a pointer.
+
+#include <concepts>
+#include <cstddef>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "core/color.hpp"
+#include "core/hit_kind.hpp"
+#include "core/registry.hpp"
+#include "objects/disk.hpp"
+#include "objects/sphere.hpp"
+#include "objects/step_test.hpp"
+#include "spacetime/spacetime.hpp"
+
+namespace lc {
+
+// What an object kind is, in the spacetime S (its trace chart): a name (its
+// Lua constructor lc.<name>{...}), the hit.kind its hits are, whether the
+// Boyer–Lindquist–Mino fast path handles it (render/mino_ray.hpp does, by
+// kind; else a scene with one takes the general path), Params with declared
+// fields, a constructor from them (with the shot's resources and the
+// frame's observer event), how far from the origin it reaches (for the
+// free-flight radius), the first hit within a step (before the earliest
+// found so far; objects/step_test.hpp) and the colour where a ray meets it.
+template <class O, class S>
+concept ObjectKind = requires(const O& o, const typename O::Params& p, const S& st, ShotResources& res, const Vec4& x,
+                              StepTest& t, const RayState& y, std::size_t index) {
+  requires std::same_as<std::remove_cv_t<decltype(O::name)>, std::string_view>;
+  requires std::same_as<std::remove_cv_t<decltype(O::hit_kind)>, HitKind>;
+  requires std::same_as<std::remove_cv_t<decltype(O::in_fast_path)>, bool>;
+  requires HasFields<typename O::Params>;
+  O(p, st, res, x);
+  { o.reach(1.0) } -> std::same_as<double>;
+  { o.first_hit(st, t, index) } -> std::same_as<std::optional<double>>;
+  { o.color_at(st, y) } -> std::same_as<Color>;
+};
+
+// Every object kind, one line each.
+using ObjectRegistry = Registry<Disk, Sphere>;
+
+namespace detail {
+template <class S, class... O>
+constexpr bool all_objects_in(Registry<O...>*) {
+  return (ObjectKind<O, S> && ...);
+}
+template <class... S>
+constexpr bool all_objects(std::variant<S...>*) {
+  return (all_objects_in<S>(static_cast<ObjectRegistry*>(nullptr)) && ...);
+}
+template <class R>
+struct ListsOf;
+template <class... O>
+struct ListsOf<Registry<O...>> {
+  using type = std::tuple<std::vector<O>...>;
+};
+}  // namespace detail
+static_assert(detail::all_objects(static_cast<Spacetime*>(nullptr)),
+              "every registered object kind must satisfy ObjectKind in every registered spacetime");
+
+// An object a shot asked for: one of the registered kinds' parameters.
+using ObjectSpec = ObjectRegistry::Spec;
+
+// The built objects of a scene, one list per kind, in registry order.
+using ObjectLists = detail::ListsOf<ObjectRegistry>::type;
+
+// f(object, index) for every object, kind by kind; index counts across all.
+template <class F>
+void for_each_object(const ObjectLists& lists, F&& f) {
+  std::size_t index = 0;
+  std::apply([&](const auto&... list) { ((void)[&] { for (const auto& o : list) f(o, index++); }(), ...); }, lists);
+}
+
+// The object of `spec` built and added to its kind's list.
+template <class S>
+void add_object(ObjectLists& lists, const ObjectSpec& spec, const S& st, ShotResources& res, const Vec4& observer) {
+  std::visit(
+      [&](const auto& p) {
+        ObjectRegistry::for_each([&](auto* kind) {
+          using O = std::remove_pointer_t<decltype(kind)>;
+          if constexpr (std::is_same_v<typename O::Params, std::decay_t<decltype(p)>>)
+            std::get<std::vector<O>>(lists).emplace_back(p, st, res, observer);
+        });
+      },
+      spec);
+}
+
+// Whether the fast path handles every object the scene has.
+inline bool objects_in_fast_path(const ObjectLists& lists) {
+  bool ok = true;
+  std::apply([&](const auto&... list) { ((ok = ok && (std::decay_t<decltype(list)>::value_type::in_fast_path || list.empty())), ...); },
+             lists);
+  return ok;
+}
+
+}  // namespace lc

@@ -1,0 +1,161 @@
+#pragma once
+// lc.sphere{...}: a checkered sphere of proper radius `radius`, defined in
+// the local frame of a tetrad that is held at rest at `position` or falls
+// freely along `worldline`; the checker's pole is the frame's third leg (z
+// for a sphere at rest in a Cartesian scene).  Rays are tested against it
+// only where the box its centre keeps over the step's time range (the
+// paper's spacetime tube) allows (objects/sphere_test.hpp).
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "core/color.hpp"
+#include "core/constants.hpp"
+#include "core/fields.hpp"
+#include "core/hit_kind.hpp"
+#include "core/json.hpp"
+#include "objects/sphere_body.hpp"
+#include "objects/sphere_test.hpp"
+#include "objects/step_test.hpp"
+#include "render/shot_resources.hpp"
+#include "scene/worldline_spec.hpp"
+#include "spacetime/chart.hpp"
+
+namespace lc {
+
+class Sphere : public SphereBody {
+ public:
+  static constexpr std::string_view name = "sphere";
+  static constexpr HitKind hit_kind = HitKind::object;
+  // Its worldline and frame live in the trace chart: only the general path.
+  static constexpr bool in_fast_path = false;
+
+  struct Params {
+    double radius = 1.0;
+    int rows = 8, columns = 16;
+    Palette colors = {{0.95f, 0.95f, 0.95f}, {0.8f, 0.1f, 0.1f}};
+    // One of the two, read by hand (script/scene_reader.cpp): where it is
+    // held at rest (scene coordinates), or the worldline it falls along.
+    std::optional<Vec4> position;
+    std::optional<WorldlineSpec> worldline;
+    static constexpr auto fields = std::tuple{
+        field("radius", &Params::radius, std::optional<double>{}, above(0.0), std::nullopt, "proper radius", "M"),
+        field("rows", &Params::rows, std::optional<int>{8}, at_least(1), at_most(100000), "checker cells from pole to pole"),
+        field("columns", &Params::columns, std::optional<int>{16}, at_least(1), at_most(100000),
+              "checker cells round the pole"),
+        field("colors", &Params::colors, std::optional<Palette>{Palette{{0.95f, 0.95f, 0.95f}, {0.8f, 0.1f, 0.1f}}},
+              std::nullopt, std::nullopt, "the two colours {{r, g, b}, {r, g, b}}, linear RGB"),
+    };
+    // What the declared fields leave out: the placement, as JSON ...
+    std::string extra_json(bool polar) const {
+      if (position) return fmt::format(", \"position\": {}", json_position(*position, polar));
+      return worldline ? fmt::format(", \"worldline\": {}", worldline->json()) : std::string();
+    }
+    // ... and exactly.
+    std::string extra_key() const {
+      std::string k;
+      if (position) k += fmt::format(" at {:a} {:a} {:a}", (*position)[1], (*position)[2], (*position)[3]);
+      if (worldline) k += " along " + worldline->key();
+      return k;
+    }
+  };
+
+  // In the spacetime st (its trace chart), with worldlines from `res`, for a
+  // frame whose observer is at the trace event `observer`.  Throws
+  // std::invalid_argument for a worldline from another spacetime, a rest
+  // position without a static observer, or a worldline that ends before
+  // this frame's rays may last meet the sphere.
+  template <class S>
+  Sphere(const Params& p, const S& st, ShotResources& res, const Vec4& observer) : p_(p) {
+    radius = p.radius;
+    if (p.worldline) {
+      if (describe(p.worldline->spacetime, true) != describe(Spacetime(st), true))
+        throw std::invalid_argument(fmt::format(
+            "{}: a sphere's worldline ({}) was made in {}, but this frame's spacetime is {}; a worldline only makes "
+            "sense in the spacetime it was integrated in",
+            p.worldline->where, p.worldline->where, describe(p.worldline->spacetime), describe(Spacetime(st))));
+      worldline = res.worldline(*p.worldline);
+    } else {
+      rest_position = st.trace_from_scene(*p.position);
+      try {
+        rest_frame = static_frame(st, *p.position);
+      } catch (const ObserverError& e) {
+        throw std::invalid_argument(fmt::format("sphere at rest: {}", e.what()));
+      }
+    }
+    bounds(-1e300, 1e300, life_lo, life_hi);
+    if (worldline) check_worldline_lasts(observer);
+  }
+
+  // How far from the origin (coordinates) anything of it ever is.
+  double reach(double) const {
+    double r = 0.0;
+    for (int k = 0; k < 3; ++k) r = std::max({r, std::abs(life_lo[k]) + 2.0 * radius, std::abs(life_hi[k]) + 2.0 * radius});
+    return r;
+  }
+
+  // The first entry into it within the test's step, if any and before the
+  // earliest hit found so far.  A ray that comes near where its centre ever
+  // is depends on the frame's time: no other frame may reuse it (near one
+  // at rest too, though only to rounding: the test works in absolute
+  // coordinate time, so shifted in time its samples round differently, and
+  // a grazing hit could flip).
+  template <class S>
+  std::optional<double> first_hit(const S& st, StepTest& t, std::size_t index) const {
+    const detail::SphereReach reach = detail::sphere_near_step(*this, t.step());
+    if (reach == detail::SphereReach::never) return std::nullopt;
+    const bool timeless_yet = !t.depends_on_time();
+    if (reach == detail::SphereReach::not_now && !timeless_yet) return std::nullopt;
+    if (timeless_yet && detail::hull_near_centres(t.hull(), *this, life_lo, life_hi)) t.mark_time_dependent();
+    if (reach == detail::SphereReach::not_now) return std::nullopt;
+    const auto l = detail::sphere_entry(st, *this, t.step(), t.hull(), t.warm_start(index));
+    if (l && *l < t.best()) return l;
+    return std::nullopt;
+  }
+
+  // Colour where the ray meets it (the trace event y): checker in its own
+  // polar angles, pole along the frame's third leg.
+  template <class S>
+  Color color_at(const S& st, const RayState& y) const {
+    const Vec3 xi = detail::sphere_local(st, *this, {y[0], y[1], y[2], y[3]});
+    const double th = std::acos(std::clamp(xi[2] / norm3(xi), -1.0, 1.0));
+    double ph = std::atan2(xi[1], xi[0]);
+    if (ph < 0) ph += two_pi;
+    return checker(static_cast<long>(th / pi * p_.rows), static_cast<long>(ph / two_pi * p_.columns), p_.colors);
+  }
+
+ private:
+  // A free-falling sphere's worldline must last as long as this frame's rays
+  // may meet it: after its end the body would be nowhere (its centre is held
+  // at the last event, whose time no ray point shares).  Light reaches the
+  // observer at t from no earlier than t minus the Euclidean coordinate
+  // distance, since in these charts (Kerr–Schild g = eta + f l l with f >= 0,
+  // the dihole's isotropic U^2 >= 1) light is no faster than 1 in
+  // coordinates; the sphere's coordinate extent is within its proper radius,
+  // so its centre's box grown by 2R holds it.
+  void check_worldline_lasts(const Vec4& observer) const {
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double lo = life_lo[k] - 2.0 * radius, hi = life_hi[k] + 2.0 * radius;
+      const double out = std::max({lo - observer[k + 1], observer[k + 1] - hi, 0.0});
+      d2 += out * out;
+    }
+    const double latest = observer[0] - std::sqrt(d2);
+    if (latest <= worldline->end_time()) return;
+    throw std::invalid_argument(fmt::format(
+        "a sphere's worldline ({}) ends {:.4g} M of coordinate time before this frame's rays may last meet the sphere "
+        "(after it the sphere would vanish): lengthen its duration ({:.6g} of proper time)",
+        p_.worldline->where, latest - worldline->end_time(), worldline->duration()));
+  }
+
+  Params p_;
+};
+
+}  // namespace lc
