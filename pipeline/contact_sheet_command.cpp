@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "atomic_file.hpp"
+#include "command_output.hpp"
 #include "frame_files.hpp"
 #include "video/contact_sheet.hpp"
 #include "video/frame_sequence.hpp"
