@@ -13,13 +13,13 @@
 
 #include "farm/content_hash.hpp"
 #include "farm/farm_run.hpp"
+#include "farm/frame_files.hpp"
 #include "farm/frame_writer.hpp"
 #include "farm/local_farm.hpp"
 #include "farm/mpi_master.hpp"
 #include "farm/mpi_session.hpp"
 #include "farm/mpi_worker.hpp"
 #include "farm/threads.hpp"
-#include "frame_files.hpp"
 #include "image_size.hpp"
 
 namespace lc {
@@ -54,7 +54,7 @@ WriteTiming time_frame_writes(const RenderSettings& rs, int writers) {
   // A pattern rather than zeros, so compression has something to do.
   for (std::size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = static_cast<float>((i * 2654435761u) % 1000) / 1000.0f;
   auto write = [&](int k) {
-    farm::write_frame_files(frame_path(dir, "bench", k, "exr"), frame_path(dir, "bench", k, "png"), img,
+    farm::write_frame_files(farm::frame_path(dir, "bench", k, "exr"), farm::frame_path(dir, "bench", k, "png"), img,
                             {{"lightcone/shot", "bench"}});
   };
   auto since = [](auto t0) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };

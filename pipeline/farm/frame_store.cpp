@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "durable_file.hpp"
+#include "farm/frame_files.hpp"
 #include "farm/frame_writer.hpp"
-#include "frame_files.hpp"
 
 namespace lc::farm {
 
