@@ -27,6 +27,7 @@ using lc::test::error_of;
 using lc::test::ScratchDir;
 using Names = std::vector<std::string>;
 
+// The bytes of file `p` ("" if it cannot be read).
 std::string contents(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
