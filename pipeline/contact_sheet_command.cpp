@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "atomic_file.hpp"
-#include "frame_files.hpp"
+#include "command_output.hpp"
+#include "farm/frame_files.hpp"
 #include "video/contact_sheet.hpp"
 #include "video/frame_sequence.hpp"
 
@@ -19,7 +19,7 @@ int run_contact_sheet(const ContactSheetCommand& cmd) {
   // never was), unless --allow-stale.
   require_extension(cmd.output, ".png", "a contact sheet is a PNG");
   const FrameSequence seq = select_frame_sequence(cmd.dir, cmd.shot);
-  check_frames_current(cmd.dir, seq.shot, seq.frames, cmd.allow_stale, "contact-sheet");
+  farm::check_frames_current(cmd.dir, seq.shot, seq.frames, cmd.allow_stale, "contact-sheet");
   const ContactSheetOptions o{cmd.columns, cmd.width, cmd.count};
   write_contact_sheet(seq, o, cmd.output);
   const std::size_t shown = pick_evenly(seq.files.size(), static_cast<std::size_t>(cmd.count)).size();

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "frame_files.hpp"
+#include "farm/frame_files.hpp"
 #include "image/image_io.hpp"
 #include "image_size.hpp"
 #include "interrupt.hpp"
@@ -100,7 +100,7 @@ int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
   if (cmd.codec) parse_codec(*cmd.codec);
   if (cmd.fps) parse_frame_rate(*cmd.fps, "--fps");
   const FrameSequence seq = select_frame_sequence(dir, cmd.shot);
-  require_complete(seq, dir, check_frames_current(dir, seq.shot, seq.frames, cmd.allow_stale, "encode"));
+  require_complete(seq, dir, farm::check_frames_current(dir, seq.shot, seq.frames, cmd.allow_stale, "encode"));
   const FrameSpacing spacing = frame_spacing(seq.frames);
   const auto [fps, fps_source] = frame_rate(cmd, seq, spacing.step);
   const EncodeOptions o = encode_options(cmd, fps);

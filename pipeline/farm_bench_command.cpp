@@ -13,13 +13,13 @@
 
 #include "farm/content_hash.hpp"
 #include "farm/farm_run.hpp"
+#include "farm/frame_files.hpp"
 #include "farm/frame_writer.hpp"
 #include "farm/local_farm.hpp"
 #include "farm/mpi_master.hpp"
 #include "farm/mpi_session.hpp"
 #include "farm/mpi_worker.hpp"
 #include "farm/threads.hpp"
-#include "frame_files.hpp"
 #include "image_size.hpp"
 
 namespace lc {
@@ -54,8 +54,8 @@ WriteTiming time_frame_writes(const RenderSettings& rs, int writers) {
   // A pattern rather than zeros, so compression has something to do.
   for (std::size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = static_cast<float>((i * 2654435761u) % 1000) / 1000.0f;
   auto write = [&](int k) {
-    farm::write_verified(frame_path(dir, "bench", k, "exr"), farm::FrameFormat::exr, img, {{"lightcone/shot", "bench"}});
-    farm::write_verified(frame_path(dir, "bench", k, "png"), farm::FrameFormat::png, img);
+    farm::write_frame_files(farm::frame_path(dir, "bench", k, "exr"), farm::frame_path(dir, "bench", k, "png"), img,
+                            {{"lightcone/shot", "bench"}});
   };
   auto since = [](auto t0) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   WriteTiming t;

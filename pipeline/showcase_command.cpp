@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "farm/frame_files.hpp"
 #include "farm/mpi_session.hpp"
-#include "frame_files.hpp"
 #include "interrupt.hpp"
 #include "render_command.hpp"
 #include "script/script_paths.hpp"
@@ -56,7 +56,7 @@ FrameSequence rendered_frames(const SequencePlan& s, const ShowcaseLayout& layou
   FrameSequence seq;
   seq.shot = s.name;
   seq.frames = s.frames;
-  for (int i : s.frames) seq.files.push_back(frame_path(layout.frames(s.name), s.name, i, "png"));
+  for (int i : s.frames) seq.files.push_back(farm::frame_path(layout.frames(s.name), s.name, i, "png"));
   return seq;
 }
 

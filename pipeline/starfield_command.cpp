@@ -4,7 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "atomic_file.hpp"
+#include "command_output.hpp"
+#include "durable_file.hpp"
 #include "image/image.hpp"
 
 namespace lc {
@@ -15,17 +16,9 @@ int run_starfield(const StarfieldCommand& cmd) {
   require_extension(cmd.output, ".png", "the star field is written as an 8-bit sRGB PNG");
   if (cmd.width < 64 || cmd.width > 16384 || cmd.width % 2 != 0)
     throw std::invalid_argument(fmt::format("--width {}: must be even, between 64 and 16384", cmd.width));
-  // Written beside the target and renamed, like every output.
-  std::filesystem::path temp = cmd.output;
-  temp += ".tmp-starfield";
-  try {
-    make_starfield(temp, cmd.width, cmd.width / 2, cmd.seed);
-    std::filesystem::rename(temp, cmd.output);
-  } catch (...) {
-    std::error_code ec;
-    std::filesystem::remove(temp, ec);
-    throw;
-  }
+  DurableFile out(cmd.output);
+  make_starfield(out.temp_path(), cmd.width, cmd.width / 2, cmd.seed);
+  out.commit();
   fmt::print(stderr, "starfield: {}x{} (seed {}) -> {}\n", cmd.width, cmd.width / 2, cmd.seed, cmd.output.string());
   return 0;
 }

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "atomic_file.hpp"
+#include "command_output.hpp"
 #include "frame_range.hpp"
 #include "geodesic_csv.hpp"
 #include "render/scene_builder.hpp"

@@ -1,18 +1,15 @@
 #include "farm/frame_store.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <stdexcept>
 
-#include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/statvfs.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
+#include "durable_file.hpp"
+#include "farm/frame_files.hpp"
 #include "farm/frame_writer.hpp"
-#include "frame_files.hpp"
 
 namespace lc::farm {
 
@@ -20,23 +17,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// fsync a directory so renames into it survive a crash of the machine.
-void sync_dir(const fs::path& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) throw std::runtime_error(fmt::format("cannot open {} to sync it: {}", dir.string(), std::strerror(errno)));
-  const int rc = ::fsync(fd);
-  const int err = errno;
-  ::close(fd);
-  if (rc != 0) throw std::runtime_error(fmt::format("cannot sync {}: {}", dir.string(), std::strerror(err)));
-}
-
 // Whether `name` is a temporary of this shot's frame files
-// ("<shot>.<NNNN>.<ext>.tmp-<pid>", frame_files.cpp's naming).
+// ("<shot>.<NNNN>.<ext>" + a DurableFile's temporary suffix).
 bool is_frame_temporary(const std::string& name, const std::string& shot) {
-  if (name.rfind(shot + ".", 0) != 0) return false;
-  const auto t = name.rfind(".tmp-");
-  if (t == std::string::npos || t + 5 >= name.size()) return false;
-  return std::all_of(name.begin() + static_cast<long>(t) + 5, name.end(), [](char c) { return c >= '0' && c <= '9'; });
+  return name.rfind(shot + ".", 0) == 0 && is_temporary_name(name);
 }
 
 // Removes temporaries left by a killed render (we hold the lock: nobody
@@ -122,10 +106,8 @@ void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMeta
                              const FrameSettings& settings, const std::string& inputs, const InputParts& parts,
                              long rays) {
   with_space_hint(dir_, [&] {
-    write_verified(frame_path(dir_, shot_, frame, "exr"), FrameFormat::exr, image, metadata);
-    write_verified(frame_path(dir_, shot_, frame, "png"), FrameFormat::png, image);
+    write_frame_files(frame_path(dir_, shot_, frame, "exr"), frame_path(dir_, shot_, frame, "png"), image, metadata);
   });
-  sync_dir(dir_);
   JournalFrame jf;
   jf.frame = frame;
   jf.settings = settings;
@@ -175,7 +157,7 @@ void FrameStore::write_preview(int frame, FrameImage image, const std::vector<in
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw std::runtime_error(fmt::format("cannot create {}: {}", dir.string(), ec.message()));
-  with_space_hint(dir, [&] { write_verified(frame_path(dir, shot_, frame, "png"), FrameFormat::png, image); });
+  with_space_hint(dir, [&] { write_png_file(frame_path(dir, shot_, frame, "png"), image); });
 }
 
 }  // namespace lc::farm

@@ -1,58 +1,50 @@
 #include "farm/frame_writer.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <stdexcept>
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <unistd.h>
+
+#include "durable_file.hpp"
 
 namespace lc::farm {
 
-namespace fs = std::filesystem;
-
 namespace {
 
-void sync_file(const fs::path& p) {
-  const int fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw std::runtime_error(fmt::format("cannot open {} to sync it: {}", p.string(), std::strerror(errno)));
-  const int rc = ::fsync(fd);
-  const int err = errno;
-  ::close(fd);
-  if (rc != 0) throw std::runtime_error(fmt::format("cannot sync {}: {}", p.string(), std::strerror(err)));
-}
+enum class FrameFormat { exr, png };
 
-// Reads the file back and checks its size matches; throws naming `final`.
-void verify(const fs::path& temp, const fs::path& final, FrameFormat format, const FrameImage& image) {
+// Writes `image` in `format` to `file`'s temporary, reads it back and
+// checks its size; throws naming the final name.  The caller commits.
+void write_verified(const DurableFile& file, FrameFormat format, const FrameImage& image,
+                    const ImageMetadata& metadata = {}) {
+  const std::filesystem::path& temp = file.temp_path();
+  if (format == FrameFormat::exr)
+    write_exr(temp, image, metadata);
+  else
+    write_png(temp, image);
   try {
     const FrameImage back = format == FrameFormat::exr ? read_exr(temp) : read_image_linear(temp);
     if (back.width != image.width || back.height != image.height)
       throw std::runtime_error(fmt::format("it reads back as {}x{}", back.width, back.height));
   } catch (const std::exception& e) {
-    throw std::runtime_error(
-        fmt::format("cannot write {}: the file written does not read back ({})", final.string(), e.what()));
+    throw std::runtime_error(fmt::format("cannot write {}: the file written does not read back ({})",
+                                         file.final_path().string(), e.what()));
   }
 }
 
 }  // namespace
 
-void write_verified(const fs::path& final, FrameFormat format, const FrameImage& image, const ImageMetadata& metadata) {
-  fs::path temp = final;
-  temp += fmt::format(".tmp-{}", ::getpid());
-  try {
-    if (format == FrameFormat::exr)
-      write_exr(temp, image, metadata);
-    else
-      write_png(temp, image);
-    verify(temp, final, format, image);
-    sync_file(temp);
-    fs::rename(temp, final);
-  } catch (...) {
-    std::error_code ec;
-    fs::remove(temp, ec);
-    throw;
-  }
+void write_frame_files(const std::filesystem::path& exr, const std::filesystem::path& png, const FrameImage& image,
+                       const ImageMetadata& metadata) {
+  DurableFile exr_file(exr), png_file(png);
+  write_verified(exr_file, FrameFormat::exr, image, metadata);
+  write_verified(png_file, FrameFormat::png, image);
+  commit_together({&exr_file, &png_file});
+}
+
+void write_png_file(const std::filesystem::path& png, const FrameImage& image) {
+  DurableFile file(png);
+  write_verified(file, FrameFormat::png, image);
+  file.commit();
 }
 
 }  // namespace lc::farm

@@ -1,23 +1,26 @@
 #pragma once
 // Writes a frame's files so that a final name only ever shows a complete,
-// readable file: each file goes to a temporary name, is read back (the
-// image writers do not always notice a failed write: on a full disk a PNG
-// can come out empty without an error), synced, and only then renamed.
-// Temporaries are named "<final>.tmp-<pid>", as frame_files.hpp does, so
-// the frame store's cleanup finds those of a killed render.
+// readable file: each file goes to a DurableFile's temporary, is read back
+// (the image writers do not always notice a failed write: on a full disk a
+// PNG can come out empty without an error) and only then committed.  The
+// frame store's cleanup finds the temporaries of a killed render by their
+// name (is_temporary_name).
 
 #include <filesystem>
-#include <string>
 
 #include "image/image.hpp"
 
 namespace lc::farm {
 
-enum class FrameFormat { exr, png };
+// Writes `image` as `exr` (linear float, with `metadata`) and `png` (8-bit
+// sRGB), each read back, and commits both together: after it returns both
+// survive a crash, and if it throws (std::runtime_error naming the file)
+// neither final name has changed unless the failure came in the renames
+// themselves.  No temporary is left behind.
+void write_frame_files(const std::filesystem::path& exr, const std::filesystem::path& png, const FrameImage& image,
+                       const ImageMetadata& metadata);
 
-// Writes `image` to `final` in `format`, verified and atomically.  Throws
-// std::runtime_error naming the file; leaves no temporary behind.
-void write_verified(const std::filesystem::path& final, FrameFormat format, const FrameImage& image,
-                    const ImageMetadata& metadata = {});
+// The same for a PNG alone (a preview).
+void write_png_file(const std::filesystem::path& png, const FrameImage& image);
 
 }  // namespace lc::farm

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "durable_file.hpp"
 #include "farm/content_hash.hpp"
 
 namespace lc::farm {
@@ -227,13 +228,6 @@ void write_all(int fd, const std::string& data, const std::filesystem::path& p) 
   }
 }
 
-// Makes a newly created directory entry durable.
-void sync_dir(const std::filesystem::path& dir) {
-  const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;  // best effort: the lines themselves are synced
-  ::fsync(fd);
-  ::close(fd);
-}
 }  // namespace
 
 // Opens (creating with the header, or cutting a torn tail) on first use.
@@ -246,7 +240,7 @@ void JournalWriter::open() {
   if (!existed || valid_bytes_ == 0) {
     write_all(fd_, journal_header_line() + "\n", file_);
     if (::fsync(fd_) != 0) fail(file_, "sync");
-    sync_dir(file_.parent_path());
+    sync_directory(file_.parent_path());  // the new name, too, must survive a crash
   }
 }
 

@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "durable_file.hpp"
 #include "video/libav.hpp"
-#include "video/temp_output.hpp"
 
 namespace lc {
 
@@ -91,19 +91,9 @@ unsigned int output_tag(const AVOutputFormat* ofmt, const AVCodecParameters& par
   return 0;
 }
 
-const char* muxer_of(Container c) {
-  switch (c) {
-    case Container::mp4: return "mp4";
-    case Container::mov: return "mov";
-    case Container::mkv: return "matroska";
-    case Container::webm: return "webm";
-  }
-  return "mp4";
-}
-
 // The output side: muxer, stream, temporary file.
 struct Output {
-  TempOutput file;
+  DurableFile file;
   AVFormatContext* ctx = nullptr;
   explicit Output(const fs::path& p) : file(p) {}
   ~Output() {
@@ -129,7 +119,7 @@ ConcatResult concat_videos(const std::vector<fs::path>& inputs, const fs::path& 
 
   const std::string where = out.string();
   Output o(out);
-  libav::check(avformat_alloc_output_context2(&o.ctx, nullptr, muxer_of(container), o.file.temp().c_str()),
+  libav::check(avformat_alloc_output_context2(&o.ctx, nullptr, libav::muxer_name(container), o.file.temp_path().c_str()),
                fmt::format("cannot write {}", where));
   AVStream* st = avformat_new_stream(o.ctx, nullptr);
   if (!st) throw std::bad_alloc();
@@ -139,15 +129,8 @@ ConcatResult concat_videos(const std::vector<fs::path>& inputs, const fs::path& 
   st->time_base = first.time_base;
   st->avg_frame_rate = first.avg_frame_rate;
   st->r_frame_rate = first.avg_frame_rate;
-  libav::check(avio_open(&o.ctx->pb, o.file.temp().c_str(), AVIO_FLAG_WRITE), fmt::format("cannot write {}", where));
-  AVDictionary* mux = nullptr;
-  if (container == Container::mp4 || container == Container::mov) {
-    av_dict_set(&mux, "movflags", "+faststart", 0);
-    av_dict_set_int(&mux, "movie_timescale", libav::movie_timescale(st->time_base), 0);  // exact duration
-  }
-  const int hrc = avformat_write_header(o.ctx, &mux);
-  av_dict_free(&mux);
-  libav::check(hrc, fmt::format("cannot write {}", where));
+  libav::check(avio_open(&o.ctx->pb, o.file.temp_path().c_str(), AVIO_FLAG_WRITE), fmt::format("cannot write {}", where));
+  libav::write_header(o.ctx, container, st->time_base, where);
 
   // Each input is shifted by `offset` (output time base) so it starts where
   // the previous one ended; its end is its latest pts + duration.

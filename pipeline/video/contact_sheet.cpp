@@ -6,10 +6,10 @@
 
 #include <fmt/format.h>
 
+#include "durable_file.hpp"
 #include "image/image_io.hpp"
 #include "image/srgb.hpp"
 #include "video/pixel_font.hpp"
-#include "video/temp_output.hpp"
 
 namespace lc {
 
@@ -153,8 +153,8 @@ void write_contact_sheet(const FrameSequence& sequence, const ContactSheetOption
                          const std::filesystem::path& out) {
   // Builds the sheet first (reading every pick), then writes it atomically.
   const FrameImage sheet = make_contact_sheet(sequence, options);
-  TempOutput file(out);
-  write_png(file.temp(), sheet);
+  DurableFile file(out);
+  write_png(file.temp_path(), sheet);
   file.commit();
 }
 

@@ -17,6 +17,8 @@ extern "C" {
 #include <cstdint>
 #include <string>
 
+#include "video/encode_options.hpp"
+
 namespace lc::libav {
 
 // FFmpeg's text for an error code (av_err2str is a C compound literal,
@@ -34,7 +36,16 @@ int check(int code, const std::string& what);
 void quiet_logs();
 
 // The clock MP4's movie header should use for a video stream with
-// `time_base` so its duration is exact (video_writer.cpp explains).
+// `time_base` so its duration is exact (write_header explains).
 std::int64_t movie_timescale(AVRational time_base);
+
+// FFmpeg's muxer for a container ("mp4", "matroska", ...).
+const char* muxer_name(Container container);
+
+// Writes the header of `ctx` (opened for `container`, its one stream of
+// `time_base` added): for MP4/MOV with the index in front, so a browser
+// plays before the whole file has arrived, and the movie clock of
+// movie_timescale.  Throws naming `where`.
+void write_header(AVFormatContext* ctx, Container container, AVRational time_base, const std::string& where);
 
 }  // namespace lc::libav

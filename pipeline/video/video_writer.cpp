@@ -5,23 +5,12 @@
 
 #include <fmt/format.h>
 
+#include "durable_file.hpp"
 #include "video/libav.hpp"
-#include "video/temp_output.hpp"
 
 namespace lc {
 
 namespace {
-
-// The FFmpeg muxer name of a container.
-const char* muxer_name(Container c) {
-  switch (c) {
-    case Container::mp4: return "mp4";
-    case Container::mov: return "mov";
-    case Container::mkv: return "matroska";
-    case Container::webm: return "webm";
-  }
-  return "mp4";
-}
 
 // The FFmpeg encoder behind each codec (docs/encoding.md says why these).
 const char* encoder_name(Codec c) {
@@ -75,7 +64,7 @@ AVDictionary* encoder_options(const EncodeOptions& o) {
 }  // namespace
 
 struct VideoWriter::Impl {
-  TempOutput output;
+  DurableFile output;
   int width, height;  // as given (frames must have this size)
   AVFormatContext* fmt = nullptr;
   AVCodecContext* enc = nullptr;
@@ -135,7 +124,7 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
   if (!codec)
     throw std::runtime_error(fmt::format("cannot write {}: this FFmpeg has no {} encoder for {}", where,
                                          encoder_name(options.codec), codec_name(options.codec)));
-  libav::check(avformat_alloc_output_context2(&m.fmt, nullptr, muxer_name(container), m.output.temp().c_str()),
+  libav::check(avformat_alloc_output_context2(&m.fmt, nullptr, libav::muxer_name(container), m.output.temp_path().c_str()),
                fmt::format("cannot write {}", where));
   m.stream = avformat_new_stream(m.fmt, nullptr);
   m.enc = avcodec_alloc_context3(codec);
@@ -177,22 +166,9 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
   if (options.codec == Codec::hevc && (container == Container::mp4 || container == Container::mov))
     m.stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
 
-  libav::check(avio_open(&m.fmt->pb, m.output.temp().c_str(), AVIO_FLAG_WRITE),
+  libav::check(avio_open(&m.fmt->pb, m.output.temp_path().c_str(), AVIO_FLAG_WRITE),
                fmt::format("cannot write {}", where));
-  AVDictionary* mux = nullptr;
-  // The index (moov) in front of the data: a browser starts playing before
-  // the whole file has arrived.
-  if (container == Container::mp4 || container == Container::mov) {
-    av_dict_set(&mux, "movflags", "+faststart", 0);
-    // The movie header's clock, 1/1000 s by default, would round the
-    // file's duration to milliseconds (4 frames at 30 fps: 0.134 s); the
-    // track's own clock (the muxer's rule: the time base's denominator,
-    // doubled up to 10000 or more) holds frames / fps exactly.
-    av_dict_set_int(&mux, "movie_timescale", libav::movie_timescale(m.enc->time_base), 0);
-  }
-  const int hrc = avformat_write_header(m.fmt, &mux);
-  av_dict_free(&mux);
-  libav::check(hrc, fmt::format("cannot write {}", where));
+  libav::write_header(m.fmt, container, m.enc->time_base, where);
 
   m.sws = sws_getContext(m.enc->width, m.enc->height, AV_PIX_FMT_RGB24, m.enc->width, m.enc->height, m.enc->pix_fmt,
                          SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr);

@@ -5,39 +5,22 @@
 
 #include <gtest/gtest.h>
 
-#include "scratch_dir.hpp"
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "scratch_dir.hpp"
+#include "test_errors.hpp"
 #include "video/frame_sequence.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// An empty directory for one test, removed afterwards (the shared ScratchDir,
-// with the path as a member as these tests use it).
-struct TempDir : lc::test::ScratchDir {
-  const fs::path path{ScratchDir::path()};
-  void touch(const std::string& name) const { std::ofstream(path / name) << "x"; }
-};
-
-// The message of the std::runtime_error `f` throws ("" and a failure if none).
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no error thrown";
-  return "";
-}
+using lc::test::error_of;
+using lc::test::ScratchDir;
 
 TEST(encode_sequence, ContiguousFramesHaveStepOneAndNoHoles) {
   const lc::FrameSpacing s = lc::frame_spacing({3, 4, 5, 6, 7});
@@ -102,10 +85,10 @@ TEST(encode_sequence, AStepMayEndOnOneLastFrameOffTheStep) {
 TEST(encode_sequence, LostFramesOffTheStepAreHolesToo) {
   // The frame numbers 0, 9, 10 look like every 9th plus a last frame; the
   // journal knows 1-8 were rendered and are gone.
-  TempDir d;
+  ScratchDir d;
   lc::FrameSequence seq{"s", {0, 9, 10}, {}};
-  EXPECT_NO_THROW(lc::require_complete(seq, d.path));
-  const std::string message = error_of([&] { lc::require_complete(seq, d.path, {1, 2, 3, 4, 5, 6, 7, 8}); });
+  EXPECT_NO_THROW(lc::require_complete(seq, d.path()));
+  const std::string message = error_of([&] { lc::require_complete(seq, d.path(), {1, 2, 3, 4, 5, 6, 7, 8}); });
   EXPECT_NE(message.find("shot s, frames 0-10: missing frames 1-8"), std::string::npos) << message;
 }
 
@@ -117,12 +100,12 @@ TEST(encode_sequence, MissingFramesAreListedCompactly) {
 }
 
 TEST(encode_sequence, FindsFramesByFinalNameOnly) {
-  TempDir d;
+  ScratchDir d;
   for (const char* n : {"kerr.0000.png", "kerr.0001.png", "kerr.0002.png", "kerr.0000.exr", "kerr.0003.png.tmp-77",
                         "kerr.journal", "notes.txt", "kerr.12.png", "my.shot.v2.10000.png"})
-    d.touch(n);
-  fs::create_directories(d.path / "preview" / "kerr.0004.png");  // a directory, not a frame
-  const auto all = lc::find_frame_sequences(d.path);
+    std::ofstream(d / n) << "x";
+  fs::create_directories(d / "preview" / "kerr.0004.png");  // a directory, not a frame
+  const auto all = lc::find_frame_sequences(d.path());
   ASSERT_EQ(all.size(), 2u);
   EXPECT_EQ(all.at("kerr").frames, (std::vector<int>{0, 1, 2}));
   EXPECT_EQ(all.at("kerr").files.back().filename(), "kerr.0002.png");
@@ -130,24 +113,24 @@ TEST(encode_sequence, FindsFramesByFinalNameOnly) {
 }
 
 TEST(encode_sequence, ChoosesTheOnlyShotOrTheNamedOne) {
-  TempDir d;
-  d.touch("a.0000.png");
-  d.touch("a.0001.png");
-  EXPECT_EQ(lc::select_frame_sequence(d.path, std::nullopt).shot, "a");
-  d.touch("b.0005.png");
-  const std::string many = error_of([&] { lc::select_frame_sequence(d.path, std::nullopt); });
+  ScratchDir d;
+  std::ofstream(d / "a.0000.png") << "x";
+  std::ofstream(d / "a.0001.png") << "x";
+  EXPECT_EQ(lc::select_frame_sequence(d.path(), std::nullopt).shot, "a");
+  std::ofstream(d / "b.0005.png") << "x";
+  const std::string many = error_of([&] { lc::select_frame_sequence(d.path(), std::nullopt); });
   EXPECT_NE(many.find("a (2 frames), b (1 frames)"), std::string::npos) << many;
   EXPECT_NE(many.find("--shot"), std::string::npos) << many;
-  EXPECT_EQ(lc::select_frame_sequence(d.path, std::string("b")).frames, (std::vector<int>{5}));
-  const std::string unknown = error_of([&] { lc::select_frame_sequence(d.path, std::string("c")); });
+  EXPECT_EQ(lc::select_frame_sequence(d.path(), std::string("b")).frames, (std::vector<int>{5}));
+  const std::string unknown = error_of([&] { lc::select_frame_sequence(d.path(), std::string("c")); });
   EXPECT_NE(unknown.find("--shot c"), std::string::npos) << unknown;
 }
 
 TEST(encode_sequence, EmptyOrMissingDirectoryIsNamed) {
-  TempDir d;
-  const std::string empty = error_of([&] { lc::select_frame_sequence(d.path, std::nullopt); });
-  EXPECT_NE(empty.find(d.path.string() + ": no frames"), std::string::npos) << empty;
-  const std::string missing = error_of([&] { lc::select_frame_sequence(d.path / "nope", std::nullopt); });
+  ScratchDir d;
+  const std::string empty = error_of([&] { lc::select_frame_sequence(d.path(), std::nullopt); });
+  EXPECT_NE(empty.find(d.path().string() + ": no frames"), std::string::npos) << empty;
+  const std::string missing = error_of([&] { lc::select_frame_sequence(d / "nope", std::nullopt); });
   EXPECT_NE(missing.find("no such directory"), std::string::npos) << missing;
 }
 

@@ -6,13 +6,13 @@
 
 #include <gtest/gtest.h>
 
-#include "scratch_dir.hpp"
-#include <unistd.h>
-
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "scratch_dir.hpp"
+#include "test_errors.hpp"
 #include "video/encode_options.hpp"
 #include "video/encode_sequence.hpp"
 #include "video/video_writer.hpp"
@@ -21,49 +21,35 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// An empty directory for one test, removed afterwards (the shared ScratchDir,
-// with the path as a member as these tests use it).
-struct TempDir : lc::test::ScratchDir {
-  const fs::path path{ScratchDir::path()};
-  std::size_t entries() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(path), {})); }
-};
-
-template <class E, class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const E& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no error thrown";
-  return "";
-}
+using lc::test::error_of;
+using lc::test::ScratchDir;
+using Names = std::vector<std::string>;
 
 TEST(encode_writer, FileAppearsOnlyAfterFinish) {
-  TempDir d;
-  const fs::path out = d.path / "clip.mp4";
+  ScratchDir d;
+  const fs::path out = d / "clip.mp4";
   lc::VideoWriter w(out, 16, 8, lc::EncodeOptions{});
   for (int i = 0; i < 3; ++i) w.add(lc::Rgb8Image::filled(16, 8, static_cast<std::uint8_t>(80 * i), 40, 200));
   EXPECT_FALSE(fs::exists(out));
   w.finish();
   EXPECT_TRUE(fs::exists(out));
   EXPECT_GT(fs::file_size(out), 100u);
-  EXPECT_EQ(d.entries(), 1u) << "a temporary was left behind";
+  EXPECT_EQ(d.names(), Names{"clip.mp4"}) << "a temporary was left behind";
   EXPECT_EQ(w.frames(), 3);
 }
 
 TEST(encode_writer, AbandonedWriterLeavesNothing) {
-  TempDir d;
+  ScratchDir d;
   {
-    lc::VideoWriter w(d.path / "clip.mp4", 16, 8, lc::EncodeOptions{});
+    lc::VideoWriter w(d / "clip.mp4", 16, 8, lc::EncodeOptions{});
     w.add(lc::Rgb8Image::filled(16, 8, 1, 2, 3));
   }
-  EXPECT_EQ(d.entries(), 0u);
+  EXPECT_TRUE(d.names().empty());
 }
 
 TEST(encode_writer, OddSizeIsPaddedToEven) {
-  TempDir d;
-  lc::VideoWriter w(d.path / "odd.mp4", 15, 9, lc::EncodeOptions{});
+  ScratchDir d;
+  lc::VideoWriter w(d / "odd.mp4", 15, 9, lc::EncodeOptions{});
   EXPECT_EQ(w.encoded_width(), 16);
   EXPECT_EQ(w.encoded_height(), 10);
   w.add(lc::Rgb8Image::filled(15, 9, 9, 9, 9));
@@ -71,8 +57,8 @@ TEST(encode_writer, OddSizeIsPaddedToEven) {
 }
 
 TEST(encode_writer, WrongFrameSizeAndNoFramesAreRefused) {
-  TempDir d;
-  lc::VideoWriter w(d.path / "clip.mp4", 16, 8, lc::EncodeOptions{});
+  ScratchDir d;
+  lc::VideoWriter w(d / "clip.mp4", 16, 8, lc::EncodeOptions{});
   const std::string m = error_of<std::invalid_argument>([&] { w.add(lc::Rgb8Image::filled(8, 8, 0, 0, 0)); });
   EXPECT_NE(m.find("8x8, the video is 16x8"), std::string::npos) << m;
   const std::string none = error_of<std::runtime_error>([&] { w.finish(); });
@@ -80,13 +66,13 @@ TEST(encode_writer, WrongFrameSizeAndNoFramesAreRefused) {
 }
 
 TEST(encode_writer, UnwritableOutputIsNamed) {
-  TempDir d;
-  const fs::path out = d.path / "missing" / "clip.mp4";
+  ScratchDir d;
+  const fs::path out = d / "missing" / "clip.mp4";
   const std::string m = error_of<std::runtime_error>([&] { lc::VideoWriter(out, 16, 8, lc::EncodeOptions{}); });
   EXPECT_NE(m.find("cannot write " + out.string()), std::string::npos) << m;
-  fs::create_directories(d.path / "taken.mp4");
+  fs::create_directories(d / "taken.mp4");
   const std::string dir =
-      error_of<std::runtime_error>([&] { lc::VideoWriter(d.path / "taken.mp4", 16, 8, lc::EncodeOptions{}); });
+      error_of<std::runtime_error>([&] { lc::VideoWriter(d / "taken.mp4", 16, 8, lc::EncodeOptions{}); });
   EXPECT_NE(dir.find("is a directory"), std::string::npos) << dir;
 }
 
@@ -181,18 +167,18 @@ TEST(encode_writer, SizesTheEncodersCannotTakeAreRefusedBeforeOpening) {
   EXPECT_FALSE(lc::size_warning(Codec::vp9, 8192, 8192));
   // The writer refuses at once, naming the file and the limit, and leaves
   // nothing (it used to fail inside the encoder with "(0x0): Invalid argument").
-  TempDir d;
+  ScratchDir d;
   const std::string message =
-      error_of<std::invalid_argument>([&] { lc::VideoWriter(d.path / "big.mp4", 16384, 16384, lc::EncodeOptions{}); });
+      error_of<std::invalid_argument>([&] { lc::VideoWriter(d / "big.mp4", 16384, 16384, lc::EncodeOptions{}); });
   EXPECT_NE(message.find("big.mp4: 16384x16384 frames are too large"), std::string::npos) << message;
-  EXPECT_EQ(d.entries(), 0u);
+  EXPECT_TRUE(d.names().empty());
 }
 
 TEST(encode_writer, StillHoldsForTheFramesAsked) {
-  TempDir d;
+  ScratchDir d;
   int calls = 0, last_total = 0;
   const lc::EncodeResult r =
-      lc::encode_still(lc::Rgb8Image::filled(16, 8, 200, 0, 0), 5, lc::EncodeOptions{}, d.path / "still.mp4",
+      lc::encode_still(lc::Rgb8Image::filled(16, 8, 200, 0, 0), 5, lc::EncodeOptions{}, d / "still.mp4",
                        [&](int done, int total) {
                          ++calls;
                          last_total = total;
@@ -206,14 +192,14 @@ TEST(encode_writer, StillHoldsForTheFramesAsked) {
 
 TEST(encode_writer, ProgressMayAbandonTheEncoding) {
   // How a Ctrl-C reaches the encoder: the progress callback throws.
-  TempDir d;
+  ScratchDir d;
   struct Stop {};
-  EXPECT_THROW(lc::encode_still(lc::Rgb8Image::filled(16, 8, 0, 0, 0), 10, lc::EncodeOptions{}, d.path / "x.mp4",
+  EXPECT_THROW(lc::encode_still(lc::Rgb8Image::filled(16, 8, 0, 0, 0), 10, lc::EncodeOptions{}, d / "x.mp4",
                                 [](int done, int) {
                                   if (done == 3) throw Stop{};
                                 }),
                Stop);
-  EXPECT_EQ(d.entries(), 0u);
+  EXPECT_TRUE(d.names().empty());
 }
 
 }  // namespace

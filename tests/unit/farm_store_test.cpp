@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "farm/frame_files.hpp"
 #include "farm/frame_store.hpp"
 #include "farm/resume_plan.hpp"
-#include "frame_files.hpp"
 #include "image/image_io.hpp"
 #include "render/renderer.hpp"
 #include "scratch_dir.hpp"

@@ -8,6 +8,7 @@
 
 #include "core/constants.hpp"
 #include "geodesic/geodesic_solver.hpp"
+#include "test_scenes.hpp"
 
 namespace lc {
 namespace {
@@ -60,14 +61,7 @@ TEST(GeodesicSolver, DiholeOscillationPeriod) {
   // through the origin to x = -5 and back.  Periods from Wünsch et al. (2013)
   // as quoted by the paper (T = 110.59) and to more digits by the project's
   // issue tracker: coordinate 110.594, proper 78.753.
-  const Dihole d(0.4, 0.4, 1.0);
-  GeodesicProblem pb;
-  pb.spacetime = d;
-  pb.kind = CurveKind::timelike;
-  pb.x0 = {0, 5, 0, 0};
-  pb.u0 = static_cartesian_tetrad(d, pb.x0).e[0];
-  pb.stop_parameter = StopParameter::coordinate_time;
-  pb.stop_value = 112.0;
+  GeodesicProblem pb = test::dihole_oscillation_problem(StopParameter::coordinate_time, 112.0);
   pb.samples = 11201;  // one row per 0.01 of coordinate time
   const GeodesicPath path = solve_geodesic(pb);
   ASSERT_EQ(path.reason, StopReason::reached);

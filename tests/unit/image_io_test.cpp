@@ -8,9 +8,6 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
-#include "scratch_dir.hpp"
-#include <unistd.h>
-
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -24,6 +21,8 @@
 #include <vector>
 
 #include "image/image.hpp"
+#include "scratch_dir.hpp"
+#include "test_errors.hpp"
 
 namespace {
 
@@ -31,19 +30,8 @@ namespace fs = std::filesystem;
 using lc::FrameImage;
 using lc::Texture;
 
+using lc::test::error_of;
 using lc::test::ScratchDir;
-
-// The message of the std::runtime_error `f` throws; fails the test if none is.
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no std::runtime_error thrown";
-  return {};
-}
 
 // The first bytes of a file (its format's magic number).
 std::string head_bytes(const fs::path& p, std::size_t n) {

@@ -19,11 +19,14 @@
 #include <system_error>
 #include <vector>
 
+#include "test_errors.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 using lc::lua::Sandbox;
 using lc::lua::ScriptError;
+using lc::test::error_of;
 
 const fs::path kSource = LIGHTCONE_SOURCE_DIR;
 const fs::path kLuaTests = kSource / "tests" / "lua";
@@ -95,18 +98,6 @@ TEST(LuaLibrary, FindsTheLuaTests) {
   }
 }
 
-// The message of the ScriptError `f` throws; fails the test if none is thrown.
-template <class F>
-std::string script_error(F&& f) {
-  try {
-    f();
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no ScriptError thrown";
-  return {};
-}
-
 // Whether msg starts with "FILE:LINE: text", FILE being `file` as Lua spells
 // it in error positions: the whole path, or "..." and its tail when long.
 bool located_at(const std::string& msg, const fs::path& file, int line, const std::string& text) {
@@ -124,7 +115,7 @@ bool located_at(const std::string& msg, const fs::path& file, int line, const st
 TEST(LuaLibrary, ErrorInMainChunkNamesTheScriptLine) {
   Sandbox sandbox = make_sandbox();
   const fs::path file = kFixtures / "error_at_top.lua";
-  const std::string msg = script_error([&] { sandbox.run_file(file, 1); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file, 1); });
   EXPECT_TRUE(located_at(msg, file, 6, "keyframes: frames must increase (key 2 has frame 5 after 10)\n"))
       << msg;
   EXPECT_NE(msg.find("stack traceback:"), std::string::npos) << msg;
@@ -149,7 +140,7 @@ TEST(LuaLibrary, ErrorInFrameFunctionNamesTheShotLine) {
   ASSERT_TRUE(lua_istable(L, 1));
   call_frame(sandbox, 1, 0);  // frames before the pan are fine
   lua_pop(L, 1);
-  const std::string msg = script_error([&] { call_frame(sandbox, 1, 40); });
+  const std::string msg = error_of<ScriptError>([&] { call_frame(sandbox, 1, 40); });
   EXPECT_TRUE(
       located_at(msg, file, 17, "timeline:progress: no segment 'pann' (did you mean 'pan'?)\n"))
       << msg;
@@ -162,7 +153,7 @@ TEST(LuaLibrary, ErrorInFrameFunctionNamesTheShotLine) {
 TEST(LuaLibrary, ErrorInTailCallSaysTheLineIsUnknown) {
   Sandbox sandbox = make_sandbox();
   sandbox.run_file(kFixtures / "tail_call_frame.lua", 1);
-  const std::string msg = script_error([&] { call_frame(sandbox, 1, 3); });
+  const std::string msg = error_of<ScriptError>([&] { call_frame(sandbox, 1, 3); });
   EXPECT_NE(msg.find("animation.lua:"), std::string::npos) << msg;
   EXPECT_NE(msg.find(": circle_pan: from and to are parallel, so the circle through them is not "
                      "unique; pass an axis as the 4th argument (the calling line is unknown: Lua "

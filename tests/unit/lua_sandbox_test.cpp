@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "scratch_dir.hpp"
 #include <fcntl.h>
 #include <pthread.h>
 #include <sys/mman.h>
@@ -25,28 +24,20 @@
 #include <utility>
 #include <vector>
 
+#include "scratch_dir.hpp"
+#include "test_errors.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 using lc::lua::Sandbox;
 using lc::lua::SandboxLimits;
 using lc::lua::ScriptError;
+using lc::test::error_of;
 
 const fs::path kData = fs::path(LIGHTCONE_TEST_DATA) / "lua";
 const fs::path kDir1 = kData / "require" / "dir1";
 const fs::path kDir2 = kData / "require" / "dir2";
-
-// The message of the ScriptError `f` throws; fails the test if none is thrown.
-template <class F>
-std::string script_error(F&& f) {
-  try {
-    f();
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no ScriptError thrown";
-  return {};
-}
 
 std::string top_string(lua_State* L) {
   std::size_t len = 0;
@@ -122,7 +113,7 @@ TEST(LuaSandbox, BytecodeRefusedAsMainFile) {
   ASSERT_FALSE(bc.empty());
   write_file(dir.path() / "compiled.lua", bc);
   Sandbox sandbox({});
-  const std::string msg = script_error([&] { sandbox.run_file(dir.path() / "compiled.lua"); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(dir.path() / "compiled.lua"); });
   EXPECT_NE(msg.find("compiled.lua"), std::string::npos) << msg;
   EXPECT_NE(msg.find("bytecode is refused"), std::string::npos) << msg;
   EXPECT_EQ(lua_gettop(sandbox.state()), 0);
@@ -133,7 +124,7 @@ TEST(LuaSandbox, BytecodeRefusedViaRequire) {
   write_file(dir.path() / "compiled.lua", bytecode_of("return 1"));
   write_file(dir.path() / "main.lua", "local m = require('compiled')\nreturn m\n");
   Sandbox sandbox({dir.path()});
-  const std::string msg = script_error([&] { sandbox.run_file(dir.path() / "main.lua"); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(dir.path() / "main.lua"); });
   EXPECT_NE(msg.find("main.lua:1: module 'compiled'"), std::string::npos) << msg;
   EXPECT_NE(msg.find("bytecode, which is refused"), std::string::npos) << msg;
 }
@@ -141,7 +132,7 @@ TEST(LuaSandbox, BytecodeRefusedViaRequire) {
 TEST(LuaSandbox, EndlessLoopStoppedByTimeLimit) {
   Sandbox sandbox({}, SandboxLimits{.seconds = 0.2, .set_by = "the test"});
   const auto t0 = std::chrono::steady_clock::now();
-  const std::string msg = script_error([&] { sandbox.run_file(kData / "endless_loop.lua"); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "endless_loop.lua"); });
   const double elapsed = seconds_since(t0);
   EXPECT_GE(elapsed, 0.19);
   EXPECT_LT(elapsed, 10.0);  // stopped at all (it is endless); generous: shared machines stall
@@ -157,7 +148,7 @@ TEST(LuaSandbox, TimeLimitCannotBeSwallowedByPcall) {
   for (const char* script : {"swallow_loop.lua", "coroutine_loop.lua"}) {
     Sandbox sandbox({}, SandboxLimits{.seconds = 0.2});
     const auto t0 = std::chrono::steady_clock::now();
-    const std::string msg = script_error([&] { sandbox.run_file(kData / script); });
+    const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / script); });
     EXPECT_LT(seconds_since(t0), 10.0) << script;
     EXPECT_NE(msg.find("time limit of 0.2 s exceeded"), std::string::npos) << msg;
     EXPECT_EQ(lua_gettop(sandbox.state()), 0);
@@ -168,7 +159,7 @@ TEST(LuaSandbox, MemoryBombStoppedByCap) {
   Sandbox sandbox({}, SandboxLimits{.memory_bytes = 32u << 20});
   const fs::path file = kData / "memory_bomb.lua";
   const auto t0 = std::chrono::steady_clock::now();
-  const std::string msg = script_error([&] { sandbox.run_file(file); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
   EXPECT_LT(seconds_since(t0), 30.0);
   EXPECT_EQ(msg.rfind(file.string() + ": memory limit of 32 MiB exceeded", 0), 0u) << msg;
   EXPECT_EQ(lua_gettop(sandbox.state()), 0);
@@ -180,7 +171,7 @@ TEST(LuaSandbox, MemoryBombStoppedByCap) {
 TEST(LuaSandbox, SyntaxErrorReportsFileAndLine) {
   Sandbox sandbox({});
   const fs::path file = kData / "syntax_error.lua";
-  const std::string msg = script_error([&] { sandbox.run_file(file); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
   EXPECT_EQ(msg.rfind(file.string() + ":3:", 0), 0u) << msg;
   EXPECT_NE(msg.find("near '='"), std::string::npos) << msg;
   EXPECT_EQ(lua_gettop(sandbox.state()), 0);
@@ -190,7 +181,7 @@ TEST(LuaSandbox, RuntimeErrorReportsFileLineAndTraceback) {
   Sandbox sandbox({});
   lua_pushinteger(sandbox.state(), 7);  // the caller's stack is left alone
   const fs::path file = kData / "runtime_error.lua";
-  const std::string msg = script_error([&] { sandbox.run_file(file); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
   EXPECT_EQ(msg.rfind(file.string() + ":4: attempt to index field 'x' (a nil value)", 0), 0u)
       << msg;
   EXPECT_NE(msg.find("\nstack traceback:"), std::string::npos) << msg;
@@ -202,18 +193,18 @@ TEST(LuaSandbox, RuntimeErrorReportsFileLineAndTraceback) {
 
 TEST(LuaSandbox, NonStringErrorValuesGiveSensibleMessages) {
   Sandbox sandbox({});
-  std::string msg = script_error([&] { sandbox.run_file(kData / "error_table.lua"); });
+  std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "error_table.lua"); });
   EXPECT_NE(msg.find("error_table.lua:3: error object is a table value"), std::string::npos) << msg;
-  msg = script_error([&] { sandbox.run_file(kData / "error_tostring.lua"); });
+  msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "error_tostring.lua"); });
   EXPECT_EQ(msg.rfind("custom failure object", 0), 0u) << msg;
 }
 
 TEST(LuaSandbox, MissingFileNamesPathAndReason) {
   Sandbox sandbox({});
-  const std::string msg = script_error([&] { sandbox.run_file(kData / "no_such_shot.lua"); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "no_such_shot.lua"); });
   EXPECT_NE(msg.find((kData / "no_such_shot.lua").string()), std::string::npos) << msg;
   EXPECT_NE(msg.find("No such file or directory"), std::string::npos) << msg;
-  const std::string dir_msg = script_error([&] { sandbox.run_file(kData); });
+  const std::string dir_msg = error_of<ScriptError>([&] { sandbox.run_file(kData); });
   EXPECT_NE(dir_msg.find("Is a directory"), std::string::npos) << dir_msg;
   EXPECT_TRUE(sandbox.loaded_files().empty());
 }
@@ -261,7 +252,7 @@ TEST(LuaSandbox, RequireSearchesDirsInOrderAndCaches) {
 
 TEST(LuaSandbox, RequireMissingModuleListsSearchedPaths) {
   Sandbox sandbox({kDir1, kDir2});
-  const std::string msg = script_error([&] { sandbox.run_file(kData / "require_missing.lua"); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "require_missing.lua"); });
   const std::string expected = fmt::format(
       "{}:3: module 'nope' not found (searched: {}, {})", (kData / "require_missing.lua").string(),
       (kDir1 / "nope.lua").string(), (kDir2 / "nope.lua").string());
@@ -294,7 +285,7 @@ TEST(LuaSandbox, RequireRefusesPathsAndBadNames) {
 
 TEST(LuaSandbox, RequireCycleIsReported) {
   Sandbox sandbox({kDir1});
-  std::string msg = script_error([&] { sandbox.run_file(kData / "require_cycle_lines.lua"); });
+  std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "require_cycle_lines.lua"); });
   EXPECT_EQ(msg.rfind((kDir1 / "cyc_d.lua").string() + ":3: require cycle: cyc_c -> cyc_d -> cyc_c\n",
                       0),
             0u)
@@ -305,7 +296,7 @@ TEST(LuaSandbox, RequireCycleIsReported) {
   // Here every call is a tail call (`return require(...)`), so LuaJIT keeps
   // no Lua frame: the message names the module file, the traceback only the
   // require calls.
-  msg = script_error([&] { sandbox.run_file(kData / "require_cycle.lua"); });
+  msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "require_cycle.lua"); });
   EXPECT_EQ(msg.rfind((kDir1 / "cyc_b.lua").string() + ": require cycle: cyc_a -> cyc_b -> cyc_a\n", 0),
             0u)
       << msg;
@@ -315,7 +306,7 @@ TEST(LuaSandbox, RequireCycleIsReported) {
 
 TEST(LuaSandbox, ErrorInModuleKeepsModuleLineAndRequiringLine) {
   Sandbox sandbox({kDir1});
-  const std::string msg = script_error([&] { sandbox.run_file(kData / "require_bad_module.lua"); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "require_bad_module.lua"); });
   EXPECT_EQ(msg.rfind((kDir1 / "bad_module.lua").string() + ":3: attempt to index local 't'", 0), 0u)
       << msg;
   EXPECT_NE(msg.find("require_bad_module.lua:2: in main chunk"), std::string::npos) << msg;
@@ -334,7 +325,7 @@ TEST(LuaSandbox, FailedRequireIsRetriedNotACycle) {
 
 TEST(LuaSandbox, MemoryBombInModuleReportsMemory) {
   Sandbox sandbox({kDir1}, SandboxLimits{.memory_bytes = 32u << 20});
-  const std::string msg = script_error([&] { sandbox.run_file(kData / "require_bomb.lua"); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "require_bomb.lua"); });
   EXPECT_NE(msg.find("require_bomb.lua: memory limit of 32 MiB exceeded"), std::string::npos) << msg;
   sandbox.run_file(kData / "allowed_globals.lua");
   EXPECT_TRUE(lua_toboolean(sandbox.state(), -1));
@@ -401,15 +392,15 @@ class LuaSandboxC : public ::testing::Test {
 };
 
 TEST_F(LuaSandboxC, ProtectTurnsExceptionIntoErrorAtScriptLine) {
-  const std::string msg = script_error([&] { call("throws"); });
+  const std::string msg = error_of<ScriptError>([&] { call("throws"); });
   EXPECT_EQ(msg.rfind(line(4) + ": mass must be positive\nstack traceback:", 0), 0u) << msg;
   EXPECT_EQ(lua_gettop(sandbox_.state()), 1);
 }
 
 TEST_F(LuaSandboxC, TableReaderErrorsInsideCFunctionAreLocatedOnce) {
-  std::string msg = script_error([&] { call("kerr_missing"); });
+  std::string msg = error_of<ScriptError>([&] { call("kerr_missing"); });
   EXPECT_EQ(msg.rfind(line(5) + ": kerr: missing field 'mass'\n", 0), 0u) << msg;
-  msg = script_error([&] { call("kerr_typo"); });
+  msg = error_of<ScriptError>([&] { call("kerr_typo"); });
   EXPECT_EQ(msg.rfind(line(6) + ": kerr: unknown field 'spinn' (did you mean 'spin'?)\n", 0), 0u)
       << msg;
   call("kerr_ok");
@@ -417,7 +408,7 @@ TEST_F(LuaSandboxC, TableReaderErrorsInsideCFunctionAreLocatedOnce) {
 }
 
 TEST_F(LuaSandboxC, RaiseReportsCallerLine) {
-  const std::string msg = script_error([&] { call("raises"); });
+  const std::string msg = error_of<ScriptError>([&] { call("raises"); });
   EXPECT_EQ(msg.rfind(line(8) + ": raised from C", 0), 0u) << msg;
 }
 
@@ -432,9 +423,9 @@ TEST_F(LuaSandboxC, WhereReportsCallerLine) {
 // message then names the nearest Lua line below (the call of the enclosing
 // function), or has no location when the engine called that function.
 TEST_F(LuaSandboxC, TailCallsLoseTheCallingLine) {
-  std::string msg = script_error([&] { call("tail"); });
+  std::string msg = error_of<ScriptError>([&] { call("tail"); });
   EXPECT_EQ(msg.rfind("mass must be positive\nstack traceback:", 0), 0u) << msg;
-  msg = script_error([&] { call("tail_nested"); });
+  msg = error_of<ScriptError>([&] { call("tail_nested"); });
   EXPECT_EQ(msg.rfind(line(17) + ": mass must be positive\n", 0), 0u) << msg;
   // Through pcall, level 1 is pcall itself: the calling line is level 2.
   call("via_pcall");
@@ -446,7 +437,7 @@ TEST_F(LuaSandboxC, TailCallsLoseTheCallingLine) {
 // confirms the string in l_dtor_probe is freed.
 TEST_F(LuaSandboxC, LuaErrorRunsCppDestructors) {
   destructor_runs = 0;
-  const std::string msg = script_error([&] { call("probe"); });
+  const std::string msg = error_of<ScriptError>([&] { call("probe"); });
   EXPECT_EQ(msg.rfind(line(10) + ": probe 60", 0), 0u) << msg;
   EXPECT_EQ(destructor_runs, 1);
 }
@@ -503,17 +494,17 @@ TEST(LuaSandbox, CallErrorsAndLimitsArePerCall) {
 
   lua_getfield(L, 1, "fail");
   lua_pushinteger(L, 12);
-  std::string msg = script_error([&] { sandbox.call(1, 1); });
+  std::string msg = error_of<ScriptError>([&] { sandbox.call(1, 1); });
   EXPECT_EQ(msg.rfind(file.string() + ":14: frame 12 is broken", 0), 0u) << msg;
   EXPECT_EQ(lua_gettop(L), 1);
 
   lua_getfield(L, 1, "spin");
-  msg = script_error([&] { sandbox.call(0, 0); });
+  msg = error_of<ScriptError>([&] { sandbox.call(0, 0); });
   EXPECT_NE(msg.find("frames.lua:7: time limit of 0.2 s exceeded"), std::string::npos) << msg;
   EXPECT_EQ(lua_gettop(L), 1);
 
   lua_getfield(L, 1, "bomb");
-  msg = script_error([&] { sandbox.call(0, 0); });
+  msg = error_of<ScriptError>([&] { sandbox.call(0, 0); });
   EXPECT_EQ(msg.rfind(file.string() + ": memory limit of 32 MiB exceeded", 0), 0u) << msg;
   EXPECT_EQ(lua_gettop(L), 1);
 
@@ -553,7 +544,7 @@ TEST(LuaSandbox, MovedSandboxKeepsWorking) {
   EXPECT_EQ(a.state(), nullptr);
   lua_settop(b.state(), 0);
   // The hook, allocator and require still find their state after the move.
-  const std::string msg = script_error([&] { b.run_file(kData / "endless_loop.lua"); });
+  const std::string msg = error_of<ScriptError>([&] { b.run_file(kData / "endless_loop.lua"); });
   EXPECT_NE(msg.find("time limit of 0.2 s exceeded"), std::string::npos) << msg;
   b.run_file(kData / "require_main.lua", 0);
   // Each file once, in order of first load (bad_module was read twice).
@@ -614,7 +605,7 @@ TEST(LuaSandbox, NestedCallsThroughCFunctionsFailCleanly) {
   for (const auto& [name, code] : kNestingScripts) {
     const fs::path file = script(dir, name + ".lua", code);
     Sandbox sandbox({});
-    const std::string msg = script_error([&] { sandbox.run_file(file); });
+    const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
     EXPECT_EQ(msg.rfind(file.string() + ":", 0), 0u) << msg;
     EXPECT_NE(msg.find(": too deeply nested: more than 200 calls back into Lua from C functions"), std::string::npos)
         << msg;
@@ -640,7 +631,7 @@ TEST(LuaSandbox, NestingLimitIsTheSameOnEveryThread) {
   const auto check = [&](const char* where) {
     Sandbox sandbox({});
     EXPECT_NO_THROW(sandbox.run_file(ok, 0)) << where;
-    const std::string msg = script_error([&] { sandbox.run_file(deep, 0); });
+    const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(deep, 0); });
     EXPECT_NE(msg.find("too deeply nested: more than 200 calls"), std::string::npos) << where << ": " << msg;
   };
   check("main thread");
@@ -650,7 +641,7 @@ TEST(LuaSandbox, NestingLimitIsTheSameOnEveryThread) {
     for (const auto& [name, code] : kNestingScripts) {
       const fs::path file = script(dir, name + ".lua", code);
       Sandbox sandbox({});
-      const std::string msg = script_error([&] { sandbox.run_file(file); });
+      const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
       EXPECT_NE(msg.find(": too deeply nested: "), std::string::npos) << msg;
     }
     // No count in between: the hook's look at the stack stops this one.
@@ -659,14 +650,14 @@ TEST(LuaSandbox, NestingLimitIsTheSameOnEveryThread) {
         "local mt = {}\nmt.__tostring = function(s) return string.format('%s', s) end\n"
         "local s = string.format('%s', setmetatable({}, mt))\n");
     Sandbox sandbox({});
-    const std::string msg = script_error([&] { sandbox.run_file(format); });
+    const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(format); });
     EXPECT_NE(msg.find("format.lua:2: too deeply nested: this thread's C stack is nearly used up"), std::string::npos)
         << msg;
   });
 
   on_thread_with_stack(256u << 10, [&] {
     Sandbox sandbox({});
-    const std::string msg = script_error([&] { sandbox.run_file(ok); });
+    const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(ok); });
     EXPECT_NE(msg.find("cannot evaluate " + ok.string() + ": this thread has "), std::string::npos) << msg;
     EXPECT_NE(msg.find("KiB of C stack left, the sandbox needs 384 KiB"), std::string::npos) << msg;
   });
@@ -721,7 +712,7 @@ TEST(LuaSandbox, TimeLimitHoldsInErrorHandlers) {
     const fs::path file = script(dir, fmt::format("handler{}.lua", i), head + bodies[i]);
     Sandbox sandbox({}, SandboxLimits{.seconds = 0.5});
     const auto t0 = std::chrono::steady_clock::now();
-    const std::string msg = script_error([&] { sandbox.run_file(file); });
+    const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
     EXPECT_LT(seconds_since(t0), 2.5) << bodies[i];
     EXPECT_NE(msg.find("time limit of 0.5 s exceeded"), std::string::npos) << msg;
   }
@@ -743,7 +734,7 @@ TEST(LuaSandbox, TimeLimitHoldsInTostringLoops) {
       script(dir, "tostring_loop.lua", "local t = setmetatable({}, {__tostring = tostring})\nlocal s = tostring(t)\n");
   Sandbox sandbox({}, SandboxLimits{.seconds = 0.5});
   const auto t0 = std::chrono::steady_clock::now();
-  const std::string msg = script_error([&] { sandbox.run_file(file); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
   EXPECT_LT(seconds_since(t0), 2.5);
   EXPECT_EQ(msg.rfind(file.string() + ":2: time limit of 0.5 s exceeded", 0), 0u) << msg;
 }
@@ -766,7 +757,7 @@ TEST(LuaSandbox, ErrorObjectTostringIsBudgeted) {
                                      "})\nerror(object)\n");
     Sandbox sandbox({}, SandboxLimits{.seconds = 2});
     const auto t0 = std::chrono::steady_clock::now();
-    const std::string msg = script_error([&] { sandbox.run_file(file); });
+    const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
     EXPECT_LT(seconds_since(t0), 1.0) << cases[i].first;
     EXPECT_EQ(msg.rfind(file.string() + ":2: error object (a table value): " + cases[i].second, 0), 0u) << msg;
     // The budget's expiry is not the evaluation's: the next one runs.
@@ -781,7 +772,7 @@ TEST(LuaSandbox, LongErrorMessagesAreCut) {
   ScratchDir dir;
   const fs::path file = script(dir, "long.lua", "error(string.rep('x', 1e6))\n");
   Sandbox sandbox({});
-  const std::string msg = script_error([&] { sandbox.run_file(file); });
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
   const std::size_t x = msg.find("long.lua:1: xxx");
   ASSERT_NE(x, std::string::npos) << msg.substr(0, 200);
   const std::size_t kept = 4096 - (x + std::strlen("long.lua:1: "));  // of the x's
@@ -882,24 +873,15 @@ TEST(LuaSandbox, RequireRefusesLinksOutOfItsFolders) {
 // waits, so that a regression fails instead of hanging.
 TEST(LuaSandbox, ScriptsAndModulesAreRegularFiles) {
   ScratchDir dir;
-  const fs::path fifo = dir / "fifo.lua";
-  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  std::atomic<bool> done{false};
-  std::thread unblock([&] {
-    for (int i = 0; !done; ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      if (i >= 50 && !done) ::close(::open(fifo.c_str(), O_RDWR));
-    }
-  });
+  const lc::test::UnblockedFifo unblocked(dir / "fifo.lua");
+  const fs::path& fifo = unblocked.path();
   const fs::path main = script(dir, "main.lua", "return select(2, pcall(require, 'fifo'))\n");
   Sandbox sandbox({dir.path()});
   const auto t0 = std::chrono::steady_clock::now();
   sandbox.run_file(main);
   const std::string module_msg = top_string(sandbox.state());
-  const std::string script_msg = script_error([&] { sandbox.run_file(fifo); });
-  const std::string dir_msg = script_error([&] { sandbox.run_file(dir.path()); });
-  done = true;
-  unblock.join();
+  const std::string script_msg = error_of<ScriptError>([&] { sandbox.run_file(fifo); });
+  const std::string dir_msg = error_of<ScriptError>([&] { sandbox.run_file(dir.path()); });
   EXPECT_LT(seconds_since(t0), 4.0);
   EXPECT_NE(module_msg.find("main.lua:1: cannot read module 'fifo' from " + fifo.string() +
                             ": a FIFO, not a regular file"),

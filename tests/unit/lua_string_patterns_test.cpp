@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "scratch_dir.hpp"
+#include "test_errors.hpp"
 
 namespace {
 
@@ -250,14 +251,9 @@ TEST_F(LuaStringPatterns, SameAsLuaJitOnRandomPatterns) {
   }
 }
 
+// The message of the ScriptError running `file` throws.
 std::string script_error(Sandbox& sandbox, const fs::path& file) {
-  try {
-    sandbox.run_file(file, 0);
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no ScriptError from " << file;
-  return {};
+  return lc::test::error_of<ScriptError>([&] { sandbox.run_file(file, 0); });
 }
 
 // ("a*"):rep(8) .. "b" against 40 a's backtracks through ~4e8 steps (13 s

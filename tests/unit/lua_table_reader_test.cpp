@@ -11,10 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "test_errors.hpp"
+
 namespace {
 
 using lc::lua::FieldError;
 using lc::lua::TableReader;
+using lc::test::error_of;
 
 class LuaTableReader : public ::testing::Test {
  protected:
@@ -27,28 +30,16 @@ class LuaTableReader : public ::testing::Test {
     sandbox_.call(0, 1);
   }
 
-  // The FieldError message `f` throws; fails the test if none is thrown.
-  template <class F>
-  std::string field_error(F&& f) {
-    try {
-      f();
-    } catch (const FieldError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no FieldError thrown";
-    return {};
-  }
-
   lc::lua::Sandbox sandbox_;
   lua_State* L;
 };
 
 TEST_F(LuaTableReader, RejectsNonTables) {
   push("3");
-  EXPECT_EQ(field_error([&] { TableReader r(L, -1, "spec.lua:4: spacetime"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { TableReader r(L, -1, "spec.lua:4: spacetime"); }),
             "spec.lua:4: spacetime: expected a table, got number 3");
   push("'kerr'");
-  EXPECT_EQ(field_error([&] { TableReader r(L, -1, "ctx"); }), "ctx: expected a table, got string \"kerr\"");
+  EXPECT_EQ(error_of<FieldError>([&] { TableReader r(L, -1, "ctx"); }), "ctx: expected a table, got string \"kerr\"");
   EXPECT_EQ(lua_gettop(L), 2);
 }
 
@@ -80,56 +71,56 @@ TEST_F(LuaTableReader, TypedGetters) {
 TEST_F(LuaTableReader, WrongTypeAndMissingMessages) {
   push("{mass = '1', name = 3, flag = 1, sub = 5, f = function() end}");
   TableReader r(L, -1, "spec.lua:4: spacetime");
-  EXPECT_EQ(field_error([&] { r.number("mass"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.number("mass"); }),
             "spec.lua:4: spacetime: field 'mass' must be a number, got string \"1\"");
-  EXPECT_EQ(field_error([&] { r.optional_number("mass"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.optional_number("mass"); }),
             "spec.lua:4: spacetime: field 'mass' must be a number, got string \"1\"");
-  EXPECT_EQ(field_error([&] { r.number("spin"); }), "spec.lua:4: spacetime: missing field 'spin'");
-  EXPECT_EQ(field_error([&] { r.string("name"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.number("spin"); }), "spec.lua:4: spacetime: missing field 'spin'");
+  EXPECT_EQ(error_of<FieldError>([&] { r.string("name"); }),
             "spec.lua:4: spacetime: field 'name' must be a string, got number 3");
-  EXPECT_EQ(field_error([&] { r.boolean("flag"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.boolean("flag"); }),
             "spec.lua:4: spacetime: field 'flag' must be a boolean, got number 1");
-  EXPECT_EQ(field_error([&] { r.table("sub"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.table("sub"); }),
             "spec.lua:4: spacetime: field 'sub' must be a table, got number 5");
-  EXPECT_EQ(field_error([&] { r.number("f"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.number("f"); }),
             "spec.lua:4: spacetime: field 'f' must be a number, got function");
-  EXPECT_EQ(field_error([&] { r.string("missing"); }), "spec.lua:4: spacetime: missing field 'missing'");
-  EXPECT_EQ(field_error([&] { r.table("missing"); }), "spec.lua:4: spacetime: missing field 'missing'");
+  EXPECT_EQ(error_of<FieldError>([&] { r.string("missing"); }), "spec.lua:4: spacetime: missing field 'missing'");
+  EXPECT_EQ(error_of<FieldError>([&] { r.table("missing"); }), "spec.lua:4: spacetime: missing field 'missing'");
 }
 
 TEST_F(LuaTableReader, MissingFieldPointsAtANearMiss) {
   push("{mass = 1, spinn = 0.5, colour = 2}");
   TableReader r(L, -1, "kerr");
   r.number("mass");
-  EXPECT_EQ(field_error([&] { r.number("spin"); }), "kerr: missing field 'spin' (there is a field 'spinn': misspelt?)");
-  EXPECT_EQ(field_error([&] { r.number("radius"); }), "kerr: missing field 'radius'");
+  EXPECT_EQ(error_of<FieldError>([&] { r.number("spin"); }), "kerr: missing field 'spin' (there is a field 'spinn': misspelt?)");
+  EXPECT_EQ(error_of<FieldError>([&] { r.number("radius"); }), "kerr: missing field 'radius'");
 }
 
 TEST_F(LuaTableReader, NumbersMustBeFinite) {
   push("{a = 0/0, b = 1/0, c = -1/0, d = -(0/0)}");
   TableReader r(L, -1, "observer");
-  EXPECT_EQ(field_error([&] { r.number("a"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.number("a"); }),
             "observer: field 'a' is nan (numbers must be finite)");
-  EXPECT_EQ(field_error([&] { r.number("b"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.number("b"); }),
             "observer: field 'b' is inf (numbers must be finite)");
-  EXPECT_EQ(field_error([&] { r.number_or("c", 0); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.number_or("c", 0); }),
             "observer: field 'c' is -inf (numbers must be finite)");
-  EXPECT_EQ(field_error([&] { r.integer("d"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.integer("d"); }),
             "observer: field 'd' is nan (numbers must be finite)");
 }
 
 TEST_F(LuaTableReader, IntegerChecks) {
   push("{half = 2.5, big = 2^63, low = -2^63, exact = 2^53, neg = -7, text = '3', huge = 1e300}");
   TableReader r(L, -1, "shot");
-  EXPECT_EQ(field_error([&] { r.integer("half"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.integer("half"); }),
             "shot: field 'half' must be an integer, got number 2.5");
-  EXPECT_EQ(field_error([&] { r.integer("big"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.integer("big"); }),
             "shot: field 'big' must be an integer in the 64-bit range, got number 9.223372036854776e+18");
-  EXPECT_NE(field_error([&] { r.integer("huge"); }).find("64-bit range"), std::string::npos);
+  EXPECT_NE(error_of<FieldError>([&] { r.integer("huge"); }).find("64-bit range"), std::string::npos);
   EXPECT_EQ(r.integer("low"), std::numeric_limits<std::int64_t>::min());
   EXPECT_EQ(r.integer("exact"), std::int64_t{1} << 53);
   EXPECT_EQ(r.integer("neg"), -7);
-  EXPECT_EQ(field_error([&] { r.integer("text"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.integer("text"); }),
             "shot: field 'text' must be an integer, got string \"3\"");
 }
 
@@ -139,7 +130,7 @@ TEST_F(LuaTableReader, NestedContexts) {
   TableReader observer = shot.table("observer");
   EXPECT_EQ(observer.context(), "shot 'dihole' frame 12.observer");
   TableReader position = observer.table("position");
-  EXPECT_EQ(field_error([&] { position.number("r"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { position.number("r"); }),
             "shot 'dihole' frame 12.observer.position: field 'r' must be a number, got string \"far\"");
   EXPECT_FALSE(shot.optional_table("camera").has_value());
   auto objects = shot.optional_table("objects");
@@ -148,7 +139,7 @@ TEST_F(LuaTableReader, NestedContexts) {
   EXPECT_EQ(objects->table_at(1).number("radius"), 1);
   TableReader second = objects->table_at(2);
   EXPECT_EQ(second.context(), "shot 'dihole' frame 12.objects[2]");
-  EXPECT_EQ(field_error([&] { second.number("radius"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { second.number("radius"); }),
             "shot 'dihole' frame 12.objects[2]: field 'radius' must be a number, got string \"x\"");
 }
 
@@ -160,13 +151,13 @@ TEST_F(LuaTableReader, ArrayElements) {
   EXPECT_EQ(r.number_at(2), 2.5);
   EXPECT_EQ(r.integer_at(5), 7);
   EXPECT_EQ(r.string_at(3), "x");
-  EXPECT_EQ(field_error([&] { r.number_at(3); }), "path: element [3] must be a number, got string \"x\"");
-  EXPECT_EQ(field_error([&] { r.integer_at(2); }), "path: element [2] must be an integer, got number 2.5");
-  EXPECT_EQ(field_error([&] { r.number_at(6); }), "path: missing element [6]");
-  EXPECT_EQ(field_error([&] { r.number_at(0); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.number_at(3); }), "path: element [3] must be a number, got string \"x\"");
+  EXPECT_EQ(error_of<FieldError>([&] { r.integer_at(2); }), "path: element [2] must be an integer, got number 2.5");
+  EXPECT_EQ(error_of<FieldError>([&] { r.number_at(6); }), "path: missing element [6]");
+  EXPECT_EQ(error_of<FieldError>([&] { r.number_at(0); }),
             "path: element [0] does not exist (elements count from 1)");
-  EXPECT_EQ(field_error([&] { r.table_at(1); }), "path: element [1] must be a table, got number 1");
-  EXPECT_EQ(field_error([&] { r.table_at(4).number("b"); }), "path[4]: missing field 'b'");
+  EXPECT_EQ(error_of<FieldError>([&] { r.table_at(1); }), "path: element [1] must be a table, got number 1");
+  EXPECT_EQ(error_of<FieldError>([&] { r.table_at(4).number("b"); }), "path[4]: missing field 'b'");
   r.finish();  // the array part is always accepted
 }
 
@@ -175,7 +166,7 @@ TEST_F(LuaTableReader, FinishSuggestsNearestKnownField) {
   TableReader r(L, -1, "spec.lua:4: spacetime");
   r.number("mass");
   r.optional_number("spin");
-  EXPECT_EQ(field_error([&] { r.finish(); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.finish(); }),
             "spec.lua:4: spacetime: unknown field 'spinn' (did you mean 'spin'?)");
 }
 
@@ -188,7 +179,7 @@ TEST_F(LuaTableReader, FinishPrefersMissingFields) {
   r.number("frame");
   r.number("width");
   r.optional_number("height");
-  EXPECT_EQ(field_error([&] { r.finish(); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.finish(); }),
             "shot: unknown field 'frame_count' (did you mean 'frames'?); "
             "unknown field 'widht' (did you mean 'width'?)");  // no missing field is near it
 }
@@ -198,15 +189,15 @@ TEST_F(LuaTableReader, FinishPrefersMissingFields) {
 TEST_F(LuaTableReader, MissingFieldHintsTheNearestKey) {
   push("{outer = 10}");
   TableReader disk(L, -1, "disk");
-  EXPECT_EQ(field_error([&] { disk.number("inner"); }), "disk: missing field 'inner'");
+  EXPECT_EQ(error_of<FieldError>([&] { disk.number("inner"); }), "disk: missing field 'inner'");
   push("{iner = 6, outer = 10, innr = 5, inner_radius = 4}");
   TableReader typo(L, -1, "disk");
-  EXPECT_EQ(field_error([&] { typo.number("inner"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { typo.number("inner"); }),
             "disk: missing field 'inner' (there is a field 'iner': misspelt?)");
   push("{frame_count = 3, frame = 1}");
   TableReader shot(L, -1, "shot.lua");
   shot.mark_known({"frame"});
-  EXPECT_EQ(field_error([&] { shot.integer("frames"); }),
+  EXPECT_EQ(error_of<FieldError>([&] { shot.integer("frames"); }),
             "shot.lua: missing field 'frames' (there is a field 'frame_count': misspelt?)");
 }
 
@@ -215,14 +206,14 @@ TEST_F(LuaTableReader, MissingFieldHintsTheNearestKey) {
 TEST_F(LuaTableReader, LongUnknownKeysAreShortened) {
   push("{[string.rep('k', 1e6)] = 1}");
   TableReader r(L, -1, "camera");
-  EXPECT_EQ(field_error([&] { r.finish(); }), "camera: unknown field '" + std::string(64, 'k') + "...'");
+  EXPECT_EQ(error_of<FieldError>([&] { r.finish(); }), "camera: unknown field '" + std::string(64, 'k') + "...'");
 }
 
 TEST_F(LuaTableReader, FinishWithoutCloseMatchAndSorted) {
   push("{mass = 1, colour = 'red', zzz = 1, mas = 2, ams = 3}");
   TableReader r(L, -1, "kerr");
   r.number("mass");
-  EXPECT_EQ(field_error([&] { r.finish(); }),
+  EXPECT_EQ(error_of<FieldError>([&] { r.finish(); }),
             "kerr: unknown field 'ams'; unknown field 'colour'; "
             "unknown field 'mas' (did you mean 'mass'?); unknown field 'zzz'");
 }
@@ -246,7 +237,7 @@ TEST_F(LuaTableReader, FinishAcceptsKnownAndEngineKeys) {
 TEST_F(LuaTableReader, FinishRejectsStrayNonStringKeys) {
   push("{1, 2, [10] = 3, [true] = 4, [2.5] = 5, [{}] = 6}");
   TableReader r(L, -1, "list");
-  const std::string msg = field_error([&] { r.finish(); });
+  const std::string msg = error_of<FieldError>([&] { r.finish(); });
   EXPECT_EQ(msg.rfind("list: unexpected key [10] (only named fields and list elements 1..2 are allowed)", 0), 0u)
       << msg;
   EXPECT_NE(msg.find("unexpected key [2.5]"), std::string::npos) << msg;
@@ -257,7 +248,7 @@ TEST_F(LuaTableReader, FinishRejectsStrayNonStringKeys) {
 TEST_F(LuaTableReader, MetatablesAreIgnored) {
   push("setmetatable({}, {__index = function() error('must not run') end})");
   TableReader r(L, -1, "spec");
-  EXPECT_EQ(field_error([&] { r.number("mass"); }), "spec: missing field 'mass'");
+  EXPECT_EQ(error_of<FieldError>([&] { r.number("mass"); }), "spec: missing field 'mass'");
   r.finish();
 }
 

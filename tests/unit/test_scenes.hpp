@@ -1,7 +1,8 @@
 #pragma once
 // Scene pieces several tests build: a checkered sphere on a free-fall
-// worldline.
+// worldline; the dihole oscillation that worldlines are checked against.
 
+#include "geodesic/geodesic_solver.hpp"
 #include "scene/frame_scene.hpp"
 #include "objects/sphere.hpp"
 
@@ -22,6 +23,22 @@ inline Sphere::Params falling_sphere(const Spacetime& spacetime, const Vec4& sta
   sp.radius = radius;
   sp.worldline = w;
   return sp;
+}
+
+// The paper's dihole test body as a reference-solver problem: released at
+// rest (the static observer's 4-velocity) at (5, 0, 0) between masses 0.4
+// at z = +-1, it falls through the origin to x = -5 and back; solved until
+// `stop` reaches `stop_value`.
+inline GeodesicProblem dihole_oscillation_problem(StopParameter stop, double stop_value) {
+  const Dihole d(0.4, 0.4, 1.0);
+  GeodesicProblem pb;
+  pb.spacetime = d;
+  pb.kind = CurveKind::timelike;
+  pb.x0 = {0, 5, 0, 0};
+  pb.u0 = static_cartesian_tetrad(d, pb.x0).e[0];
+  pb.stop_parameter = stop;
+  pb.stop_value = stop_value;
+  return pb;
 }
 
 }  // namespace lc::test

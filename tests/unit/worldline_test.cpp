@@ -7,6 +7,7 @@
 
 #include "geodesic/geodesic_solver.hpp"
 #include "scene/worldline.hpp"
+#include "test_scenes.hpp"
 
 namespace lc {
 namespace {
@@ -23,13 +24,7 @@ WorldlineSpec dihole_oscillation() {
 TEST(Worldline, InterpolationMatchesTheReferenceSolver) {
   const Worldline w = Worldline::integrate(dihole_oscillation());
   for (double tau : {0.0, 12.345, 39.3765, 77.7, 100.0}) {
-    GeodesicProblem pb;
-    pb.spacetime = Dihole(0.4, 0.4, 1.0);
-    pb.kind = CurveKind::timelike;
-    pb.x0 = {0, 5, 0, 0};
-    pb.u0 = static_cartesian_tetrad(Dihole(0.4, 0.4, 1.0), pb.x0).e[0];
-    pb.stop_parameter = StopParameter::proper_time;
-    pb.stop_value = std::max(tau, 1e-9);
+    const GeodesicProblem pb = test::dihole_oscillation_problem(StopParameter::proper_time, std::max(tau, 1e-9));
     const Vec4 ref = solve_geodesic(pb).samples.back().x;
     const WorldlineEvent ev = w.at_proper_time(tau);
     for (int m = 0; m < 4; ++m) EXPECT_NEAR(ev.x[m], ref[m], 1e-7) << "tau " << tau << " component " << m;
@@ -59,17 +54,10 @@ TEST(Worldline, CoordinateTimeLookupOfTheCentreMatchesTheReferenceSolver) {
   // the fast passes between the holes: within 1e-7 (the proper-time
   // interpolant's own bound above), far below what a sphere's pixels show.
   const Worldline w = Worldline::integrate(dihole_oscillation());
-  const Dihole hole(0.4, 0.4, 1.0);
   for (double t : {3.21, 27.0, 55.297, 61.5, 99.9, 110.3}) {
     Vec4 x, u;
     w.centre_at_coordinate_time(t, x, u);
-    GeodesicProblem pb;
-    pb.spacetime = hole;
-    pb.kind = CurveKind::timelike;
-    pb.x0 = {0, 5, 0, 0};
-    pb.u0 = static_cartesian_tetrad(hole, pb.x0).e[0];
-    pb.stop_parameter = StopParameter::proper_time;
-    pb.stop_value = w.at_coordinate_time(t).tau;
+    const GeodesicProblem pb = test::dihole_oscillation_problem(StopParameter::proper_time, w.at_coordinate_time(t).tau);
     const GeodesicSample ref = solve_geodesic(pb).samples.back();
     for (int m = 0; m < 4; ++m) {
       EXPECT_NEAR(x[m], ref.x[m], 1e-7) << "t " << t << " component " << m;

@@ -1,19 +1,22 @@
 #pragma once
 // Where a shot's frames live: DIR/<shot>.<NNNN>.exr (linear float, zip, data
-// layers) and DIR/<shot>.<NNNN>.png (8-bit sRGB).  Writing them is the frame
-// store's job (farm/frame_store.hpp): temporary name, read back, sync, rename.
+// layers) and DIR/<shot>.<NNNN>.png (8-bit sRGB), and whether those a
+// command reads are current by the journal.  Writing them is the frame
+// store's job (frame_store.hpp, frame_writer.hpp).
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace lc {
+namespace lc::farm {
 
+// DIR/<shot>.<NNNN>.<extension>: the frame number in four digits or more,
+// which the frame sequence reader (video/frame_sequence.hpp) relies on.
 std::filesystem::path frame_path(const std::filesystem::path& dir, const std::string& shot, int frame,
                                  const char* extension);
 
 // Checks the PNG frames `frames` of `shot` in `dir` against the shot's
-// journal (farm::stale_frames), for the commands that show them together
+// journal (stale_frames), for the commands that show them together
 // (`command`: encode, contact-sheet).  Frames rendered with other settings
 // or from an earlier version of the shot than the latest render, or not
 // recorded as finished, are refused with std::runtime_error naming them,
@@ -25,4 +28,4 @@ std::filesystem::path frame_path(const std::filesystem::path& dir, const std::st
 std::vector<int> check_frames_current(const std::filesystem::path& dir, const std::string& shot,
                                       const std::vector<int>& frames, bool allow_stale, const char* command);
 
-}  // namespace lc
+}  // namespace lc::farm

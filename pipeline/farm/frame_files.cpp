@@ -1,4 +1,4 @@
-#include "frame_files.hpp"
+#include "farm/frame_files.hpp"
 
 #include <cstdio>
 #include <map>
@@ -10,7 +10,7 @@
 #include "farm/journal.hpp"
 #include "farm/resume_plan.hpp"
 
-namespace lc {
+namespace lc::farm {
 
 std::filesystem::path frame_path(const std::filesystem::path& dir, const std::string& shot, int frame,
                                  const char* extension) {
@@ -19,7 +19,7 @@ std::filesystem::path frame_path(const std::filesystem::path& dir, const std::st
 
 std::vector<int> check_frames_current(const std::filesystem::path& dir, const std::string& shot,
                                       const std::vector<int>& frames, bool allow_stale, const char* command) {
-  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  const JournalContents journal = read_journal(dir / (shot + ".journal"));
   if (journal.last_frame < 0) return {};
   std::map<int, std::uintmax_t> sizes;
   for (int f : frames) {
@@ -27,22 +27,22 @@ std::vector<int> check_frames_current(const std::filesystem::path& dir, const st
     const auto bytes = std::filesystem::file_size(frame_path(dir, shot, f, "png"), ec);
     sizes[f] = ec ? 0 : bytes;
   }
-  const farm::StaleFrames stale = farm::stale_frames(journal, sizes);
+  const StaleFrames stale = stale_frames(journal, sizes);
   if (!stale.any()) return stale.absent;
-  const farm::JournalFrame& latest = journal.frames.at(journal.last_frame);
+  const JournalFrame& latest = journal.frames.at(journal.last_frame);
   std::vector<std::string> reasons;
   if (!stale.other_settings.empty())
     reasons.push_back(fmt::format("{} rendered with other settings than the latest render ({})",
-                                  farm::frames_were(stale.other_settings), latest.settings.describe()));
+                                  frames_were(stale.other_settings), latest.settings.describe()));
   if (!stale.earlier_script.empty())
     reasons.push_back(fmt::format("{} rendered from an earlier version of the shot (its script or modules)",
-                                  farm::frames_were(stale.earlier_script)));
+                                  frames_were(stale.earlier_script)));
   if (!stale.earlier_sky.empty())
-    reasons.push_back(fmt::format("{} rendered with an earlier version of the sky image", farm::frames_were(stale.earlier_sky)));
+    reasons.push_back(fmt::format("{} rendered with an earlier version of the sky image", frames_were(stale.earlier_sky)));
   if (!stale.unrecorded.empty())
     reasons.push_back(fmt::format("{} not recorded in {}.journal as finished (a render stopped while writing, or the "
                                   "files were put there by hand)",
-                                  farm::frames_were(stale.unrecorded), shot));
+                                  frames_were(stale.unrecorded), shot));
   const std::string what = fmt::format("{}: shot {}: {}", dir.string(), shot, fmt::join(reasons, "; "));
   if (allow_stale) {
     fmt::print(stderr, "{}: warning: --allow-stale: using them as they are: {}\n", command, what);
@@ -54,4 +54,4 @@ std::vector<int> check_frames_current(const std::filesystem::path& dir, const st
       what, dir.string()));
 }
 
-}  // namespace lc
+}  // namespace lc::farm
