@@ -2,6 +2,7 @@
 
 #include "core/constants.hpp"
 #include "image/srgb.hpp"
+#include "render/layers.hpp"
 #include "render/sample_memo.hpp"
 #include "render/trace.hpp"
 
@@ -21,7 +22,7 @@ FrameImage make_frame(const RenderSettings& rs) {
   const std::size_t n = static_cast<std::size_t>(rs.width) * rs.height;
   img.rgb.assign(3 * n, 0.0f);
   if (rs.layers)
-    for (const char* name : layer_names) img.layers.push_back({name, std::vector<float>(n, 0.0f)});
+    for (const LayerSpec& l : layers) img.layers.push_back({std::string(l.name), std::vector<float>(n, 0.0f)});
   return img;
 }
 
@@ -40,7 +41,7 @@ std::pair<int, int> first_sample(int N, std::size_t i) { return i % 2 == 0 ? std
 struct Perceived {
   HitKind kind = HitKind::sky;
   std::array<double, 3> srgb{};
-  explicit Perceived(const RaySample& s) : kind(s.kind) {
+  explicit Perceived(const FrameSample& s) : kind(s.kind) {
     for (int c = 0; c < 3; ++c) srgb[c] = linear_to_srgb(s.color[c]);
   }
   Perceived() = default;
@@ -95,10 +96,10 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
   std::vector<RaySample> traced;
   std::vector<std::size_t> where;   // grid index of each sample wanted
   std::vector<std::size_t> tracing;  // of those, the ones not kept in the memo
-  std::vector<RaySample> grid(W * NN);  // sample k = b * N + a of pixel i at i * NN + k
+  std::vector<FrameSample> grid(W * NN);  // sample k = b * N + a of pixel i at i * NN + k
   std::vector<Perceived> seen(adaptive ? W * NN : 0);  // the same, as samples_agree compares them
   std::vector<char> full(W), next(W);
-  std::vector<RaySample> centres(rs.layers ? W : 0);  // pixel i's centre ray, where the layers need one
+  std::vector<FrameSample> centres(rs.layers ? W : 0);  // pixel i's centre ray, where the layers need one
   for (int j : rows) {
     std::optional<SampleMemo::Row> kept;
     if (memo) kept = memo->row(j, sc.still_key);
@@ -120,8 +121,8 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
       trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
       count(traced);
       for (std::size_t n = 0; n < tracing.size(); ++n) {
-        grid[tracing[n]] = traced[n];
-        if (kept) kept->put(tracing[n], traced[n]);
+        grid[tracing[n]] = frame_sample(traced[n]);
+        if (kept) kept->put(tracing[n], grid[tracing[n]], !traced[n].depends_on_time);
       }
       if (adaptive)
         for (const std::size_t g : where) seen[g] = Perceived(grid[g]);
@@ -186,8 +187,8 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
     trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
     count(traced);
     for (std::size_t n = 0; n < tracing.size(); ++n) {
-      centres[tracing[n]] = traced[n];
-      if (kept) kept->put(W * NN + tracing[n], traced[n]);
+      centres[tracing[n]] = frame_sample(traced[n]);
+      if (kept) kept->put(W * NN + tracing[n], centres[tracing[n]], !traced[n].depends_on_time);
     }
 
     for (std::size_t i = 0; i < W; ++i) {
@@ -201,13 +202,9 @@ RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::
       const std::size_t p = static_cast<std::size_t>(j) * W + i;
       for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = static_cast<float>(acc[c] / n);
       if (rs.layers) {
-        const RaySample* centre_sample =
-            has_centre_sample(i) ? &grid[i * NN + static_cast<std::size_t>(centre)] : &centres[i];
-        img.layers[0].values[p] = static_cast<float>(static_cast<int>(centre_sample->kind));
-        img.layers[1].values[p] = static_cast<float>(centre_sample->r);
-        img.layers[2].values[p] = static_cast<float>(centre_sample->phi);
-        img.layers[3].values[p] = static_cast<float>(centre_sample->t);
-        img.layers[4].values[p] = static_cast<float>(centre_sample->order);
+        const FrameSample& centre_sample =
+            has_centre_sample(i) ? grid[i * NN + static_cast<std::size_t>(centre)] : centres[i];
+        for (std::size_t l = 0; l < layer_count; ++l) img.layers[l].values[p] = centre_sample.layers[l];
       }
     }
   }

@@ -15,7 +15,7 @@ namespace lc {
 struct RenderSettings {
   int width = 0, height = 0;
   int supersample = 1;  // N: N x N samples per pixel
-  bool layers = false;  // also fill hit.kind, hit.r, hit.phi, hit.t, hit.order
+  bool layers = false;  // also fill the data layers (render/layers.hpp)
   // N >= 2: trace one corner sample of each pixel first (alternating
   // top-left and bottom-right along the row) and the rest of its N x N grid
   // only if it disagrees with a row neighbour's (another hit kind, or a
@@ -37,8 +37,6 @@ struct RenderStats {
 
 class SampleMemo;
 
-// The names of the data layers, in the order they are stored.
-inline constexpr std::array<const char*, 5> layer_names = {"hit.kind", "hit.r", "hit.phi", "hit.t", "hit.order"};
 
 // An empty frame of the right size (and layers, if asked for).
 FrameImage make_frame(const RenderSettings& rs);

@@ -22,28 +22,4 @@ std::optional<SampleMemo::Row> SampleMemo::row(int j, const std::string& key) {
   return row;
 }
 
-RaySample SampleMemo::Row::get(std::size_t g) const {
-  const Kept& k = slot_->samples[g];
-  RaySample s;
-  s.color = k.color;
-  s.kind = static_cast<HitKind>(k.kind);
-  s.r = k.r;
-  s.phi = k.phi;
-  s.t = k.t;
-  s.order = k.order;
-  return s;
-}
-
-void SampleMemo::Row::put(std::size_t g, const RaySample& s) {
-  Kept& k = slot_->samples[g];
-  k.kept = !s.depends_on_time;
-  if (!k.kept) return;
-  k.color = s.color;
-  k.kind = static_cast<std::uint8_t>(s.kind);
-  k.r = static_cast<float>(s.r);
-  k.phi = static_cast<float>(s.phi);
-  k.t = static_cast<float>(s.t);
-  k.order = s.order;
-}
-
 }  // namespace lc

@@ -22,21 +22,20 @@
 #include <vector>
 
 #include "render/hit.hpp"
+#include "render/layers.hpp"
 #include "render/renderer.hpp"
 
 namespace lc {
 
 class SampleMemo {
-  // What a sample holds that a frame uses (colour, adaptive sampling's hit
-  // kind, the layers' event), in 32 bytes.
+  // What a frame uses of a sample (render/layers.hpp's FrameSample: 36
+  // bytes with the five layers), and whether one is kept.
   struct Kept {
     Color color{};
-    float r = 0.0f, phi = 0.0f, t = 0.0f;
-    std::int32_t order = 0;
+    LayerValues layers{};
     std::uint8_t kind = 0;  // HitKind
     bool kept = false;
   };
-  static_assert(sizeof(Kept) == 32);
   struct Slot {
     std::mutex mutex;
     std::string key;  // still_key of the frame the samples came from
@@ -52,10 +51,16 @@ class SampleMemo {
    public:
     // Whether sample g was kept from an earlier frame.
     bool has(std::size_t g) const { return slot_->samples[g].kept; }
-    // Kept sample g (has(g)), as the renderer uses it: no steps, no end state.
-    RaySample get(std::size_t g) const;
-    // Keeps traced sample g for later frames, unless it depends on time.
-    void put(std::size_t g, const RaySample& s);
+    // Kept sample g (has(g)).
+    FrameSample get(std::size_t g) const {
+      const Kept& k = slot_->samples[g];
+      return {k.color, k.layers, static_cast<HitKind>(k.kind)};
+    }
+    // Sample g of this frame, kept for later frames unless its ray came near
+    // a moving object (`keep` false: RaySample::depends_on_time).
+    void put(std::size_t g, const FrameSample& s, bool keep) {
+      slot_->samples[g] = {s.color, s.layers, static_cast<std::uint8_t>(s.kind), keep};
+    }
 
    private:
     friend class SampleMemo;

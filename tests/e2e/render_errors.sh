@@ -207,7 +207,8 @@ ln -s /etc/passwd "$WORK/passwd.lua"
 script require_link "local m = require 'passwd'"
 expect_error require_link "require_link.lua:2: module 'passwd' (./passwd.lua) leads through a link to /etc/passwd, outside the folders" -- \
   "$LIGHTCONE" render require_link.lua --out out
-! grep -q "root" require_link.err || fail "require_link: a line of /etc/passwd is in the message"
+# (A line of it has user:x:uid:gid: fields; the checkout's path may hold "root".)
+! grep -qE ':x:[0-9]+:[0-9]+:|nologin' require_link.err || fail "require_link: a line of /etc/passwd is in the message"
 # Sky images: only regular files inside the shot's (or the project's shots/)
 # folder; a FIFO or /dev/zero hung the input hash before any check.
 mkfifo "$WORK/fifo.png"

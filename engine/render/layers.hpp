@@ -1,0 +1,61 @@
+#pragma once
+// The data layers a frame can carry besides colour (docs/layers.md), one
+// line each in the table below: a name (the EXR channel), what it holds,
+// and how to read it from a traced ray's sample.  The frame image, the
+// pixel loop, the sample memo, `lightcone trace`'s report, the help text and
+// docs/layers.md (checked by a test) all read this table and nothing else.
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+
+#include "render/hit.hpp"
+
+namespace lc {
+
+struct LayerSpec {
+  std::string_view name;
+  std::string_view what;
+  float (*value)(const RaySample&);
+};
+
+inline constexpr std::array layers = {
+    LayerSpec{"hit.kind",
+              "what the ray found: 0 sky, 1 disk, 2 horizon, 3 object (sphere), 4 gave up (integration failed; the "
+              "pixel is black)",
+              [](const RaySample& s) { return static_cast<float>(static_cast<int>(s.kind)); }},
+    LayerSpec{"hit.r",
+              "radius of the event where the ray ended: Boyer–Lindquist r for Kerr, distance from the origin "
+              "otherwise (where exactly, for the sky and the horizon: below)",
+              [](const RaySample& s) { return static_cast<float>(s.r); }},
+    LayerSpec{"hit.phi", "longitude of that event in [0, 2π): Boyer–Lindquist φ for Kerr, atan2(y, x) otherwise",
+              [](const RaySample& s) { return static_cast<float>(s.phi); }},
+    LayerSpec{"hit.t",
+              "coordinate time of that event minus the observer's: negative, light left it earlier (Boyer–Lindquist "
+              "t for Kerr)",
+              [](const RaySample& s) { return static_cast<float>(s.t); }},
+    LayerSpec{"hit.order",
+              "number of crossings of the equatorial plane (z = 0) before the end: 0 for the direct image of the "
+              "disk, 1 for the first image seen under/over the hole, …",
+              [](const RaySample& s) { return static_cast<float>(s.order); }},
+};
+inline constexpr std::size_t layer_count = layers.size();
+
+// A sample's values of every layer, in table order.
+using LayerValues = std::array<float, layer_count>;
+inline LayerValues layer_values(const RaySample& s) {
+  LayerValues v;
+  for (std::size_t k = 0; k < layer_count; ++k) v[k] = layers[k].value(s);
+  return v;
+}
+
+// What a frame uses of a traced ray: its colour, its hit kind (adaptive
+// sampling compares those) and its layer values (for the pixel's centre).
+struct FrameSample {
+  Color color{};
+  LayerValues layers{};
+  HitKind kind = HitKind::gave_up;
+};
+inline FrameSample frame_sample(const RaySample& s) { return {s.color, layer_values(s), s.kind}; }
+
+}  // namespace lc
