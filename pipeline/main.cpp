@@ -20,12 +20,20 @@
 #include "geodesic_command.hpp"
 #include "inspect_command.hpp"
 #include "lua/table_reader.hpp"
+#include "render/layers.hpp"
 #include "render_command.hpp"
 #include "showcase_command.hpp"
 #include "starfield_command.hpp"
 #include "trace_command.hpp"
 
 namespace {
+
+// "hit.kind, hit.r, ...": every data layer's name (render/layers.hpp).
+std::string layer_list() {
+  std::string out;
+  for (const lc::LayerSpec& l : lc::layers) out += (out.empty() ? "" : ", ") + std::string(l.name);
+  return out;
+}
 
 // Whether a word on the command line is meant as a flag ("--frames",
 // "-o"), not a value that happens to start with '-' ("-1").
@@ -105,7 +113,7 @@ int main(int argc, char** argv) {
                        "Trace every sample of the N x N grid (default: one per pixel, the rest only where it differs from a row neighbour's)");
   render_cmd->add_flag("--no-reuse", render.no_reuse,
                        "Trace every sample of every frame (default: frames that differ only in time reuse the rays that cannot change)");
-  render_cmd->add_flag("--layers", render.layers, "Add data layers (hit.kind, hit.r, hit.phi, hit.t, hit.order) to the EXR");
+  render_cmd->add_flag("--layers", render.layers, "Add the data layers (" + layer_list() + ") to the EXR: docs/layers.md");
   render_cmd->add_option("--threads", render.threads, "Render threads per process (default: every core; under mpirun the node's share)")
       ->check(CLI::Range(1, 1024));
   render_cmd->add_option("--stripes", render.stripes, "Working sets per frame: interleaved row stripes (default 512, at most the image height)");
@@ -120,7 +128,7 @@ int main(int argc, char** argv) {
   farm_bench_cmd->add_option("--size", farm_bench.size, "Image size WxH (default 1280x720)");
   farm_bench_cmd->add_option("--stripes", farm_bench.stripes, "Working sets per frame (default 512)")->check(CLI::Range(1, 16384));
   farm_bench_cmd->add_option("--frames", farm_bench.frames, "Frames (default 16)")->check(CLI::Range(1, 100000));
-  farm_bench_cmd->add_flag("--layers", farm_bench.layers, "Send the five data layers too");
+  farm_bench_cmd->add_flag("--layers", farm_bench.layers, "Send the data layers too");
   farm_bench_cmd->add_option("--threads", farm_bench.threads, "Worker threads per process")->check(CLI::Range(1, 1024));
 
   lc::InspectCommand inspect;

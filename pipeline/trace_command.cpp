@@ -10,6 +10,7 @@
 #include "geodesic_csv.hpp"
 #include "render/scene_builder.hpp"
 #include "image_size.hpp"
+#include "render/layers.hpp"
 #include "render/trace.hpp"
 #include "scene/shot.hpp"
 
@@ -61,11 +62,12 @@ int run_trace(const TraceCommand& cmd) {
   std::string csv = geodesic_csv_header(false, false);
   append_geodesic_csv(csv, st_out, path, false, std::nullopt);
   write_output(cmd.output, csv);
-  fmt::print(stderr,
-             "trace: frame {} pixel {},{}: hit {} (hit.kind {}), stop reason {}, {} steps; r = {:.9g}, phi = {:.9g} rad, "
-             "t = {:.9g}, equatorial crossings before it: {}; colour {:.4g} {:.4g} {:.4g}\n",
-             f, i, j, kind_names[static_cast<int>(s.kind)], static_cast<int>(s.kind), to_string(s.reason), s.steps, s.r,
-             s.phi, s.t, s.order, s.color[0], s.color[1], s.color[2]);
+  // Every data layer's value (render/layers.hpp), as the pixel's EXR holds it.
+  std::string values;
+  for (const LayerSpec& l : layers) values += fmt::format("{}{} {:.9g}", values.empty() ? "" : ", ", l.name, l.value(s));
+  fmt::print(stderr, "trace: frame {} pixel {},{}: hit {}, stop reason {}, {} steps; {}; colour {:.4g} {:.4g} {:.4g}\n", f,
+             i, j, kind_names[static_cast<int>(s.kind)], to_string(s.reason), s.steps, values, s.color[0], s.color[1],
+             s.color[2]);
   return 0;
 }
 
