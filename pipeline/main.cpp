@@ -21,6 +21,7 @@
 #include "inspect_command.hpp"
 #include "lua/table_reader.hpp"
 #include "render/layers.hpp"
+#include "script/constructor_docs.hpp"
 #include "render_command.hpp"
 #include "showcase_command.hpp"
 #include "starfield_command.hpp"
@@ -137,6 +138,9 @@ int main(int argc, char** argv) {
   inspect_cmd->add_option("--frames", inspect.frames, "Frames A, A:B or A:B:STEP (inclusive, numbered from 0)");
 
   lc::TraceCommand trace;
+  auto* fields_cmd = app.add_subcommand(
+      "fields", "Print every scene constructor lc.<name>{...} with its fields, defaults and ranges (Markdown)");
+
   auto* trace_cmd = app.add_subcommand("trace", "Follow the ray through one pixel: its path as CSV and what it hit");
   trace_cmd->add_option("shot", trace.shot, "Shot script")->required()->check(CLI::ExistingFile);
   trace_cmd->add_option("--frame", trace.frame, "Frame number (from 0)")->required();
@@ -231,6 +235,10 @@ int main(int argc, char** argv) {
     if (*render_cmd) return lc::run_render(render);
     if (*farm_bench_cmd) return lc::run_farm_bench(farm_bench);
     if (*inspect_cmd) return lc::run_inspect(inspect);
+    if (*fields_cmd) {
+      fmt::print("{}", lc::constructor_tables());
+      return 0;
+    }
     if (*trace_cmd) return lc::run_trace(trace);
     if (*starfield_cmd) return lc::run_starfield(starfield);
     if (*encode_cmd) return lc::run_encode(encode);

@@ -66,7 +66,7 @@ constexpr void for_each_field(F&& f) {
 
 // "must be between 0 and 180 (exclusive)" style text for a range, or "".
 inline std::string range_text(const std::optional<Bound>& lo, const std::optional<Bound>& hi) {
-  auto num = [](double v) { return fmt::format("{:g}", v); };
+  auto num = [](double v) { return fmt::format("{:.12g}", v); };
   if (lo && hi) {
     if (lo->inclusive && hi->inclusive) return fmt::format("between {} and {}", num(lo->value), num(hi->value));
     if (!lo->inclusive && !hi->inclusive)

@@ -36,7 +36,7 @@ class Disk {
     Palette colors = {{1.0f, 0.55f, 0.15f}, {0.35f, 0.12f, 0.03f}};
     static constexpr auto fields = std::tuple{
         field("inner", &Params::inner, std::optional<double>{}, at_least(0.0), std::nullopt, "inner radius", "M"),
-        field("outer", &Params::outer, std::optional<double>{}, std::nullopt, std::nullopt, "outer radius", "M"),
+        field("outer", &Params::outer, std::optional<double>{}, std::nullopt, std::nullopt, "outer radius, above inner", "M"),
         field("rings", &Params::rings, std::optional<int>{7}, at_least(1), at_most(100000), "checker cells in r"),
         field("sectors", &Params::sectors, std::optional<int>{24}, at_least(1), at_most(100000),
               "checker cells in phi"),

@@ -53,7 +53,12 @@ class Sphere : public SphereBody {
         field("colors", &Params::colors, std::optional<Palette>{Palette{{0.95f, 0.95f, 0.95f}, {0.8f, 0.1f, 0.1f}}},
               std::nullopt, std::nullopt, "the two colours {{r, g, b}, {r, g, b}}, linear RGB"),
     };
-    // What the declared fields leave out: the placement, as JSON ...
+    // What the declared fields leave out: the placement, for the reference
+    // (lightcone fields) ...
+    static constexpr std::string_view extra_doc =
+        "And one of `position = {...}` (held at rest there; see Positions) or `worldline = w` (falling along the "
+        "worldline w).";
+    // ... as JSON ...
     std::string extra_json(bool polar) const {
       if (position) return fmt::format(", \"position\": {}", json_position(*position, polar));
       return worldline ? fmt::format(", \"worldline\": {}", worldline->json()) : std::string();

@@ -85,25 +85,6 @@ int count(TableReader& t, const char* key, std::optional<int> fallback, int lo, 
   return static_cast<int>(v);
 }
 
-// colors = {{r, g, b}, {r, g, b}}: two linear RGB colours, components >= 0.
-void read_colors(TableReader& t, Color& a, Color& b) {
-  auto list = t.optional_table("colors");
-  if (!list) return;
-  if (list->length() != 2) fail(*list, "must hold two colours {{r, g, b}, {r, g, b}}");
-  for (std::size_t i = 1; i <= 2; ++i) {
-    auto c = list->table_at(i);
-    if (c.length() != 3) fail(c, "a colour is {r, g, b} (three numbers, linear RGB)");
-    Color& out = i == 1 ? a : b;
-    for (std::size_t k = 1; k <= 3; ++k) {
-      const double v = c.number_at(k);
-      if (v < 0.0) fail(c, fmt::format("colour components must be >= 0, got {}", v));
-      out[k - 1] = static_cast<float>(v);
-    }
-    c.finish();
-  }
-  list->finish();
-}
-
 // Components on the static frame's legs: {r, theta, phi} or {x, y, z}.
 Vec3 read_leg_vector(TableReader& t, bool polar) {
   const char* k[3] = {"x", "y", "z"};

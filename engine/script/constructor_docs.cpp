@@ -1,0 +1,77 @@
+#include "script/constructor_docs.hpp"
+
+#include <type_traits>
+
+#include <fmt/format.h>
+
+#include "camera/camera.hpp"
+#include "core/fields.hpp"
+#include "objects/objects.hpp"
+#include "sky/sky.hpp"
+#include "spacetime/spacetime.hpp"
+
+namespace lc {
+
+namespace {
+
+// A default as a shot author would write it.
+template <class T>
+std::string default_text(const T& v) {
+  if constexpr (std::is_same_v<T, Palette>)
+    return fmt::format("{{{{{:g}, {:g}, {:g}}}, {{{:g}, {:g}, {:g}}}}}", v.a[0], v.a[1], v.a[2], v.b[0], v.b[1], v.b[2]);
+  else if constexpr (std::is_same_v<T, std::string>)
+    return fmt::format("\"{}\"", v);
+  else
+    return fmt::format("{:g}", static_cast<double>(v));
+}
+
+// Text for a Markdown table cell: '|' would end the cell.
+std::string cell(std::string_view s) {
+  std::string out;
+  for (char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+// "#### lc.name{...}" and a table of the fields of P (and what P reads
+// besides them, if it says: extra_doc).
+template <class P>
+std::string table(std::string_view name) {
+  std::string out = fmt::format("#### `lc.{}{{...}}`\n\n", name);
+  bool any = false;
+  for_each_field<P>([&](const auto&) { any = true; });
+  if (!any) out += "No fields.\n\n";
+  if (any) out += "| field | default | range | meaning |\n| --- | --- | --- | --- |\n";
+  for_each_field<P>([&](const auto& f) {
+    const std::string unit = f.unit.empty() ? std::string() : fmt::format(" {}", f.unit);
+    const std::string fallback = f.fallback ? default_text(*f.fallback) + unit : "required";
+    const std::string range = range_text(f.lo, f.hi);
+    out += fmt::format("| `{}` | {} | {} | {} |\n", f.name, cell(fallback), range.empty() ? "" : range + unit,
+                       cell(f.doc));
+  });
+  if (any) out += "\n";
+  if constexpr (requires { P::extra_doc; }) out += fmt::format("{}\n\n", P::extra_doc);
+  return out;
+}
+
+}  // namespace
+
+std::string constructor_tables() {
+  std::string out = "### Spacetimes\n\n";
+  for_each_spacetime_type([&](auto tag) {
+    using S = typename decltype(tag)::type;
+    out += table<typename S::Params>(S::name);
+  });
+  auto kinds = [&](const char* heading, auto registry) {
+    out += fmt::format("### {}\n\n", heading);
+    decltype(registry)::for_each([&](auto* kind) {
+      using K = std::remove_pointer_t<decltype(kind)>;
+      out += table<typename K::Params>(K::name);
+    });
+  };
+  kinds("Cameras", CameraRegistry{});
+  kinds("Skies", SkyRegistry{});
+  kinds("Objects", ObjectRegistry{});
+  return out;
+}
+
+}  // namespace lc
