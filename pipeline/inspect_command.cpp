@@ -8,7 +8,7 @@
 #include "render/evaluated_json.hpp"
 #include "render/scene_builder.hpp"
 #include "scene/scene_json.hpp"
-#include "scene/shot.hpp"
+#include "script/shot.hpp"
 
 namespace lc {
 
@@ -21,14 +21,12 @@ int run_inspect(const InspectCommand& cmd) {
   // built as render builds it (observer, worldlines, textures), so inspect
   // refuses what render would, short of tracing a ray.
   ShotResources resources(shot.asset_dirs());
-  std::string out = fmt::format(
-      "{{\"shot\": {{\"name\": \"{}\", \"frames\": {}, \"fps\": {}, \"width\": {}, \"height\": {}, \"supersample\": {}}},\n"
-      " \"scenes\": [\n",
-      info.name, info.frames, info.fps, info.width, info.height, info.supersample);
+  // fields_json writes ", \"name\": ..." for each declared field.
+  std::string out = fmt::format("{{\"shot\": {{{}}},\n \"scenes\": [\n", fields_json(info).substr(2));
   bool first = true;
   for (int f : range.frames()) {
-    const FrameScene fs = shot.frame(f);
-    const Scene scene = build_frame_scene(fs, cmd.shot, f, info.width, info.height, resources);
+    const SceneSpec fs = shot.frame(f);
+    const Scene scene = build_scene(fs, cmd.shot, f, info.width, info.height, resources);
     out += (first ? "  " : ",\n  ") + to_json(fs, f, evaluated_json(scene));
     first = false;
   }

@@ -24,7 +24,7 @@
 #include "frame_range.hpp"
 #include "image_size.hpp"
 #include "interrupt.hpp"
-#include "scene/shot.hpp"
+#include "script/shot.hpp"
 #include "video/encode_options.hpp"
 
 namespace lc {

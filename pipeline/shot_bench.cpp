@@ -10,7 +10,7 @@
 
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
-#include "scene/shot.hpp"
+#include "script/shot.hpp"
 
 namespace lc {
 
@@ -61,7 +61,7 @@ ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, Bench
                            double reference_tolerance, KerrChart chart) {
   Shot shot(file);
   const ShotInfo& info = shot.info();
-  const FrameScene fs = shot.frame(0);
+  const SceneSpec fs = shot.frame(0);
   ShotResources resources(shot.asset_dirs());
   ShotBenchResult r;
   r.name = info.name;
@@ -74,7 +74,7 @@ ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, Bench
   defaults.kerr_chart = chart;
   r.tolerance = defaults.control.rtol;
   r.reference_tolerance = reference_tolerance;
-  const Scene scene = build_frame_scene(fs, file, 0, info.width, info.height, resources, defaults);
+  const Scene scene = build_scene(fs, file, 0, info.width, info.height, resources, defaults);
   std::vector<RaySample> test;
   r.seconds_one = r.seconds_all = 1e300;
   for (int k = 0; k < timing.repeats; ++k) {
@@ -88,7 +88,7 @@ ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, Bench
   tight.control.rtol = tight.control.atol = reference_tolerance;
   tight.control.h_min = 1e-14;
   tight.escape = EscapeRule::fixed;  // integrated out to 1000 M, whatever the scene allows
-  const Scene reference_scene = build_frame_scene(fs, file, 0, info.width, info.height, resources, tight);
+  const Scene reference_scene = build_scene(fs, file, 0, info.width, info.height, resources, tight);
   const std::vector<RaySample> reference = trace_all(reference_scene, r.width, r.height, threads, nullptr);
   r.accuracy = compare_samples(reference, test, fs);
   return r;

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "image_size.hpp"
-#include "scene/shot.hpp"
+#include "script/shot.hpp"
 #include "video/contact_sheet.hpp"
 #include "video/encode_options.hpp"
 

@@ -12,7 +12,7 @@
 #include "image_size.hpp"
 #include "render/layers.hpp"
 #include "render/trace.hpp"
-#include "scene/shot.hpp"
+#include "script/shot.hpp"
 
 namespace lc {
 
@@ -31,9 +31,9 @@ int run_trace(const TraceCommand& cmd) {
   if (i < 0 || i >= width || j < 0 || j >= height)
     throw std::invalid_argument(fmt::format("--pixel {},{}: outside the {}x{} image", i, j, width, height));
 
-  const FrameScene fs = shot.frame(f);
+  const SceneSpec fs = shot.frame(f);
   ShotResources resources(shot.asset_dirs());
-  const Scene scene = build_frame_scene(fs, cmd.shot, f, width, height, resources);
+  const Scene scene = build_scene(fs, cmd.shot, f, width, height, resources);
 
   // The path, as the geodesic tool reports a curve integrated into the past:
   // lambda = -(affine parameter of the backward ray), tangent future-directed.

@@ -54,7 +54,7 @@ inline constexpr double conservation_ray_tolerance = 1e-10;
 // the sRGB transfer curve (about one 8-bit step: compared in linear RGB the
 // dark sky, where the curve is steep, hid steps of several codes), is not
 // refined.  docs/performance.md, changes 9 and 19, measure what it saves
-// and costs (2/256 saved another 3-12% of rays for 1.3-1.5x the error).
+// and costs against other thresholds.
 inline constexpr double adaptive_sample_threshold = 1.0 / 256.0;
 
 // A ray moving outwards beyond every object and photon orbit of its scene
@@ -84,6 +84,14 @@ inline constexpr std::size_t shot_resource_budget = std::size_t{4} << 30;
 inline constexpr double max_worldline_duration = 20000.0;
 inline constexpr int max_star_field_width = 8192;
 inline constexpr long max_sky_image_pixels = 16384L * 8192L;
+
+// The longest shot name: it names the output files (<name>.<NNNN>.exr and
+// the journal), and file names have at most 255 bytes.
+inline constexpr std::size_t max_shot_name_length = 128;
+// The most objects a scene may hold: every ray is tested against each, and
+// the scene is copied out of Lua (a script can list one sphere a million
+// times in a few MiB of Lua memory, which would take GiBs here).
+inline constexpr std::size_t max_scene_objects = 1000;
 
 // Default safety bound on the number of accepted steps of one ray.
 inline constexpr long default_max_steps = 100000;

@@ -119,7 +119,7 @@ inline std::string field_text(const Palette& p, bool exact) {
                  : fmt::format("[{}, {}, {}]", field_text(double{c[0]}, false), field_text(double{c[1]}, false),
                                field_text(double{c[2]}, false));
   };
-  return exact ? colour(p.a) + ";" + colour(p.b) : "[" + colour(p.a) + ", " + colour(p.b) + "]";
+  return exact ? fmt::format("{};{}", colour(p.a), colour(p.b)) : fmt::format("[{}, {}]", colour(p.a), colour(p.b));
 }
 
 // " name=value" for every field of s, exactly: what frames are compared by.

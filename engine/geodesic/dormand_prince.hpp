@@ -48,7 +48,7 @@ To convert_to(From x) {
 
 // log2 and exp2 to ~1e-5 relative, for the step-size controller only: its
 // factors are heuristics clamped to [0.1, 5], so libm's full precision
-// (two pow calls, ~9% of a step) buys nothing.  Pure arithmetic, so the
+// (two pow calls per step: docs/performance.md, change 8) buys nothing.  Pure arithmetic, so the
 // step sequence is the same on every machine.
 // log2(x), x > 0 and finite: exponent from the bits, ln of the mantissa m
 // in [1, 2) by the series 2 atanh((m - 1)/(m + 1)) to the 9th power.

@@ -24,8 +24,8 @@
 #include "objects/sphere_body.hpp"
 #include "objects/sphere_test.hpp"
 #include "objects/step_test.hpp"
-#include "render/shot_resources.hpp"
-#include "scene/worldline_spec.hpp"
+#include "assets/shot_resources.hpp"
+#include "worldline/worldline_spec.hpp"
 #include "spacetime/chart.hpp"
 
 namespace lc {

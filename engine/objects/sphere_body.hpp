@@ -9,7 +9,7 @@
 
 #include "core/tensor.hpp"
 #include "observer/tetrad.hpp"
-#include "scene/worldline.hpp"
+#include "worldline/worldline.hpp"
 
 namespace lc {
 

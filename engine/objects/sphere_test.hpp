@@ -42,7 +42,7 @@ struct MetricAt {
 
 // The coordinate time t of the sphere's event C(t) simultaneous with the ray
 // point X: the root of lag(t) = g(X - C(t), u(t)), the local linearisation
-// of DESIGN.md (X on the rest frame's slice through C).  Starts from t_start
+// of docs/architecture.md (X on the rest frame's slice through C).  Starts from t_start
 // (X's own time, or the answer for a nearby point) and returns C, u and, in
 // g, the metric at C (the caller's distance needs it).
 //
@@ -54,7 +54,8 @@ struct MetricAt {
 // given start and, if that does not settle, again from X's own time; beyond
 // 1.5 R it stops once the centre is known to 10% of the room to spare, all
 // sphere tracing needs.  (Newton with the exact slope, from the metric's rate and
-// du/dt, converged in fewer steps but cost 8% more per frame.)
+// du/dt, converges in fewer steps but costs more per frame: docs/performance.md,
+// "Measured and rejected".)
 template <class S>
 double sphere_simultaneous_time(const S& st, const SphereBody& sphere, const Vec4& X, double t_start, Vec4& C, Vec4& u,
                                 MetricAt<S>& g) {
@@ -65,8 +66,7 @@ double sphere_simultaneous_time(const S& st, const SphereBody& sphere, const Vec
   // from the latest centre (a search that starts far from its root may end
   // near the sphere).  |xi|, the part of X - C orthogonal to u, does not
   // change to first order as C slides along u, so an unfinished lag moves it
-  // far less than |lag|.  (1% cost a quarter more centre lookups for the
-  // same frames.)
+  // far less than |lag|.  (Why 10%: docs/performance.md, change 26.)
   auto tolerance_at = [&](const Vec4& centre) {
     double dx2 = 0.0;
     for (int k = 1; k < 4; ++k) dx2 += (X[k] - centre[k]) * (X[k] - centre[k]);

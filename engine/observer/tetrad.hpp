@@ -2,7 +2,7 @@
 // Orthonormal local tetrads e_a^mu (a = 0 time leg, 1..3 spatial legs) in
 // trace coordinates, and the standard observers' frames.  Legs of the polar
 // frames are ordered (e_t, e_r, e_theta, e_phi); a camera "looking at the hole"
-// uses forward = -e_r, up = -e_theta, right = e_phi (DESIGN.md).
+// uses forward = -e_r, up = -e_theta, right = e_phi (docs/architecture.md, "Conventions").
 
 #include <stdexcept>
 #include <string>

@@ -19,7 +19,7 @@ double quantile(std::vector<double>& v, double q) {
 }  // namespace
 
 AccuracyReport compare_samples(const std::vector<RaySample>& reference, const std::vector<RaySample>& test,
-                               const FrameScene& scene) {
+                               const SceneSpec& scene) {
   AccuracyReport rep;
   std::vector<double> dr, dphi;
   rep.pixels = static_cast<long>(std::min(reference.size(), test.size()));

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "render/hit.hpp"
-#include "scene/frame_scene.hpp"
+#include "scene/scene_spec.hpp"
 
 namespace lc {
 
@@ -22,6 +22,6 @@ struct AccuracyReport {
 
 // Compares samples pixel by pixel (same order, same scene).
 AccuracyReport compare_samples(const std::vector<RaySample>& reference, const std::vector<RaySample>& test,
-                               const FrameScene& scene);
+                               const SceneSpec& scene);
 
 }  // namespace lc

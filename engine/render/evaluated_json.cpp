@@ -9,7 +9,7 @@ namespace lc {
 namespace {
 
 template <class S>
-std::string evaluated(const SceneOf<S>& sc) {
+std::string evaluated(const SceneIn<S>& sc) {
   const bool polar = S::chart == SceneChart::polar;
   const S& st = sc.spacetime;
   auto leg = [&](const Vec4& v) { return json_components(st.scene_vector(sc.observer, v)); };

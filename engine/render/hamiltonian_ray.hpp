@@ -31,7 +31,7 @@ namespace detail {
 // The sky seen by a ray that escaped at the trace-coordinate event x with
 // momentum p: fills out.kind and out.color.
 template <class S>
-void sky_sample(const SceneOf<S>& sc, const Vec4& x, const Vec4& p, RaySample& out) {
+void sky_sample(const SceneIn<S>& sc, const Vec4& x, const Vec4& p, RaySample& out) {
   const S& st = sc.spacetime;
   // Escape direction: the spatial tangent, bent by the deflection still to
   // come between here and infinity (the spacetime's far field).
@@ -56,7 +56,7 @@ void sky_sample(const SceneOf<S>& sc, const Vec4& x, const Vec4& p, RaySample& o
 template <class S, class OnStep>
 class HamiltonianRay {
  public:
-  HamiltonianRay(const SceneOf<S>& sc, const Vec3& n, OnStep& on_step)
+  HamiltonianRay(const SceneIn<S>& sc, const Vec3& n, OnStep& on_step)
       : sc_(sc), on_step_(on_step), p0_(backward_ray_momentum(sc.metric, sc.frame, n)) {}
 
   const Vec4& momentum() const { return p0_; }
@@ -143,7 +143,7 @@ class HamiltonianRay {
     return true;
   }
 
-  const SceneOf<S>& sc_;
+  const SceneIn<S>& sc_;
   OnStep& on_step_;
   Vec4 p0_;
   RaySample out_;

@@ -21,7 +21,8 @@ struct RaySample {
   int order = 0;  // equatorial-plane crossings before the end
   // The ray came near an object whose answer may depend on the frame's
   // time: no other frame may reuse it (render/sample_memo.hpp).  (Here it
-  // fills padding: a larger RaySample slowed the Kerr lanes by 15%.)
+  // fills padding: RaySample's size shows in the Kerr lanes' speed,
+  // docs/performance.md, change 25.)
   bool depends_on_time = false;
   long steps = 0;
   StopReason reason = StopReason::gave_up;

@@ -19,7 +19,7 @@
 namespace lc::detail {
 
 // Where the fast path's rays are captured (0: nowhere, flat space).
-inline double mino_capture_radius(const SceneOf<Kerr>& sc) {
+inline double mino_capture_radius(const SceneIn<Kerr>& sc) {
   return sc.spacetime.mass() > 0.0 ? sc.spacetime.capture_radius() : 0.0;
 }
 
@@ -34,7 +34,7 @@ class MinoRay {
  public:
   // observer_jacobian: Kerr–Schild over Boyer–Lindquist at the observer
   // (trace_jacobian of sc.observer_scene), worked out once for a batch.
-  MinoRay(const SceneOf<Kerr>& sc, const Mat4& observer_jacobian, const Vec3& n, OnStep& on_step)
+  MinoRay(const SceneIn<Kerr>& sc, const Mat4& observer_jacobian, const Vec3& n, OnStep& on_step)
       : sc_(sc), on_step_(on_step), start_(make_start(sc, observer_jacobian, n)), clock_(start_.k, start_.y0[1]),
         u_escape_(1.0 / sc.rays.escape_radius), u_capture_(capture_radius() > 0.0 ? 1.0 / capture_radius() : 1e300),
         at_escape_{start_.y0, start_.y0[0]} {}
@@ -140,7 +140,7 @@ class MinoRay {
     return {y, clock_.time(y, lambda)};
   }
 
-  static KerrMinoStart make_start(const SceneOf<Kerr>& sc, const Mat4& observer_jacobian, const Vec3& n) {
+  static KerrMinoStart make_start(const SceneIn<Kerr>& sc, const Mat4& observer_jacobian, const Vec3& n) {
     const Kerr& st = sc.spacetime;
     const Vec4 p_ks = backward_ray_momentum(sc.metric, sc.frame, n);
     auto bl_momentum = [&](const Vec4& s) {
@@ -194,7 +194,7 @@ class MinoRay {
     out_.order = crossings_;
   }
 
-  const SceneOf<Kerr>& sc_;
+  const SceneIn<Kerr>& sc_;
   OnStep& on_step_;
   KerrMinoStart start_;
   MinoClock clock_;

@@ -37,7 +37,8 @@ std::pair<int, int> first_sample(int N, std::size_t i) { return i % 2 == 0 ? std
 
 // A traced sample as adaptive sampling compares it: its hit kind and its
 // colour after the sRGB curve (what a viewer sees), worked out once per
-// sample (the curve's pow was ~4% of a Kerr frame when taken per comparison).
+// sample, not per comparison (the curve's pow shows in a Kerr frame's time:
+// docs/performance.md, change 24).
 struct Perceived {
   HitKind kind = HitKind::sky;
   std::array<double, 3> srgb{};
@@ -58,7 +59,7 @@ bool samples_agree(const Perceived& x, const Perceived& y) {
 }
 
 template <class S>
-RenderStats render_rows_of(const SceneOf<S>& sc, const RenderSettings& rs, std::span<const int> rows,
+RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::span<const int> rows,
                            FrameImage& img, SampleMemo* memo) {
   // Inputs: a scene, the settings and the rows to render; output: those
   // rows of img (and layers), and the rays and steps spent.  A row's

@@ -1,7 +1,7 @@
 #pragma once
 // Camera-ray samples kept from earlier frames for later ones.  In a
 // stationary spacetime, frames whose scenes differ only by the observer's
-// time (equal SceneOf::still_key) see the same thing along every ray that
+// time (equal SceneIn::still_key) see the same thing along every ray that
 // stays clear of moving objects' paths: the same ray, traced the same way,
 // with its time shifted.  Such samples are kept per row, and a later frame
 // of the same key takes them instead of tracing them again; a sample whose

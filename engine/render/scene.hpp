@@ -1,9 +1,11 @@
 #pragma once
-// A frame ready to render: the spacetime in the chart rays are traced in, the
-// observer's event and tetrad, the camera and the objects
-// (render/scene_builder.hpp makes it from the script's FrameScene;
-// render/trace.hpp follows camera rays through it).  Templated on the
-// concrete spacetime so the metric inlines into the integrator.
+// SceneIn<S>: a frame ready to render in spacetime S — the spacetime in the
+// chart rays are traced in, the observer's event and tetrad, the camera, the
+// sky and the built objects — and Scene, one of those for any registered
+// spacetime.  render/scene_builder.hpp makes it from the script's SceneSpec
+// (scene/scene_spec.hpp); render/trace.hpp follows camera rays through it.
+// Templated on the concrete spacetime so the metric inlines into the
+// integrator.
 
 #include <optional>
 #include <string>
@@ -18,7 +20,7 @@
 namespace lc {
 
 template <class S>
-struct SceneOf {
+struct SceneIn {
   S spacetime;
   Vec4 observer{};       // trace coordinates
   double observer_time;  // scene time of the observer (BL t for Kerr)
@@ -37,12 +39,12 @@ struct SceneOf {
 
 // A scene in any registered spacetime (spacetime/spacetime.hpp).
 template <class V>
-struct ScenesIn;
+struct SceneVariantOf;
 template <class... S>
-struct ScenesIn<std::variant<S...>> {
-  using type = std::variant<SceneOf<S>...>;
+struct SceneVariantOf<std::variant<S...>> {
+  using type = std::variant<SceneIn<S>...>;
 };
-using Scene = ScenesIn<Spacetime>::type;
+using Scene = SceneVariantOf<Spacetime>::type;
 
 
 }  // namespace lc

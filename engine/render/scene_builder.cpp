@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "scene/asset_path.hpp"
+#include "assets/asset_path.hpp"
 #include "scene/still_key.hpp"
 #include "spacetime/chart.hpp"
 
@@ -16,14 +16,14 @@ namespace {
 // twice the largest of the objects' reach and the spacetime's photon
 // region.  The factor 2 keeps the relaxed integration well clear.
 template <class S>
-double free_radius(const SceneOf<S>& sc) {
+double free_radius(const SceneIn<S>& sc) {
   double reach = sc.spacetime.photon_reach();
   for_each_object(sc.objects, [&](const auto& o, std::size_t) { reach = std::max(reach, o.reach(sc.spacetime.asymptotic_mass())); });
   return 2.0 * std::max(reach, 1.0);
 }
 
 template <class S>
-Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResources& res, const RayOptions& rays) {
+Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResources& res, const RayOptions& rays) {
   const std::string here = describe(fs.spacetime);
   auto check_same = [&](const WorldlineSpec& w, const char* what) {
     if (describe(w.spacetime, true) != describe(fs.spacetime, true))
@@ -33,7 +33,7 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
           w.where, what, w.where, describe(w.spacetime), here));
   };
 
-  SceneOf<S> sc{st, {}, 0.0, {}, {}, Camera(fs.camera, width, height), Sky(fs.sky, res), {}, rays};
+  SceneIn<S> sc{st, {}, 0.0, {}, {}, Camera(fs.camera, width, height), Sky(fs.sky, res), {}, rays};
   const ObserverSpec& ob = fs.observer;
   try {
     if (ob.kind == ObserverKind::free_fall) {
@@ -81,12 +81,12 @@ Scene build(const S& st, const FrameScene& fs, int width, int height, ShotResour
 
 }  // namespace
 
-Scene build_scene(const FrameScene& fs, int width, int height, ShotResources& resources, const RayOptions& rays) {
+Scene build_scene(const SceneSpec& fs, int width, int height, ShotResources& resources, const RayOptions& rays) {
   const Spacetime st = trace_chart(fs.spacetime);
   return std::visit([&](const auto& s) { return build(s, fs, width, height, resources, rays); }, st);
 }
 
-Scene build_frame_scene(const FrameScene& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
+Scene build_scene(const SceneSpec& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
                         ShotResources& resources, const RayOptions& rays) {
   try {
     return build_scene(fs, width, height, resources, rays);

@@ -1,5 +1,5 @@
 #pragma once
-// FrameScene (plain data from the script) -> Scene (ready to trace): builds
+// SceneSpec (plain data from the script) -> Scene (ready to trace): builds
 // the spacetime in the chart rays are traced in, the observer's event and
 // tetrad, the camera, the sky and the objects; worldlines and textures come
 // once per shot from ShotResources.
@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "render/scene.hpp"
-#include "render/shot_resources.hpp"
-#include "scene/frame_scene.hpp"
+#include "assets/shot_resources.hpp"
+#include "scene/scene_spec.hpp"
 
 namespace lc {
 
@@ -16,12 +16,12 @@ namespace lc {
 // Throws std::invalid_argument for a scene that cannot exist (an observer
 // inside a horizon or a static one in the ergoregion, a worldline from a
 // different spacetime, ...).
-Scene build_scene(const FrameScene& fs, int width, int height, ShotResources& resources,
+Scene build_scene(const SceneSpec& fs, int width, int height, ShotResources& resources,
                   const RayOptions& rays = RayOptions{});
 
 // build_scene for frame `frame` of the shot in `shot_file`: what render,
 // trace and inspect all do, errors naming the file and the frame.
-Scene build_frame_scene(const FrameScene& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
+Scene build_scene(const SceneSpec& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
                         ShotResources& resources, const RayOptions& rays = RayOptions{});
 
 }  // namespace lc

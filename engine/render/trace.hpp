@@ -24,7 +24,7 @@ namespace lc {
 // options ask for Kerr–Schild.  Everything else takes the Hamiltonian in the
 // trace chart.
 template <class S>
-bool takes_mino_path(const SceneOf<S>& sc) {
+bool takes_mino_path(const SceneIn<S>& sc) {
   if constexpr (std::is_same_v<S, Kerr>)
     return objects_in_fast_path(sc.objects) && sc.rays.kerr_chart == KerrChart::boyer_lindquist_mino;
   else
@@ -36,7 +36,7 @@ namespace detail {
 // The rays of local directions `dirs` (on the observer's legs) into `out`,
 // W at a time; on_step records paths (NoPath: none).
 template <int W, class S, class OnStep>
-void trace_rays(const SceneOf<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out, OnStep& on_step) {
+void trace_rays(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out, OnStep& on_step) {
   // path: the formulation; args: what each ray is made from besides the
   // scene, its direction and the path recorder.
   auto run = [&](const auto& path, const auto&... args) {
@@ -81,7 +81,7 @@ template <class F>
 // step in trace coordinates with its affine parameter (for `lightcone
 // trace`; NoPath when rendering).
 template <class S, class OnStep>
-RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
+RaySample trace_sample(const SceneIn<S>& sc, const Vec3& n, OnStep&& on_step) {
   RaySample out;
   detail::trace_rays<1>(sc, std::span<const Vec3>(&n, 1), std::span<RaySample>(&out, 1), on_step);
   return out;
@@ -91,7 +91,7 @@ RaySample trace_sample(const SceneOf<S>& sc, const Vec3& n, OnStep&& on_step) {
 // lane_count at a time: each sample as trace_sample gives it
 // (Render.LanesGiveWhatOneRayGives).
 template <class S>
-void trace_batch(const SceneOf<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out) {
+void trace_batch(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out) {
   detail::on_pinned_stack([&]() __attribute__((noinline)) {
     NoPath no_path;
     detail::trace_rays<lane_count>(sc, dirs, out, no_path);

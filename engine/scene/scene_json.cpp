@@ -6,7 +6,7 @@ namespace lc {
 
 // Every part as its registry or declaration writes it; positions in the
 // scene's chart, angles in degrees.
-std::string to_json(const FrameScene& fs, int frame, const std::string& evaluated) {
+std::string to_json(const SceneSpec& fs, int frame, const std::string& evaluated) {
   const bool polar = has_polar_scene(fs.spacetime);
   std::string out = fmt::format("{{\"frame\": {}, \"spacetime\": {}, ", frame, spacetime_json(fs.spacetime));
   const ObserverSpec& o = fs.observer;

@@ -12,7 +12,7 @@ namespace {
 // or frames that differ in it would share rays: their sizes (x86-64,
 // libstdc++) trip when one is added.
 #if defined(__x86_64__) && defined(__GLIBCXX__)
-static_assert(sizeof(FrameScene) == 392, "FrameScene changed: add the field to still_key");
+static_assert(sizeof(SceneSpec) == 392, "SceneSpec changed: add the field to still_key");
 static_assert(sizeof(ObserverSpec) == 216, "ObserverSpec changed: add the field to still_key");
 #endif
 
@@ -20,7 +20,7 @@ std::string hex(double v) { return fmt::format("{:a}", v); }
 
 }  // namespace
 
-std::string still_key(const FrameScene& fs) {
+std::string still_key(const SceneSpec& fs) {
   std::string k = "spacetime " + describe(fs.spacetime, true);
   const ObserverSpec& ob = fs.observer;
   switch (ob.kind) {

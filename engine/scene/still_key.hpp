@@ -8,10 +8,10 @@
 
 #include <string>
 
-#include "scene/frame_scene.hpp"
+#include "scene/scene_spec.hpp"
 
 namespace lc {
 
-std::string still_key(const FrameScene& scene);
+std::string still_key(const SceneSpec& scene);
 
 }  // namespace lc

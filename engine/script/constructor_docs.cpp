@@ -7,6 +7,7 @@
 #include "camera/camera.hpp"
 #include "core/fields.hpp"
 #include "objects/objects.hpp"
+#include "scene/shot_info.hpp"
 #include "sky/sky.hpp"
 #include "spacetime/spacetime.hpp"
 
@@ -35,8 +36,8 @@ std::string cell(std::string_view s) {
 // "#### lc.name{...}" and a table of the fields of P (and what P reads
 // besides them, if it says: extra_doc).
 template <class P>
-std::string table(std::string_view name) {
-  std::string out = fmt::format("#### `lc.{}{{...}}`\n\n", name);
+std::string table(std::string_view name, std::string_view heading = {}) {
+  std::string out = heading.empty() ? fmt::format("#### `lc.{}{{...}}`\n\n", name) : fmt::format("{}:\n\n", heading);
   bool any = false;
   for_each_field<P>([&](const auto&) { any = true; });
   if (!any) out += "No fields.\n\n";
@@ -56,7 +57,9 @@ std::string table(std::string_view name) {
 }  // namespace
 
 std::string constructor_tables() {
-  std::string out = "### Spacetimes\n\n";
+  std::string out = "### The shot table\n\n";
+  out += table<ShotInfo>("", "The table a shot returns, besides its `frame` function");
+  out += "### Spacetimes\n\n";
   for_each_spacetime_type([&](auto tag) {
     using S = typename decltype(tag)::type;
     out += table<typename S::Params>(S::name);

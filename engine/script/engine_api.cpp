@@ -4,7 +4,7 @@
 
 #include "lua/table_reader.hpp"
 #include "script/scene_reader.hpp"
-#include "scene/worldline.hpp"
+#include "worldline/worldline.hpp"
 #include "spacetime/chart.hpp"
 #include "script/spacetime_reader.hpp"
 

@@ -15,15 +15,6 @@ namespace {
 using lua::FieldError;
 using lua::TableReader;
 
-// The most spheres a scene may hold: every ray is tested against each, and
-// the scene is copied out of Lua (a script can list one sphere a million
-// times in a few MiB of Lua memory, which would take GiBs here).
-constexpr std::size_t kMaxObjects = 1000;
-
-// The longest shot name: it names the output files (<name>.<NNNN>.exr and
-// the journal), and file names have at most 255 bytes.
-constexpr std::size_t kMaxNameLength = 128;
-
 [[noreturn]] void fail(const TableReader& t, const std::string& what) {
   throw FieldError(fmt::format("{}: {}", t.context(), what));
 }
@@ -76,13 +67,6 @@ double positive(TableReader& t, const char* key, std::optional<double> fallback 
   const double v = fallback ? t.number_or(key, *fallback) : t.number(key);
   if (!(v > 0.0)) fail(t, fmt::format("field '{}' must be > 0, got {}", key, v));
   return v;
-}
-
-// An integer in [lo, hi]; required when there is no fallback.
-int count(TableReader& t, const char* key, std::optional<int> fallback, int lo, int hi) {
-  const auto v = fallback ? t.integer_or(key, *fallback) : t.integer(key);
-  if (v < lo || v > hi) fail(t, fmt::format("field '{}' must be between {} and {}, got {}", key, lo, hi, v));
-  return static_cast<int>(v);
 }
 
 // Components on the static frame's legs: {r, theta, phi} or {x, y, z}.
@@ -197,8 +181,8 @@ ObserverSpec read_observer(TableReader& t, const Spacetime* st) {
   fail(t, "expected a value made by lc.static_observer{...}, lc.zamo{...} or lc.free_fall{...}");
 }
 
-FrameScene read_frame_scene(TableReader& t) {
-  FrameScene fs;
+SceneSpec read_scene_spec(TableReader& t) {
+  SceneSpec fs;
   auto st = t.table("spacetime");
   fs.spacetime = read_spacetime(st);
   {
@@ -214,8 +198,8 @@ FrameScene read_frame_scene(TableReader& t) {
   if (auto d = t.optional_table("disk")) fs.objects.push_back(read_object(*d, &fs.spacetime));
   if (auto s = t.optional_table("sky")) fs.sky = read_sky(*s);
   if (auto objs = t.optional_table("objects")) {
-    if (objs->length() > kMaxObjects)
-      fail(*objs, fmt::format("at most {} objects, got {}", kMaxObjects, objs->length()));
+    if (objs->length() > max_scene_objects)
+      fail(*objs, fmt::format("at most {} objects, got {}", max_scene_objects, objs->length()));
     for (std::size_t i = 1; i <= objs->length(); ++i) {
       auto o = objs->table_at(i);
       fs.objects.push_back(read_object(o, &fs.spacetime));
@@ -228,19 +212,12 @@ FrameScene read_frame_scene(TableReader& t) {
 
 ShotInfo read_shot_info(TableReader& t) {
   ShotInfo s;
-  s.name = t.string("name");
-  if (s.name.empty()) fail(t, "name must not be empty");
-  if (s.name.size() > kMaxNameLength)
-    fail(t, fmt::format("name has {} characters, at most {} are allowed (it names the output files)", s.name.size(),
-                        kMaxNameLength));
-  for (char c : s.name)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
-      fail(t, fmt::format("name '{}' may only use letters, digits, '_' and '-' (it names the output files)", s.name));
-  s.frames = count(t, "frames", std::nullopt, 1, 10'000'000);
-  s.fps = positive(t, "fps", 30.0);
-  s.width = count(t, "width", std::nullopt, 1, 16384);
-  s.height = count(t, "height", std::nullopt, 1, 16384);
-  s.supersample = count(t, "supersample", 1, 1, 16);
+  read_fields(t, s);
+  try {
+    s.validate();
+  } catch (const std::invalid_argument& e) {
+    fail(t, e.what());
+  }
   return s;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Script tables -> the plain-data scene of frame_scene.hpp.  Each object kind
+// Script tables -> the plain-data SceneSpec (scene/scene_spec.hpp).  Each object kind
 // has one reader, used twice: by its constructor (lc.disk{...} etc.), which
 // validates the arguments where the script calls it so errors name that
 // line, and by the frame reader, which converts the constructor's tagged
@@ -10,7 +10,7 @@
 // (constructors) check only that one of the two forms is used.
 
 #include "lua/table_reader.hpp"
-#include "scene/frame_scene.hpp"
+#include "scene/scene_spec.hpp"
 
 namespace lc {
 
@@ -35,7 +35,7 @@ ObjectSpec read_object(lua::TableReader& t, const Spacetime* st);
 ObserverSpec read_observer(lua::TableReader& t, const Spacetime* st);
 
 // The table a shot's frame(i) returns.
-FrameScene read_frame_scene(lua::TableReader& t);
+SceneSpec read_scene_spec(lua::TableReader& t);
 
 // Frame-independent fields of a shot table (name, frames, fps, width,
 // height, supersample); the frame function is read by the caller.

@@ -1,6 +1,6 @@
 #include "sky/star_sky.hpp"
 
-#include "render/shot_resources.hpp"
+#include "assets/shot_resources.hpp"
 
 namespace lc {
 

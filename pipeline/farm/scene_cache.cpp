@@ -13,12 +13,12 @@ SceneCache::SceneCache(Shot& shot, int width, int height, std::size_t capacity)
 // Evaluates the frame (serialised: one Lua state) and builds its scene
 // (in parallel with other builds: ShotResources is thread-safe).
 std::shared_ptr<const Scene> SceneCache::build(int frame) {
-  FrameScene fs;
+  SceneSpec fs;
   {
     std::lock_guard lock(lua_mutex_);
     fs = shot_.frame(frame);
   }
-  return std::make_shared<const Scene>(build_frame_scene(fs, shot_.file(), frame, width_, height_, resources_));
+  return std::make_shared<const Scene>(build_scene(fs, shot_.file(), frame, width_, height_, resources_));
 }
 
 std::shared_ptr<const Scene> SceneCache::get(int frame) {

@@ -13,7 +13,7 @@
 #include <mutex>
 
 #include "render/scene_builder.hpp"
-#include "scene/shot.hpp"
+#include "script/shot.hpp"
 
 namespace lc::farm {
 

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "farm/content_hash.hpp"
-#include "scene/asset_path.hpp"
+#include "assets/asset_path.hpp"
 
 namespace lc::farm {
 
@@ -17,7 +17,7 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
   const auto dirs = shot.asset_dirs();
   std::map<int, std::string> texture_of;  // frame -> resolved sky image path
   for (int f : frames) {
-    const FrameScene fs = shot.frame(f);
+    const SceneSpec fs = shot.frame(f);
     out.frames[f].spacetime = describe(fs.spacetime);
     for (const std::string& asset : sky_assets(fs.sky)) {
       // The file the render will load (the same rules): checked before

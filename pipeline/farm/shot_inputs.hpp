@@ -14,7 +14,7 @@
 
 #include "farm/journal.hpp"
 #include "render/renderer.hpp"
-#include "scene/shot.hpp"
+#include "script/shot.hpp"
 
 namespace lc::farm {
 

@@ -29,7 +29,7 @@ expect_error negative_radius "negative_radius.lua:5: disk: field 'inner' must be
 shot inverted_disk "$good_kerr disk = lc.disk{inner = 10, outer = 5}"
 expect_error inverted_disk "inverted_disk.lua:5: disk: inner radius 10 must be below the outer radius 5" -- "$LIGHTCONE" render inverted_disk.lua --out out
 shot zero_width "$good_kerr" "width = 0,"
-expect_error zero_width "field 'width' must be between 1 and 16384, got 0" -- "$LIGHTCONE" render zero_width.lua --out out
+expect_error zero_width "field 'width' must be between 1 and 16384 pixels, got 0" -- "$LIGHTCONE" render zero_width.lua --out out
 shot ok "$good_kerr"
 expect_error zero_size "image size 0x10 is out of range" -- "$LIGHTCONE" render ok.lua --out out --size 0x10
 expect_error absurd_size "image size 100000x10 is out of range" -- "$LIGHTCONE" render ok.lua --out out --size 100000x10

@@ -17,8 +17,8 @@
 namespace lc {
 namespace {
 
-FrameScene kerr_scene(double M, double a, double r, double theta_deg, double fov, bool disk) {
-  FrameScene fs;
+SceneSpec kerr_scene(double M, double a, double r, double theta_deg, double fov, bool disk) {
+  SceneSpec fs;
   fs.spacetime = Kerr(M, a);
   fs.observer.kind = ObserverKind::static_observer;
   fs.observer.position = {0, r, theta_deg * degree, 0};
@@ -33,7 +33,7 @@ RaySample sample_at(const Scene& scene, double px, double py) {
 
 // Every pixel-centre sample of a W x H image of `fs`, traced with `chart`
 // at `tolerance`.
-std::vector<RaySample> samples(const FrameScene& fs, int W, int H, KerrChart chart, double tolerance) {
+std::vector<RaySample> samples(const SceneSpec& fs, int W, int H, KerrChart chart, double tolerance) {
   ShotResources res;
   RayOptions o;
   o.kerr_chart = chart;
@@ -57,7 +57,7 @@ TEST(Render, KerrFastPathAgreesWithKerrSchild) {
   // Kerr–Schild to ~1e-7 M at 1e-14 and in BL to ~1e-9 at 1e-12, direct
   // and first-order images far better; the bounds leave a factor ~5.
   for (const double theta : {80.0, 0.0}) {
-    const FrameScene fs = kerr_scene(1, 0.9, 30, theta, 40, true);
+    const SceneSpec fs = kerr_scene(1, 0.9, 30, theta, 40, true);
     const auto ks = samples(fs, 40, 40, KerrChart::kerr_schild, 1e-14);
     const auto bl = samples(fs, 40, 40, KerrChart::boyer_lindquist_mino, 1e-12);
     const AccuracyReport a = compare_samples(ks, bl, fs);
@@ -115,7 +115,7 @@ TEST(Render, FlatSpaceDiskIsTheExactProjection) {
   const int W = 48, H = 48;
   for (const auto& [tolerance, bound] : {std::pair{1e-10, 1e-7}, std::pair{default_ray_tolerance, 1e-5}}) {
     ShotResources res;
-    const FrameScene fs = kerr_scene(0, 0, 30, 70, 50, true);
+    const SceneSpec fs = kerr_scene(0, 0, 30, 70, 50, true);
     RayOptions o;
     o.control.rtol = o.control.atol = tolerance;
     const Scene scene = build_scene(fs, W, H, res, o);
@@ -191,7 +191,7 @@ TEST(Render, ObserverOnTheSouthAxisSeesTheNorthViewUpsideDown) {
   const FrameImage north = render_frame(build_scene(kerr_scene(1, 0.9, 30, 0, 60, true), W, W, res), rs, 1);
   for (const double theta : {180.0, -180.0}) {
     for (const ObserverKind kind : {ObserverKind::static_observer, ObserverKind::zamo}) {
-      FrameScene fs = kerr_scene(1, 0.9, 30, theta, 60, true);
+      SceneSpec fs = kerr_scene(1, 0.9, 30, theta, 60, true);
       fs.observer.kind = kind;
       RenderStats stats;
       const FrameImage south = render_frame(build_scene(fs, W, W, res), rs, 1, &stats);
@@ -213,7 +213,7 @@ TEST(Render, ObserverOnTheSouthAxisSeesTheNorthViewUpsideDown) {
 
 // The centre ray of a 1 x 1 image of `fs` looking straight along forward,
 // traced with `chart`.
-RaySample centre_ray(FrameScene fs, double yaw, KerrChart chart) {
+RaySample centre_ray(SceneSpec fs, double yaw, KerrChart chart) {
   std::get<PinholeCamera::Params>(fs.camera).yaw = yaw;
   ShotResources res;
   RayOptions o;
@@ -235,7 +235,7 @@ TEST(Render, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
   for (const double a : {0.0, 0.9}) {
     const Kerr hole(1, a, KerrSchildSense::ingoing);
     auto light_time = [&](double r) { return r + hole.time_shift(r); };
-    FrameScene fs = kerr_scene(1, a, 30, a == 0.0 ? 90 : 0, 60, false);
+    SceneSpec fs = kerr_scene(1, a, 30, a == 0.0 ? 90 : 0, 60, false);
     for (const KerrChart chart : {KerrChart::boyer_lindquist_mino, KerrChart::kerr_schild}) {
       const RaySample away = centre_ray(fs, 180, chart);
       ASSERT_EQ(away.kind, HitKind::sky) << "a " << a;
@@ -254,7 +254,7 @@ TEST(Render, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
   // them and escapes on the far side.
   const double m = 0.4;
   auto along_y = [&](double y) { return y + 4 * m * std::asinh(y) + 4 * m * m * std::atan(y); };
-  FrameScene di;
+  SceneSpec di;
   di.spacetime = Dihole(m, m, 1.0);
   di.observer.position = {0, 0, 80, 0};
   const RaySample away = centre_ray(di, 180, KerrChart::kerr_schild);
@@ -274,7 +274,7 @@ TEST(Render, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
   EXPECT_LT(down.r, 1.0 + m);
   EXPECT_NEAR(down.t, -(along_z(80) - along_z(down.r)), 1e-5);
   // Flat space: t = -distance.
-  FrameScene flat = di;
+  SceneSpec flat = di;
   flat.spacetime = Minkowski{};
   const RaySample straight = centre_ray(flat, 180, KerrChart::kerr_schild);
   ASSERT_EQ(straight.kind, HitKind::sky);
@@ -283,18 +283,18 @@ TEST(Render, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
 
 // Scenes for every path of the ray loop: flat space, Kerr in the fast
 // path, Kerr with a sphere (Kerr–Schild), the dihole with a sphere.
-std::vector<std::pair<std::string, FrameScene>> scenes_of_every_path() {
-  std::vector<std::pair<std::string, FrameScene>> out;
-  FrameScene flat;
+std::vector<std::pair<std::string, SceneSpec>> scenes_of_every_path() {
+  std::vector<std::pair<std::string, SceneSpec>> out;
+  SceneSpec flat;
   flat.spacetime = Minkowski{};
   flat.observer.position = {0, 0, 30, 5};
   flat.objects.push_back(test::falling_sphere(flat.spacetime, {0, 3, 0, 0}, {0, 0.1, 0}, 100, 1.0));
   out.emplace_back("minkowski", flat);
   out.emplace_back("kerr bl-mino", kerr_scene(1, 0.9, 30, 80, 40, true));
-  FrameScene kerr_sphere = kerr_scene(1, 0.9, 30, 80, 40, true);
+  SceneSpec kerr_sphere = kerr_scene(1, 0.9, 30, 80, 40, true);
   kerr_sphere.objects.push_back(test::falling_sphere(kerr_sphere.spacetime, {0, 10, 90 * degree, 0}, {0, 0, 0.3}, 60, 1.0));
   out.emplace_back("kerr kerr-schild", kerr_sphere);
-  FrameScene di;
+  SceneSpec di;
   di.spacetime = Dihole(0.4, 0.4, 1.0);
   di.observer.position = {90, 0, 40, 0};
   std::get<PinholeCamera::Params>(di.camera).fov = 30;
@@ -346,7 +346,7 @@ TEST(Render, LanesGiveWhatOneRayGives) {
 }
 
 TEST(Render, SphereInFlatSpaceHasItsAngularSize) {
-  FrameScene fs;
+  SceneSpec fs;
   fs.spacetime = Dihole(0.0, 0.0, 1.0);
   fs.observer.position = {0, 0, 80, 0};
   std::get<PinholeCamera::Params>(fs.camera).fov = 12;
@@ -394,17 +394,17 @@ double extent(const Scene& scene, double cx, double cy, double dx, double dy, do
 TEST(Render, SphereSimultaneityIsSolvedNearAMovingSphere) {
   // The sphere of the paper's dihole sequence swings through the holes at
   // up to ~0.8 c.  A point X on its surface, on the slice simultaneous with
-  // its centre at C (g(X - C, u) = 0, DESIGN.md's local linearisation), must
+  // its centre at C (g(X - C, u) = 0, the local linearisation of docs/architecture.md), must
   // lead back to that C from X's own time: to 1e-6 M, far below a pixel
   // (~0.02 M at the sphere in the film).  (A wrong-signed Newton step once
   // doubled the error at each iteration instead.)
-  FrameScene fs;
+  SceneSpec fs;
   fs.spacetime = Dihole(0.4, 0.4, 1.0);
   fs.observer.position = {200, 0, 80, 0};
   fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 200, 1.0));
   ShotResources res;
   const Scene scene = build_scene(fs, 8, 8, res);
-  const auto& sc = std::get<SceneOf<Dihole>>(scene);
+  const auto& sc = std::get<SceneIn<Dihole>>(scene);
   const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects).front();
   double worst = 0.0;
   for (double t = 30.0; t < 150.0; t += 0.37) {
@@ -431,7 +431,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   // flattened by 1/gamma = 0.8 at v = 0.6.  This needs the sphere taken on its
   // own simultaneity slice and light-travel time along each ray: a renderer
   // that got either wrong would see an ellipse.
-  FrameScene fs;
+  SceneSpec fs;
   fs.spacetime = Minkowski{};
   fs.observer.position = {150, 0, 60, 0};  // at t = 150, on the y axis, looking at the origin
   std::get<PinholeCamera::Params>(fs.camera).fov = 90;
@@ -456,10 +456,10 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   // off-axis (the sphere sits ~20 deg off-centre: tan-projection stretches
   // horizontally by 1/cos^2 vs 1/cos, about 6%); compare against the same
   // measurement of a sphere at rest at the same apparent place instead.
-  FrameScene still = fs;
+  SceneSpec still = fs;
   std::get<Sphere::Params>(still.objects[0]).worldline.reset();
   // Apparent position: straight back along the centre ray of the moving image.
-  const Vec3 n = std::get<SceneOf<Minkowski>>(scene).camera.direction(cx0, H / 2.0);
+  const Vec3 n = std::get<SceneIn<Minkowski>>(scene).camera.direction(cx0, H / 2.0);
   const Tetrad rest = static_polar_tetrad(Minkowski{}, fs.observer.position);
   double dir[3] = {0, 0, 0};
   for (int k = 0; k < 3; ++k)
@@ -480,7 +480,7 @@ TEST(Render, MovingObserverSeesAberration) {
   // tetrad alone.  Flat space, observer at the origin moving along -x (its
   // forward, the boosted -e_x leg); straight rays, so the escape point's
   // direction from the origin is the rest-frame direction.
-  FrameScene fs;
+  SceneSpec fs;
   fs.spacetime = Minkowski{};
   WorldlineSpec w;
   w.spacetime = Minkowski{};
@@ -495,7 +495,7 @@ TEST(Render, MovingObserverSeesAberration) {
   ShotResources res;
   const int W = 64;
   const Scene scene = build_scene(fs, W, 1, res);
-  const auto& sc = std::get<SceneOf<Minkowski>>(scene);
+  const auto& sc = std::get<SceneIn<Minkowski>>(scene);
   for (double px : {40.5, 50.5, 60.5}) {
     const Vec3 n = sc.camera.direction(px, 0.5);
     const double cos_seen = n[0] * -1.0;  // angle from forward (-leg 1) in the moving frame

@@ -17,8 +17,8 @@ namespace {
 
 // The paper's dihole with its oscillating sphere, seen by a static observer
 // at time t.
-FrameScene dihole_at(double t) {
-  FrameScene fs;
+SceneSpec dihole_at(double t) {
+  SceneSpec fs;
   fs.spacetime = Dihole(0.4, 0.4, 1.0);
   fs.observer.position = {t, 0, 40, 0};
   std::get<PinholeCamera::Params>(fs.camera).fov = 30;
@@ -31,7 +31,7 @@ struct Rendered {
   RenderStats stats;
 };
 
-Rendered render(const FrameScene& fs, const RenderSettings& rs, ShotResources& res, SampleMemo* memo) {
+Rendered render(const SceneSpec& fs, const RenderSettings& rs, ShotResources& res, SampleMemo* memo) {
   const Scene scene = build_scene(fs, rs.width, rs.height, res);
   std::vector<int> rows(static_cast<std::size_t>(rs.height));
   std::iota(rows.begin(), rows.end(), 0);
@@ -74,13 +74,13 @@ TEST(SampleMemo, AnotherSceneReusesNothing) {
   ShotResources res;
   SampleMemo memo(rs);
   render(dihole_at(100), rs, res, &memo);
-  FrameScene turned = dihole_at(100);
+  SceneSpec turned = dihole_at(100);
   std::get<PinholeCamera::Params>(turned.camera).yaw = 1e-9;  // a hair's turn: every ray is another
   const Rendered r = render(turned, rs, res, &memo);
   EXPECT_EQ(r.stats.reused, 0);
   EXPECT_EQ(r.image.rgb, render(turned, rs, res, nullptr).image.rgb);
   // A flat, empty scene (a hold) reuses every sample of the next frame.
-  FrameScene flat;
+  SceneSpec flat;
   flat.observer.position = {0, 0, 40, 0};
   render(flat, rs, res, &memo);
   flat.observer.position[0] = 50;
@@ -96,7 +96,7 @@ TEST(SampleMemo, RaysNearASphereAtRestAreTracedAgain) {
   ShotResources res;
   SampleMemo memo(rs);
   auto held = [](double t) {
-    FrameScene fs = dihole_at(t);
+    SceneSpec fs = dihole_at(t);
     std::get<Sphere::Params>(fs.objects[0]).worldline.reset();
     std::get<Sphere::Params>(fs.objects[0]).position = Vec4{0, 5, 0, 0};
     return fs;

@@ -3,7 +3,7 @@
 // worldline; the dihole oscillation that worldlines are checked against.
 
 #include "geodesic/geodesic_solver.hpp"
-#include "scene/frame_scene.hpp"
+#include "scene/scene_spec.hpp"
 #include "objects/sphere.hpp"
 
 namespace lc::test {

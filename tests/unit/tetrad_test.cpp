@@ -33,7 +33,7 @@ TEST(Tetrad, StaticAndZamoFramesAreOrthonormal) {
 }
 
 TEST(Tetrad, StaticFrameOnTheAxisIsTheLimitOfNearbyFrames) {
-  // DESIGN.md: on the axis the frame is the limit at the observer's phi, so an
+  // docs/architecture.md: on the axis the frame is the limit at the observer's phi, so an
   // inclination sweep from 0 is continuous.
   const Kerr k(1.0, 0.9);
   const Tetrad on = static_polar_tetrad(k, {0, 30, 0.0, 0.7});

@@ -67,14 +67,14 @@ TEST(WeakFieldTail, RaysEscapeWhereTheRestIsKnown) {
   // (the paper's: ~93 M), the dipole |m1 - m2| d / r^2 of unequal ones
   // (0.6 and 0.2: ~632 M), never beyond 1000 M; the bench's reference keeps 1000 M.
   auto escape_radius = [](double m1, double m2, EscapeRule rule) {
-    FrameScene fs;
+    SceneSpec fs;
     fs.spacetime = Dihole(m1, m2, 1.0);
     fs.observer.position = {0, 0, 80, 0};
     ShotResources res;
     RayOptions o;
     o.escape = rule;
     const Scene sc = build_scene(fs, 4, 4, res, o);
-    return std::get<SceneOf<Dihole>>(sc).rays.escape_radius;
+    return std::get<SceneIn<Dihole>>(sc).rays.escape_radius;
   };
   EXPECT_NEAR(escape_radius(0.4, 0.4, EscapeRule::far_field), std::cbrt(0.8e6), 1e-9);
   EXPECT_NEAR(escape_radius(0.6, 0.2, EscapeRule::far_field), std::sqrt(0.4e6), 1e-9);

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "geodesic/geodesic_solver.hpp"
-#include "scene/worldline.hpp"
+#include "worldline/worldline.hpp"
 #include "test_scenes.hpp"
 
 namespace lc {

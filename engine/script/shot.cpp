@@ -1,4 +1,4 @@
-#include "scene/shot.hpp"
+#include "script/shot.hpp"
 
 #include <fmt/format.h>
 
@@ -37,7 +37,7 @@ Shot::~Shot() {
   if (lua_State* L = sandbox_.state()) luaL_unref(L, LUA_REGISTRYINDEX, frame_ref_);
 }
 
-FrameScene Shot::frame(int i) {
+SceneSpec Shot::frame(int i) {
   lua_State* L = sandbox_.state();
   const std::string ctx = fmt::format("{}: frame {}", file_.string(), i);
   if (i < 0 || i >= info_.frames)
@@ -57,7 +57,7 @@ FrameScene Shot::frame(int i) {
   }
   try {
     lua::TableReader t(L, -1, ctx);
-    FrameScene fs = read_frame_scene(t);
+    SceneSpec fs = read_scene_spec(t);
     lua_pop(L, 1);
     return fs;
   } catch (...) {

@@ -1,7 +1,7 @@
 // Tests of lc::resolve_sky_image (engine/scene/asset_path.cpp): which files
 // a shot may name as sky images, and what is said about the others.
 
-#include "scene/asset_path.hpp"
+#include "assets/asset_path.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

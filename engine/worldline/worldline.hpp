@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "observer/tetrad.hpp"
-#include "scene/worldline_spec.hpp"
+#include "worldline/worldline_spec.hpp"
 
 namespace lc {
 

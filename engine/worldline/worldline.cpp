@@ -1,4 +1,4 @@
-#include "scene/worldline.hpp"
+#include "worldline/worldline.hpp"
 
 #include <algorithm>
 #include <cmath>

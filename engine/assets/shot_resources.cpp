@@ -1,11 +1,11 @@
-#include "render/shot_resources.hpp"
+#include "assets/shot_resources.hpp"
 
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "image/starfield.hpp"
-#include "scene/asset_path.hpp"
+#include "assets/asset_path.hpp"
 
 namespace lc {
 

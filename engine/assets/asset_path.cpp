@@ -1,4 +1,4 @@
-#include "scene/asset_path.hpp"
+#include "assets/asset_path.hpp"
 
 #include <sys/stat.h>
 

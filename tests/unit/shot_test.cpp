@@ -1,7 +1,7 @@
 // Tests of lc::Shot (engine/scene/shot.cpp): what its errors say about the
 // shot table and about the frame they happen in.
 
-#include "scene/shot.hpp"
+#include "script/shot.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,10 @@
 #pragma once
-// The evaluated scene of one frame: plain data, read from the shot script and
-// nothing else.  Positions are scene coordinates (Boyer–Lindquist for Kerr,
-// Cartesian otherwise) with angles in radians; colours are linear RGB.
-// Building a renderable Scene from it is render/scene.hpp's job.
+// SceneSpec: what the shot script says the scene of one frame is — plain
+// data, from the script and nothing else (the first of the three scene
+// types: SceneSpec -> render/scene_builder -> SceneIn<S> / Scene, which
+// render/scene.hpp defines).  Positions are scene coordinates
+// (Boyer–Lindquist for Kerr, Cartesian otherwise) with angles in radians;
+// colours are linear RGB.
 
 #include <array>
 #include <cstdint>
@@ -16,7 +18,8 @@
 #include "objects/objects.hpp"
 #include "sky/sky.hpp"
 #include "core/tensor.hpp"
-#include "scene/worldline_spec.hpp"
+#include "scene/shot_info.hpp"
+#include "worldline/worldline_spec.hpp"
 #include "spacetime/spacetime.hpp"
 
 namespace lc {
@@ -30,21 +33,12 @@ struct ObserverSpec {
   double proper_time = 0.0;                // free_fall: where on the worldline
 };
 
-struct FrameScene {
+struct SceneSpec {
   Spacetime spacetime = Minkowski{};
   ObserverSpec observer;
   CameraSpec camera;
   SkySpec sky;
   std::vector<ObjectSpec> objects;  // the scene's `disk`, then its `objects`
-};
-
-// Frame-independent settings of a shot.
-struct ShotInfo {
-  std::string name;
-  int frames = 1;
-  double fps = 30.0;
-  int width = 640, height = 360;
-  int supersample = 1;  // N x N samples per pixel
 };
 
 }  // namespace lc

@@ -1,6 +1,6 @@
 #pragma once
 // A shot script, loaded once into its own sandbox: the frame-independent
-// settings, and frame(i) -> FrameScene by calling the script's frame
+// settings, and frame(i) -> SceneSpec by calling the script's frame
 // function.  Not thread-safe (one Lua state); every thread or rank that
 // needs scenes loads its own Shot — scripts are deterministic, so all agree.
 
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lua/sandbox.hpp"
-#include "scene/frame_scene.hpp"
+#include "scene/scene_spec.hpp"
 
 namespace lc {
 
@@ -25,7 +25,7 @@ class Shot {
 
   // The scene of frame i (0-based, < info().frames).  Errors name the file,
   // the frame and the field.
-  FrameScene frame(int i);
+  SceneSpec frame(int i);
 
   // The script and every module it required (for hashing a shot's inputs).
   std::vector<std::filesystem::path> loaded_files() const;

@@ -14,7 +14,7 @@
 
 #include "core/constants.hpp"
 #include "image/texture.hpp"
-#include "scene/worldline.hpp"
+#include "worldline/worldline.hpp"
 
 namespace lc {
 

@@ -1,0 +1,52 @@
+#pragma once
+// ShotInfo: a shot's frame-independent settings, the fields of the table a
+// shot script returns besides `frame`.  Declared once (core/fields.hpp): the
+// reader, `lightcone inspect`'s JSON and the reference in docs/shots.md come
+// from the declarations.
+
+#include <cctype>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+#include "core/fields.hpp"
+
+namespace lc {
+
+struct ShotInfo {
+  std::string name;
+  int frames = 1;
+  double fps = 30.0;
+  int width = 640, height = 360;
+  int supersample = 1;
+
+  static constexpr auto fields = std::tuple{
+      field("name", &ShotInfo::name, std::optional<std::string>{}, std::nullopt, std::nullopt,
+            "names the output files (`name.0000.exr`, ...): letters, digits, '_' and '-'"),
+      field("frames", &ShotInfo::frames, std::optional<int>{}, at_least(1), at_most(10'000'000),
+            "frames, numbered 0 .. frames-1"),
+      field("fps", &ShotInfo::fps, std::optional<double>{30.0}, above(0.0), std::nullopt,
+            "frames per second of the film (the video's rate)"),
+      field("width", &ShotInfo::width, std::optional<int>{}, at_least(1), at_most(16384), "image width", "pixels"),
+      field("height", &ShotInfo::height, std::optional<int>{}, at_least(1), at_most(16384), "image height", "pixels"),
+      field("supersample", &ShotInfo::supersample, std::optional<int>{1}, at_least(1), at_most(16),
+            "N x N samples per pixel (the paper: 2)"),
+  };
+
+  // What the fields' ranges cannot say: the name must make file names.
+  // Throws std::invalid_argument.
+  void validate() const {
+    if (name.size() > max_shot_name_length)
+      throw std::invalid_argument(fmt::format(
+          "name has {} characters, at most {} are allowed (it names the output files)", name.size(), max_shot_name_length));
+    for (char c : name)
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
+        throw std::invalid_argument(
+            fmt::format("name '{}' may only use letters, digits, '_' and '-' (it names the output files)", name));
+  }
+};
+
+}  // namespace lc

@@ -1,0 +1,109 @@
+// The folders' layering (docs/architecture.md#folders): an engine folder
+// includes only folders below it, so the include graph has no cycles and a
+// folder can be read knowing only what is under it.  The test reads the
+// sources' #include lines, so a new include that breaks the order fails here
+// naming the file and the line.
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Bottom to top; a folder may include its own level's folder and those of
+// the levels below.  Folders on one level must not include each other.
+const std::vector<std::vector<std::string>> engine_levels = {
+    {"core"},
+    {"lua", "image", "spacetime"},
+    {"observer"},
+    {"geodesic"},
+    {"worldline"},
+    {"assets"},
+    {"camera", "sky", "objects"},
+    {"scene"},
+    {"render", "script"},
+};
+
+struct Include {
+  fs::path file;
+  int line;
+  std::string target;  // as written between the quotes
+};
+
+// Every #include "..." of the .hpp and .cpp files under dir.
+std::vector<Include> includes_under(const fs::path& dir) {
+  static const std::regex quoted(R"re(^\s*#\s*include\s*"([^"]+)")re");
+  std::vector<Include> out;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const auto ext = e.path().extension();
+    if (!e.is_regular_file() || (ext != ".hpp" && ext != ".cpp")) continue;
+    std::ifstream in(e.path());
+    std::string text;
+    for (int n = 1; std::getline(in, text); ++n) {
+      std::smatch m;
+      if (std::regex_search(text, m, quoted)) out.push_back({e.path(), n, m[1]});
+    }
+  }
+  return out;
+}
+
+std::string top_folder(const fs::path& p) { return p.begin()->string(); }
+
+TEST(Architecture, EngineFoldersIncludeOnlyTheFoldersBelowThem) {
+  const fs::path engine = fs::path(LIGHTCONE_SOURCE_DIR) / "engine";
+  std::map<std::string, int> level;
+  for (int l = 0; l < static_cast<int>(engine_levels.size()); ++l)
+    for (const auto& f : engine_levels[l]) level[f] = l;
+  for (const auto& e : fs::directory_iterator(engine)) {
+    if (!e.is_directory()) continue;
+    EXPECT_TRUE(level.count(e.path().filename().string()))
+        << "engine/" << e.path().filename().string() << " has no level: add it to engine_levels and to "
+        << "docs/architecture.md";
+  }
+  for (const Include& inc : includes_under(engine)) {
+    const std::string from = top_folder(fs::relative(inc.file, engine));
+    const std::string to = top_folder(fs::path(inc.target));
+    if (to == from || !level.count(to) || !level.count(from)) continue;
+    EXPECT_LT(level[to], level[from]) << fs::relative(inc.file, engine).string() << ":" << inc.line << " includes "
+                                      << inc.target << ": engine/" << from << " must not include engine/" << to
+                                      << " (docs/architecture.md#folders)";
+  }
+}
+
+// The pipeline's frame store and video writer sit below the commands: of the
+// top-level files they include only the storage helpers.
+TEST(Architecture, FarmAndVideoIncludeNoCommand) {
+  const fs::path pipeline = fs::path(LIGHTCONE_SOURCE_DIR) / "pipeline";
+  const std::set<std::string> allowed = {"durable_file.hpp", "interrupt.hpp"};
+  for (const char* sub : {"farm", "video"}) {
+    for (const Include& inc : includes_under(pipeline / sub)) {
+      if (inc.target.find('/') != std::string::npos || allowed.count(inc.target)) continue;
+      ADD_FAILURE() << fs::relative(inc.file, pipeline).string() << ":" << inc.line << " includes " << inc.target
+                    << ", a top-level pipeline file (docs/architecture.md#folders)";
+    }
+  }
+}
+
+// docs/architecture.md names every engine folder.
+TEST(Architecture, DocsNameEveryEngineFolder) {
+  std::ifstream in(std::string(LIGHTCONE_SOURCE_DIR) + "/docs/architecture.md");
+  ASSERT_TRUE(in) << "docs/architecture.md";
+  std::stringstream text;
+  text << in.rdbuf();
+  for (const auto& l : engine_levels) {
+    for (const auto& f : l)
+      EXPECT_NE(text.str().find("`engine/" + f + "/`"), std::string::npos) << "docs/architecture.md lacks engine/" << f;
+  }
+}
+
+}  // namespace
