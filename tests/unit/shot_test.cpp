@@ -1,4 +1,4 @@
-// Tests of lc::Shot (engine/scene/shot.cpp): what its errors say about the
+// Tests of lc::Shot (engine/script/shot.cpp): what its errors say about the
 // shot table and about the frame they happen in.
 
 #include "script/shot.hpp"
@@ -11,11 +11,13 @@
 
 #include "lua/table_reader.hpp"
 #include "scratch_dir.hpp"
+#include "test_errors.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using lc::test::ScratchDir;
+using lc::test::error_of;
 
 constexpr const char* kScene =
     "{spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 30, theta = 80, phi = 0}}";
@@ -26,22 +28,10 @@ fs::path write_shot(const ScratchDir& dir, const std::string& name, const std::s
   return file;
 }
 
-// The message of the exception of type E that `f` throws.
-template <class E, class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const E& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no exception thrown";
-  return {};
-}
-
 // A Lua error inside frame(i) named the script's line only; in a shot of
 // many frames it must say which one failed, as the scene errors do
 // ("shot.lua: frame 0: observer: ...").
-TEST(SceneShot, ErrorsInsideFrameNameTheFrame) {
+TEST(Shot, ErrorsInsideFrameNameTheFrame) {
   ScratchDir dir;
   const fs::path file = write_shot(dir, "shot.lua",
                                    std::string("local lc = require 'lightcone'\n"
@@ -66,7 +56,7 @@ TEST(SceneShot, ErrorsInsideFrameNameTheFrame) {
 }
 
 // A misspelt frames suggested 'frame', a field of every shot.
-TEST(SceneShot, MisspeltFramesSuggestsTheMissingField) {
+TEST(Shot, MisspeltFramesSuggestsTheMissingField) {
   ScratchDir dir;
   const fs::path file = write_shot(dir, "shot.lua",
                                    std::string("local lc = require 'lightcone'\n"
@@ -79,7 +69,7 @@ TEST(SceneShot, MisspeltFramesSuggestsTheMissingField) {
 
 // A script can list one sphere a million times in a few MiB of Lua memory;
 // the scene's copy of them took GiBs (and a ray tests every sphere).
-TEST(SceneShot, ObjectsAndNamesAreBounded) {
+TEST(Shot, ObjectsAndNamesAreBounded) {
   ScratchDir dir;
   const std::string spheres =
       "local s = lc.sphere{radius = 1, position = {r = 10, theta = 90, phi = 0}}\n"
