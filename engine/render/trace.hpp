@@ -57,13 +57,12 @@ void trace_rays(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RayS
 }
 
 // Calls f (which must not be inlined here) with the stack moved to the same
-// offset within a 4 KiB page, whoever the caller.  The lane integrators keep
-// ~10 KB of state on the stack, and where it falls within a page is worth up
-// to 18% of a Kerr frame: a change to the renderer's row loop that moved it
-// by 16 bytes did that (the same code took 9.0 s or 10.8 s for six
-// kerr_accrDisk frames; 4K aliasing is the likely cause, the machine's
-// counters could not show it).  Pinned, the integrator's placement no
-// longer depends on its callers' frames.
+// offset within a 4 KiB page, whoever the caller.  Why: the lane integrators
+// keep ~10 KB of state on the stack, and where it falls within a page decides
+// a Kerr frame's speed by up to a fifth, so an unrelated change to a caller's
+// locals could slow every frame.  How it was measured: one binary that took
+// the offset from the environment rendered the same Kerr frames with offsets
+// 0..4032; docs/performance.md, changes 28 and 29, has the numbers.
 template <class F>
 [[gnu::noinline]] void on_pinned_stack(F&& f) {
   constexpr std::uintptr_t page = 4096, offset = 0;
