@@ -87,6 +87,13 @@ class Disk {
     return color(r, phi);
   }
 
+  // Its matter's 4-velocity at the trace event y: the spacetime's thin-disk
+  // motion (SpacetimeModel::disk_velocity).
+  template <class S>
+  Vec4 emitter_velocity(const S& st, const RayState& y) const {
+    return st.disk_velocity({y[0], y[1], y[2], y[3]});
+  }
+
  private:
   Params p_;
 };

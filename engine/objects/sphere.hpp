@@ -136,6 +136,18 @@ class Sphere : public SphereBody {
     return checker(static_cast<long>(th / pi * p_.rows), static_cast<long>(ph / two_pi * p_.columns), p_.colors);
   }
 
+  // Its matter's 4-velocity where the ray meets it (the trace event y): the
+  // body moves rigidly, so the centre's 4-velocity at y's coordinate time,
+  // normalised in the metric at y (the two points are a radius apart).
+  template <class S>
+  Vec4 emitter_velocity(const S& st, const RayState& y) const {
+    Vec4 c, u;
+    centre(y[0], c, u);
+    const Vec4 x = {y[0], y[1], y[2], y[3]};
+    const double n = -dot(mat_vec(st.metric(x), u), u);
+    return n > 0.0 ? (1.0 / std::sqrt(n)) * u : u;
+  }
+
  private:
   // A free-falling sphere's worldline must last as long as this frame's rays
   // may meet it: after its end the body would be nowhere (its centre is held

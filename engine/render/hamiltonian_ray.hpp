@@ -98,7 +98,9 @@ class HamiltonianRay {
     if (winner == no_object) return false;
     const RayState y = step.at(t.best());
     for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
-      if (index == winner) hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y), y, t.best(), res);
+      if (index == winner)
+        hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y), frequency_ratio(y, o.emitter_velocity(st, y)), y,
+            t.best(), res);
     });
     return true;
   }
@@ -123,16 +125,23 @@ class HamiltonianRay {
     }
     if (res.reason != StopReason::escaped) return out_;  // gave up: black, kind 4
     sky_sample(sc_, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out_);
+    out_.g = 1.0 / res.y[4];  // the source at rest far away: p.u = p_t
     return out_;
   }
 
  private:
+  // nu_observed / nu_emitted for light that left the event y (its momentum
+  // there) from matter of 4-velocity u.
+  static double frequency_ratio(const RayState& y, const Vec4& u) {
+    return 1.0 / (y[4] * u[0] + y[5] * u[1] + y[6] * u[2] + y[7] * u[3]);
+  }
   // Ends the ray at the event y (affine parameter lambda) on an object.
-  bool hit(HitKind kind, const Color& color, const RayState& y, double lambda, RayResult& res) {
+  bool hit(HitKind kind, const Color& color, double g, const RayState& y, double lambda, RayResult& res) {
     double t, r, phi;
     scene_polar(sc_.spacetime, {y[0], y[1], y[2], y[3]}, t, r, phi);
     out_.kind = kind;
     out_.color = color;
+    out_.g = g;
     out_.r = r;
     out_.phi = phi;
     out_.t = t - sc_.observer_time;

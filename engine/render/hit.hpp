@@ -18,6 +18,11 @@ struct RaySample {
   // Boyer–Lindquist r and phi (phi in [0, 2 pi)) for Kerr, spherical r and
   // phi about the origin otherwise; t is its scene time minus the observer's.
   double r = 0.0, phi = 0.0, t = 0.0;
+  // Frequency ratio nu_observed / nu_emitted of the light (docs/light.md):
+  // 1 / (p_mu u^mu) with p the ray's momentum (p.u_observer = 1) and u the
+  // emitter's 4-velocity; the sky's emitter is at rest far away; 0 for the
+  // horizon and rays that gave up.
+  double g = 0.0;
   int order = 0;  // equatorial-plane crossings before the end
   // The ray came near an object whose answer may depend on the frame's
   // time: no other frame may reuse it (render/sample_memo.hpp).  (Here it

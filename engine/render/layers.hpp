@@ -34,6 +34,11 @@ inline constexpr std::array layers = {
               "coordinate time of that event minus the observer's: negative, light left it earlier (Boyer–Lindquist "
               "t for Kerr)",
               [](const RaySample& s) { return static_cast<float>(s.t); }},
+    LayerSpec{"hit.g",
+              "frequency ratio ν_observed / ν_emitted of the light: above 1 blueshifted, below 1 redshifted; the "
+              "disk's matter orbits, a sphere moves with its worldline, the sky's light left a source at rest far "
+              "away; 0 for the horizon and gave-up pixels (docs/light.md)",
+              [](const RaySample& s) { return static_cast<float>(s.g); }},
     LayerSpec{"hit.order",
               "number of crossings of the equatorial plane (z = 0) before the end: 0 for the direct image of the "
               "disk, 1 for the first image seen under/over the hole, …",

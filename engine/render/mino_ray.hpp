@@ -68,6 +68,7 @@ class MinoRay {
         if (disk.covers(out_.r)) {
           out_.kind = Disk::hit_kind;
           out_.color = disk.color(out_.r, out_.phi);
+          out_.g = disk_frequency_ratio(e);
           res.reason = StopReason::hit;
           res.y = e.y;
           res.lambda = lz;
@@ -124,6 +125,7 @@ class MinoRay {
     double sphi = std::atan2(direction_[1], direction_[0]);
     if (sphi < 0) sphi += two_pi;
     out_.color = sc_.sky.color(theta, sphi);
+    out_.g = -1.0 / start_.k.E;  // the source at rest far away: p.u = p_t = -E
     return out_;
   }
 
@@ -184,6 +186,14 @@ class MinoRay {
     for (int mu = 0; mu < 4; ++mu)
       for (int nu = 0; nu < 4; ++nu) pk[mu] += p[nu] * Ji[nu][mu];
     return RayState{x[0], x[1], x[2], x[3], pk[0], pk[1], pk[2], pk[3]};
+  }
+  // nu_observed / nu_emitted for light that left the disk at e: 1 / (p_mu
+  // u^mu) in Boyer–Lindquist, the matter's u from Kerr::disk_velocity_bl.
+  double disk_frequency_ratio(const Event& e) const {
+    Vec4 s, p;
+    kerr_mino_event(start_.k, e.y, s, p);
+    const Vec4 u = sc_.spacetime.disk_velocity_bl(s[1]);
+    return 1.0 / (p[0] * u[0] + p[1] * u[1] + p[3] * u[3]);
   }
   void fill_event(const Event& e) {
     Vec4 s, p;

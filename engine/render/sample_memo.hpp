@@ -28,8 +28,8 @@
 namespace lc {
 
 class SampleMemo {
-  // What a frame uses of a sample (render/layers.hpp's FrameSample: 36
-  // bytes with the five layers), and whether one is kept.
+  // What a frame uses of a sample (render/layers.hpp's FrameSample: its
+  // colour, layer values and hit kind), and whether one is kept.
   struct Kept {
     Color color{};
     LayerValues layers{};

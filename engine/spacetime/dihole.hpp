@@ -58,6 +58,15 @@ class Dihole : public CartesianScene {
     return isotropic_escape_direction({x[1], x[2], x[3]}, d, asymptotic_mass());
   }
 
+  // Thin-disk matter at the trace event x (docs/light.md): on the circular
+  // orbit about the z axis that the radial pull at x allows, anticlockwise
+  // seen from +z, at x's cylindrical radius R: Omega^2 = -∂_R g_tt / ∂_R
+  // g_phiphi with g_tt = -U^-2, g_phiphi = U^2 R^2 (a geodesic in the plane
+  // z = 0 of equal masses; for unequal ones the plane's pull along z is
+  // ignored).  At rest where no such orbit exists (it would be faster than
+  // light, or the pull points outwards) and on the axis.
+  Vec4 disk_velocity(const Vec4& x) const;
+
   // U and its gradient at a spatial point.
   double potential(const Vec4& x, Vec3* grad = nullptr) const {
     const double X = x[1], Y = x[2];

@@ -95,6 +95,55 @@ Mat4Derivs Kerr::metric_derivatives(const Vec4& x) const {
   return d;
 }
 
+double Kerr::isco_radius() const {
+  if (!(M_ > 0.0)) return 0.0;
+  const double chi = std::min(std::abs(a_) / M_, 1.0);
+  const double z1 = 1.0 + std::cbrt(1.0 - chi * chi) * (std::cbrt(1.0 + chi) + std::cbrt(1.0 - chi));
+  const double z2 = std::sqrt(3.0 * chi * chi + z1 * z1);
+  return M_ * (3.0 + z2 - std::sqrt((3.0 - z1) * (3.0 + z1 + 2.0 * z2)));
+}
+
+Vec4 Kerr::disk_velocity_bl(double r) const {
+  if (!(M_ > 0.0)) return {1.0, 0.0, 0.0, 0.0};
+  // The equatorial (t, phi) block of the BL metric at r, and its inverse
+  // (g_tt g_phiphi - g_tphi^2 = -Delta there).
+  struct Block {
+    double tt, tp, pp;
+  };
+  const auto metric_at = [&](double rr) {
+    return Block{-(1.0 - 2.0 * M_ / rr), -2.0 * M_ * a_ / rr, rr * rr + a_ * a_ + 2.0 * M_ * a_ * a_ / rr};
+  };
+  const auto circular = [&](double rr) {
+    // Co-rotating: the sign of the spin (a = 0 counts as +).
+    const double s = a_ < 0.0 ? -1.0 : 1.0, sm = std::sqrt(M_);
+    const double omega = s * sm / (rr * std::sqrt(rr) + std::abs(a_) * sm);
+    const Block g = metric_at(rr);
+    const double ut = 1.0 / std::sqrt(-(g.tt + 2.0 * omega * g.tp + omega * omega * g.pp));
+    return Vec4{ut, 0.0, 0.0, omega * ut};
+  };
+  const double r_isco = isco_radius();
+  if (r >= r_isco) return circular(r);
+  const Vec4 ui = circular(r_isco);
+  const Block gi = metric_at(r_isco);
+  const double u_t = gi.tt * ui[0] + gi.tp * ui[3], u_phi = gi.tp * ui[0] + gi.pp * ui[3];
+  const Block g = metric_at(r);
+  const double delta = r * r - 2.0 * M_ * r + a_ * a_;
+  const double ut = (-g.pp * u_t + g.tp * u_phi) / delta, uphi = (g.tp * u_t - g.tt * u_phi) / delta;
+  // u_mu u^mu = -1 with u^r < 0 (falling in), g_rr = r^2 / Delta.
+  const double ur2 = (-1.0 - u_t * ut - u_phi * uphi) * delta / (r * r);
+  return {ut, -std::sqrt(std::max(ur2, 0.0)), 0.0, uphi};
+}
+
+Vec4 Kerr::disk_velocity(const Vec4& x) const {
+  const Vec4 s = scene_from_trace(x);
+  const Vec4 u = disk_velocity_bl(s[1]);
+  const Mat4 J = trace_jacobian(s);
+  Vec4 out{};
+  for (int mu = 0; mu < 4; ++mu)
+    for (int nu = 0; nu < 4; ++nu) out[mu] += J[mu][nu] * u[nu];
+  return out;
+}
+
 Mat4 Kerr::bl_metric(const Vec4& s) const {
   const double r = s[1], th = s[2];
   const double sn = std::sin(th), cs = std::cos(th);

@@ -160,6 +160,18 @@ class Kerr {
   // documentation of conventions (g_{t phi} = -2 M a r sin^2 / Sigma).
   Mat4 bl_metric(const Vec4& s) const;
 
+  // Thin-disk matter in the equatorial plane (docs/light.md): on circular
+  // Keplerian orbits co-rotating with the hole (a = 0: anticlockwise seen
+  // from +z) at and outside the ISCO; inside it plunging with the ISCO orbit's
+  // energy and angular momentum (Cunningham 1975, ApJ 202, 788); at rest
+  // where M = 0.  u^mu in Boyer–Lindquist at radius r (outside the horizon),
+  // and in the trace chart at the trace event x.
+  Vec4 disk_velocity_bl(double r) const;
+  Vec4 disk_velocity(const Vec4& x) const;
+  // Radius of the innermost stable circular orbit co-rotating with the hole
+  // (Bardeen, Press & Teukolsky 1972, ApJ 178, 347, eq. 2.21); 0 where M = 0.
+  double isco_radius() const;
+
   // Coordinate maps between scene (Boyer–Lindquist) and trace (Kerr–Schild)
   // coordinates; valid outside the horizon (T and Phi diverge on it).
   Vec4 trace_from_scene(const Vec4& s) const;

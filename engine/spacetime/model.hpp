@@ -30,10 +30,14 @@
 //   escape_direction(x, d)    the direction at infinity of a ray leaving x
 //                             along unit spatial direction d (the bending
 //                             still to come)
+//   disk_velocity(x)          u^mu of thin-disk matter at the trace event x in
+//                             the equatorial plane (for hit.g, docs/light.md)
 //   trace_from_scene, scene_from_trace, scene_vector, scene_time_gradient,
 //   polar_basis               scene <-> trace coordinates
 //   for_tracing(direction)    itself in the chart regular where curves traced
 //                             that way go
+//   (the trace chart's t must be the time of static observers far away,
+//   so that a ray's p_t is its energy there: the sky's hit.g reads it)
 //   examples()                parameter sets with the radii between which
 //                             the generic self-test may sample events
 
@@ -80,6 +84,7 @@ concept SpacetimeModel =
       { s.photon_reach() } -> std::same_as<double>;
       { s.far_field_radius() } -> std::same_as<double>;
       { s.escape_direction(x, d) } -> std::same_as<Vec3>;
+      { s.disk_velocity(x) } -> std::same_as<Vec4>;
       { s.trace_from_scene(x) } -> std::same_as<Vec4>;
       { s.scene_from_trace(x) } -> std::same_as<Vec4>;
       { s.scene_vector(x, x) } -> std::same_as<Vec4>;

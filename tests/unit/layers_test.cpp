@@ -32,10 +32,18 @@ TEST(Layers, AFrameCarriesEveryLayerInTableOrder) {
   s.kind = HitKind::horizon;
   s.r = 2.5;
   s.order = 3;
+  s.g = 0.75;
   const LayerValues v = layer_values(s);
-  EXPECT_EQ(v[0], 2.0f);
-  EXPECT_EQ(v[1], 2.5f);
-  EXPECT_EQ(v[4], 3.0f);
+  const auto value = [&](std::string_view name) {
+    for (std::size_t k = 0; k < layer_count; ++k)
+      if (layers[k].name == name) return v[k];
+    ADD_FAILURE() << "no layer " << name;
+    return -1.0f;
+  };
+  EXPECT_EQ(value("hit.kind"), 2.0f);
+  EXPECT_EQ(value("hit.r"), 2.5f);
+  EXPECT_EQ(value("hit.g"), 0.75f);
+  EXPECT_EQ(value("hit.order"), 3.0f);
 }
 
 }  // namespace
