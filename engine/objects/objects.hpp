@@ -50,9 +50,16 @@ concept ObjectKind = requires(const O& o, const typename O::Params& p, const S& 
 using ObjectRegistry = Registry<Disk, Sphere>;
 
 namespace detail {
+// One assertion per kind and spacetime, so that the compiler's notes name
+// the pair that fails and the requirement it misses.
+template <class O, class S>
+constexpr bool satisfies_object_kind() {
+  static_assert(ObjectKind<O, S>, "a registered object kind must satisfy ObjectKind in every registered spacetime");
+  return true;
+}
 template <class S, class... O>
 constexpr bool all_objects_in(Registry<O...>*) {
-  return (ObjectKind<O, S> && ...);
+  return (satisfies_object_kind<O, S>() && ...);
 }
 template <class... S>
 constexpr bool all_objects(std::variant<S...>*) {
@@ -65,8 +72,7 @@ struct ListsOf<Registry<O...>> {
   using type = std::tuple<std::vector<O>...>;
 };
 }  // namespace detail
-static_assert(detail::all_objects(static_cast<Spacetime*>(nullptr)),
-              "every registered object kind must satisfy ObjectKind in every registered spacetime");
+static_assert(detail::all_objects(static_cast<Spacetime*>(nullptr)));
 
 // An object a shot asked for: one of the registered kinds' parameters.
 using ObjectSpec = ObjectRegistry::Spec;

@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/tensor.hpp"
 #include "geodesic/crossing.hpp"
 #include "geodesic/ray_loop.hpp"
 

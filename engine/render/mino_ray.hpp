@@ -18,6 +18,15 @@
 
 namespace lc::detail {
 
+// The fast path looks for disks and nothing else: an object kind that says
+// in_fast_path must be found in MinoRay::visit first.
+template <class... O>
+constexpr bool fast_path_kinds_are_disks(Registry<O...>*) {
+  return ((O::in_fast_path == std::is_same_v<O, Disk>) && ...);
+}
+static_assert(fast_path_kinds_are_disks(static_cast<ObjectRegistry*>(nullptr)),
+              "an object kind with in_fast_path = true must be looked for in MinoRay::visit");
+
 // Where the fast path's rays are captured (0: nowhere, flat space).
 inline double mino_capture_radius(const SceneIn<Kerr>& sc) {
   return sc.spacetime.mass() > 0.0 ? sc.spacetime.capture_radius() : 0.0;

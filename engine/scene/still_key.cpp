@@ -8,12 +8,18 @@ namespace {
 
 // The camera, the sky and the objects are keyed by their registries from
 // their declared fields (core/registry.hpp), so a new kind or field joins
-// the key by itself.  A new field of these two structs must be added here,
-// or frames that differ in it would share rays: their sizes (x86-64,
-// libstdc++) trip when one is added.
+// the key by itself.  A new member of these two structs must be added here,
+// or frames that differ in it would share rays: each size must be the sum
+// of the members' known here (x86-64, libstdc++, where none pads), so a
+// new member trips it, while a registered kind growing (a larger
+// spacetime, say) does not.
 #if defined(__x86_64__) && defined(__GLIBCXX__)
-static_assert(sizeof(SceneSpec) == 392, "SceneSpec changed: add the field to still_key");
-static_assert(sizeof(ObserverSpec) == 216, "ObserverSpec changed: add the field to still_key");
+static_assert(sizeof(SceneSpec) == sizeof(Spacetime) + sizeof(ObserverSpec) + sizeof(CameraSpec) + sizeof(SkySpec) +
+                                       sizeof(std::vector<ObjectSpec>),
+              "SceneSpec has a member still_key does not know: add it to still_key");
+static_assert(sizeof(ObserverSpec) ==
+                  sizeof(double) /* kind, padded */ + sizeof(Vec4) + sizeof(std::optional<WorldlineSpec>) + sizeof(double),
+              "ObserverSpec has a member still_key does not know: add it to still_key");
 #endif
 
 std::string hex(double v) { return fmt::format("{:a}", v); }

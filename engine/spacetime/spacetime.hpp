@@ -23,12 +23,19 @@ namespace lc {
 using Spacetime = std::variant<Minkowski, Kerr, Dihole>;
 
 namespace detail {
-template <class V>
-struct AllModels;
+// One assertion per spacetime, so that the compiler's notes name the one
+// that fails and the requirement it misses.
+template <class S>
+constexpr bool satisfies_spacetime_model() {
+  static_assert(SpacetimeModel<S>, "a registered spacetime must satisfy SpacetimeModel (spacetime/model.hpp)");
+  return true;
+}
 template <class... S>
-struct AllModels<std::variant<S...>> : std::bool_constant<(SpacetimeModel<S> && ...)> {};
+constexpr bool all_spacetime_models(std::variant<S...>*) {
+  return (satisfies_spacetime_model<S>() && ...);
+}
 }  // namespace detail
-static_assert(detail::AllModels<Spacetime>::value, "every registered spacetime must satisfy SpacetimeModel");
+static_assert(detail::all_spacetime_models(static_cast<Spacetime*>(nullptr)));
 
 // A type tag: for_each_spacetime_type calls f(TypeTag<S>{}) for each.
 template <class T>

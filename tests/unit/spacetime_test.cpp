@@ -70,6 +70,47 @@ void expect_hamilton_equations(const S& st, const std::vector<Vec4>& pts) {
   }
 }
 
+// The chart maps at trace events x: scene_from_trace undone by
+// trace_from_scene (to 1e-9 of the event's size: Kerr's maps go through
+// logarithms and an inverse quartic); scene_vector and scene_time_gradient
+// against central differences of scene_from_trace (step 1e-5 along a unit
+// vector, less near the axis: truncation ~1e-10, bound 1e-6 relative, plus
+// the coordinates' rounding over the step).
+// And the disk's matter in the equatorial plane (where x's cylindrical
+// radius is at least r_min): a future-pointing unit timelike 4-velocity (to
+// 1e-10).
+template <class S>
+void expect_chart_maps_and_disk(const S& st, const std::vector<Vec4>& pts, double r_min) {
+  const auto scene_difference = [](Vec4 a, const Vec4& b) {
+    Vec4 d = a - b;
+    if constexpr (S::chart == SceneChart::polar) d[3] = std::remainder(d[3], 2 * pi);
+    return d;
+  };
+  const Vec4 v = {0.3, -0.5, 0.7, 0.4};
+  for (const Vec4& x : pts) {
+    const double size = std::max(1.0, std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]));
+    const Vec4 back = st.trace_from_scene(st.scene_from_trace(x));
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(back[c], x[c], 1e-9 * size) << "round trip, component " << c;
+    // Polar angles vary on the scale of the distance from the axis: the
+    // step shrinks with it (and the axis itself, where they are singular,
+    // is left to the spacetime's own tests).
+    const double rho = std::hypot(x[1], x[2]);
+    if (S::chart == SceneChart::polar && rho < 1e-3) continue;
+    const double h = 1e-5 * std::min(1.0, rho);
+    const Vec4 fd = (1 / (2 * h)) * scene_difference(st.scene_from_trace(x + h * v), st.scene_from_trace(x - h * v));
+    const Vec4 sv = st.scene_vector(x, v);
+    // Truncation, and the rounding of coordinates of the event's size over 2h.
+    const auto tol = [&](double f) { return 1e-6 * std::max(1.0, std::abs(f)) + 1e-15 * size / h; };
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(sv[c], fd[c], tol(fd[c])) << "scene_vector " << c;
+    EXPECT_NEAR(dot(st.scene_time_gradient(x), v), fd[0], tol(fd[0]));
+    if (std::hypot(x[1], x[2]) < r_min) continue;
+    const Vec4 in_plane = {x[0], x[1], x[2], 0.0};
+    const Vec4 u = st.disk_velocity(in_plane);
+    EXPECT_NEAR(dot(mat_vec(st.metric(in_plane), u), u), -1.0, 1e-10) << "disk matter at " << x[1] << ", " << x[2];
+    EXPECT_GT(u[0], 0.0);
+  }
+}
+
 // The self-test every registered spacetime gets, with no line of its own
 // here: on its examples(), the metric times its inverse, the analytic
 // derivatives against finite differences, Hamilton's equations against the
@@ -89,6 +130,7 @@ TEST(Spacetime, EveryRegisteredSpacetimePassesTheSelfTest) {
       expect_inverse(ex.spacetime, pts);
       expect_derivatives(ex.spacetime, pts);
       expect_hamilton_equations(ex.spacetime, pts);
+      expect_chart_maps_and_disk(ex.spacetime, pts, ex.r_min);
       const auto ps = test::momenta(static_cast<int>(pts.size()));
       for (std::size_t k = 0; k + lane_count <= pts.size(); k += lane_count) {
         std::array<LaneVec, 8> yl{}, dyl{};
