@@ -70,6 +70,13 @@ std::shared_ptr<const Texture> ShotResources::starfield(std::uint32_t seed, int 
   });
 }
 
+std::shared_ptr<const BlackbodyColors> ShotResources::blackbody_colors(double reference) {
+  return get<BlackbodyColors>(fmt::format("blackbody {:a}", reference), "blackbody colours", [&] {
+    auto c = std::make_shared<const BlackbodyColors>(reference);
+    return std::pair{c, c->bytes()};
+  });
+}
+
 std::vector<std::filesystem::path> ShotResources::files() const {
   std::lock_guard lock(mutex_);
   return {files_.begin(), files_.end()};

@@ -14,6 +14,7 @@
 
 #include "core/constants.hpp"
 #include "image/texture.hpp"
+#include "light/blackbody.hpp"
 #include "worldline/worldline.hpp"
 
 namespace lc {
@@ -33,6 +34,9 @@ class ShotResources {
   std::shared_ptr<const Texture> texture(const std::filesystem::path& file);
   // The procedural star field (render_starfield), made once per seed and size.
   std::shared_ptr<const Texture> starfield(std::uint32_t seed, int width);
+  // Blackbody colours with luminance 1 at `reference` K, made once per
+  // reference (a table of ~50 KB that takes ~10 ms to make).
+  std::shared_ptr<const BlackbodyColors> blackbody_colors(double reference);
   // Every file loaded (textures), for hashing a shot's inputs.
   std::vector<std::filesystem::path> files() const;
   // Bytes held now.

@@ -11,6 +11,12 @@ inline constexpr double pi = std::numbers::pi;
 inline constexpr double two_pi = 2.0 * std::numbers::pi;
 inline constexpr double degree = std::numbers::pi / 180.0;  // radians per degree
 
+// Physical constants in SI (CODATA 2018, exact by the 2019 SI), for
+// blackbody light (light/blackbody.hpp).
+inline constexpr double planck_h = 6.62607015e-34;      // J s
+inline constexpr double speed_of_light = 299792458.0;   // m / s
+inline constexpr double boltzmann_k = 1.380649e-23;     // J / K
+
 // Null rays are stopped at this Boyer–Lindquist (or Cartesian) radius when
 // moving outwards: beyond the outermost photon orbit no ray turns back, so the
 // remaining bending only changes the escape direction (by about 2M/r).

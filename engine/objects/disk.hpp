@@ -1,9 +1,12 @@
 #pragma once
 // lc.disk{...}: the infinitely thin equatorial accretion disk, inner <= r <=
 // outer in the chart's radius (Boyer–Lindquist r for Kerr), checkered in r
-// (rings) and phi (sectors).  Rays meet it where they cross the plane z = 0.
+// (rings) and phi (sectors), or glowing as a Novikov–Thorne disk seen
+// through the frequency shift g (docs/light.md).  Rays meet it where they
+// cross the plane z = 0.
 
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -16,6 +19,8 @@
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "core/hit_kind.hpp"
+#include "light/blackbody.hpp"
+#include "light/novikov_thorne.hpp"
 #include "objects/step_test.hpp"
 #include "spacetime/chart.hpp"
 
@@ -34,6 +39,7 @@ class Disk {
     double inner = 6.0, outer = 20.0;
     int rings = 7, sectors = 24;
     Palette colors = {{1.0f, 0.55f, 0.15f}, {0.35f, 0.12f, 0.03f}};
+    double temperature = 0.0, color_correction = 1.0;
     static constexpr auto fields = std::tuple{
         field("inner", &Params::inner, std::optional<double>{}, at_least(0.0), std::nullopt, "inner radius", "M"),
         field("outer", &Params::outer, std::optional<double>{}, std::nullopt, std::nullopt, "outer radius, above inner", "M"),
@@ -42,6 +48,14 @@ class Disk {
               "checker cells in phi"),
         field("colors", &Params::colors, std::optional<Palette>{Palette{{1.0f, 0.55f, 0.15f}, {0.35f, 0.12f, 0.03f}}},
               std::nullopt, std::nullopt, "the two colours {{r, g, b}, {r, g, b}}, linear RGB"),
+        field("temperature", &Params::temperature, std::optional<double>{0.0}, at_least(0.0), at_most(1e9),
+              "0: the checker as it is (the paper's look); above 0: a Novikov–Thorne disk (Kerr only) glowing as a "
+              "blackbody whose hottest ring has this temperature, seen through the frequency shift g (colour and "
+              "beaming; docs/light.md); that ring, seen unshifted, has luminance 1",
+              "K"),
+        field("color_correction", &Params::color_correction, std::optional<double>{1.0}, at_least(1.0), at_most(10.0),
+              "a glowing disk's colour-correction factor f: each ring shines as a blackbody at f T diluted by "
+              "f^-4 (hot disks: ~1.7)"),
     };
     // Throws std::invalid_argument unless inner < outer.
     void validate() const {
@@ -50,8 +64,14 @@ class Disk {
     }
   };
 
+  // In the spacetime st, with colour tables from `res`.  Throws
+  // std::invalid_argument for a glowing disk where st has no Novikov–Thorne
+  // disk.
   template <class S>
-  Disk(const Params& p, const S&, ShotResources&, const Vec4&) : p_(p) {}
+  Disk(const Params& p, const S& st, ShotResources& res, const Vec4&) : p_(p) {
+    if (p.temperature > 0.0) glow(st.thin_disk_flux(), res);
+  }
+  // A checkered disk.
   explicit Disk(const Params& p) : p_(p) {}
 
   // How far from the origin (coordinates) it reaches; the chart's r and the
@@ -59,8 +79,12 @@ class Disk {
   double reach(double asymptotic_mass) const { return p_.outer + std::abs(asymptotic_mass); }
   bool covers(double r) const { return r >= p_.inner && r <= p_.outer; }
 
-  // Colour at the chart's (r, phi), r in [inner, outer], phi in [0, 2 pi).
-  Color color(double r, double phi) const {
+  // Colour at the chart's (r, phi), r in [inner, outer], phi in [0, 2 pi),
+  // of light seen shifted by g: a glowing disk's ring at its temperature
+  // seen at g f T (I_nu / nu^3 is invariant, so a blackbody stays one), else
+  // the checker.
+  Color color(double r, double phi, double g) const {
+    if (colors_) return (*colors_)(g * p_.color_correction * ring_temperature(r));
     const long ring = static_cast<long>(std::floor((r - p_.inner) / (p_.outer - p_.inner) * p_.rings));
     const long sector = static_cast<long>(std::floor(phi / two_pi * p_.sectors));
     return checker(ring, sector, p_.colors);
@@ -81,10 +105,10 @@ class Disk {
   }
 
   template <class S>
-  Color color_at(const S& st, const RayState& y) const {
+  Color color_at(const S& st, const RayState& y, double g) const {
     double time, r, phi;
     scene_polar(st, {y[0], y[1], y[2], y[3]}, time, r, phi);
-    return color(r, phi);
+    return color(r, phi, g);
   }
 
   // Its matter's 4-velocity at the trace event y: the spacetime's thin-disk
@@ -95,7 +119,15 @@ class Disk {
   }
 
  private:
+  // T(r) = T_max (F(r) / F_max)^(1/4): each ring radiates its flux as a
+  // blackbody (Stefan–Boltzmann).
+  double ring_temperature(double r) const { return p_.temperature * std::sqrt(std::sqrt((*flux_)(r) / flux_max_)); }
+  void glow(const std::optional<NovikovThorneFlux>& flux, ShotResources& res);
+
   Params p_;
+  std::optional<NovikovThorneFlux> flux_;  // a glowing disk's
+  double flux_max_ = 0.0;
+  std::shared_ptr<const BlackbodyColors> colors_;
 };
 
 }  // namespace lc

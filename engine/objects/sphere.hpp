@@ -126,9 +126,10 @@ class Sphere : public SphereBody {
   }
 
   // Colour where the ray meets it (the trace event y): checker in its own
-  // polar angles, pole along the frame's third leg.
+  // polar angles, pole along the frame's third leg, as it is whatever the
+  // light's shift g.
   template <class S>
-  Color color_at(const S& st, const RayState& y) const {
+  Color color_at(const S& st, const RayState& y, double) const {
     const Vec3 xi = detail::sphere_local(st, *this, {y[0], y[1], y[2], y[3]});
     const double th = std::acos(std::clamp(xi[2] / norm3(xi), -1.0, 1.0));
     double ph = std::atan2(xi[1], xi[0]);

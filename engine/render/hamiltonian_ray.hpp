@@ -98,9 +98,10 @@ class HamiltonianRay {
     if (winner == no_object) return false;
     const RayState y = step.at(t.best());
     for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
-      if (index == winner)
-        hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y), frequency_ratio(y, o.emitter_velocity(st, y)), y,
-            t.best(), res);
+      if (index == winner) {
+        const double g = frequency_ratio(y, o.emitter_velocity(st, y));
+        hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y, g), g, y, t.best(), res);
+      }
     });
     return true;
   }

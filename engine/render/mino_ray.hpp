@@ -76,8 +76,8 @@ class MinoRay {
       for (const Disk& disk : std::get<std::vector<Disk>>(sc_.objects))
         if (disk.covers(out_.r)) {
           out_.kind = Disk::hit_kind;
-          out_.color = disk.color(out_.r, out_.phi);
           out_.g = disk_frequency_ratio(e);
+          out_.color = disk.color(out_.r, out_.phi, out_.g);
           res.reason = StopReason::hit;
           res.y = e.y;
           res.lambda = lz;

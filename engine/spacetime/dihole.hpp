@@ -66,6 +66,8 @@ class Dihole : public CartesianScene {
   // ignored).  At rest where no such orbit exists (it would be faster than
   // light, or the pull points outwards) and on the axis.
   Vec4 disk_velocity(const Vec4& x) const;
+  // No thin-disk theory is worked out for two holes.
+  std::optional<NovikovThorneFlux> thin_disk_flux() const { return std::nullopt; }
 
   // U and its gradient at a spatial point.
   double potential(const Vec4& x, Vec3* grad = nullptr) const {

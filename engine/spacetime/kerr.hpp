@@ -168,6 +168,11 @@ class Kerr {
   // and in the trace chart at the trace event x.
   Vec4 disk_velocity_bl(double r) const;
   Vec4 disk_velocity(const Vec4& x) const;
+  // The Novikov–Thorne flux of its disk: for M > 0 and |a| < M.
+  std::optional<NovikovThorneFlux> thin_disk_flux() const {
+    if (M_ > 0.0 && std::abs(a_) < M_) return NovikovThorneFlux(M_, a_);
+    return std::nullopt;
+  }
   // Radius of the innermost stable circular orbit co-rotating with the hole
   // (Bardeen, Press & Teukolsky 1972, ApJ 178, 347, eq. 2.21); 0 where M = 0.
   double isco_radius() const;

@@ -38,6 +38,8 @@ class Minkowski : public CartesianScene {
   double asymptotic_mass() const { return 0.0; }
   // Thin-disk matter: nothing pulls it into orbit, so it is at rest.
   Vec4 disk_velocity(const Vec4&) const { return {1.0, 0.0, 0.0, 0.0}; }
+  // Nothing heats a disk at rest.
+  std::optional<NovikovThorneFlux> thin_disk_flux() const { return std::nullopt; }
   bool captured(const Vec4&) const { return false; }
   double capture_margin(const Vec4&) const { return 1.0; }
   bool inside_horizon(const Vec4&) const { return false; }

@@ -32,6 +32,8 @@
 //                             still to come)
 //   disk_velocity(x)          u^mu of thin-disk matter at the trace event x in
 //                             the equatorial plane (for hit.g, docs/light.md)
+//   thin_disk_flux()          the Novikov–Thorne flux of its thin disk, where it
+//                             has one (a glowing disk needs it), else nullopt
 //   trace_from_scene, scene_from_trace, scene_vector, scene_time_gradient,
 //   polar_basis               scene <-> trace coordinates
 //   for_tracing(direction)    itself in the chart regular where curves traced
@@ -43,12 +45,14 @@
 
 #include <array>
 #include <concepts>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "core/fields.hpp"
 #include "core/lanes.hpp"
 #include "core/tensor.hpp"
+#include "light/novikov_thorne.hpp"
 #include "spacetime/chart.hpp"
 
 namespace lc {
@@ -85,6 +89,7 @@ concept SpacetimeModel =
       { s.far_field_radius() } -> std::same_as<double>;
       { s.escape_direction(x, d) } -> std::same_as<Vec3>;
       { s.disk_velocity(x) } -> std::same_as<Vec4>;
+      { s.thin_disk_flux() } -> std::same_as<std::optional<NovikovThorneFlux>>;
       { s.trace_from_scene(x) } -> std::same_as<Vec4>;
       { s.scene_from_trace(x) } -> std::same_as<Vec4>;
       { s.scene_vector(x, x) } -> std::same_as<Vec4>;

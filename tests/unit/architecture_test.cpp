@@ -24,7 +24,8 @@ namespace fs = std::filesystem;
 // the levels below.  Folders on one level must not include each other.
 const std::vector<std::vector<std::string>> engine_levels = {
     {"core"},
-    {"lua", "image", "spacetime", "light"},
+    {"light"},
+    {"lua", "image", "spacetime"},
     {"observer"},
     {"geodesic"},
     {"worldline"},
