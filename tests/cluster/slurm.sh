@@ -231,7 +231,7 @@ master_pid() {
   done
 }
 # cancel_round NAME SCRIPT HOW: HOW is scancel, or kill-master (SIGKILL to
-# the master, as an OOM killer or a dying node would, then scancel).
+# the master, as the OOM killer would; the job must end by itself).
 cancel_round() {
   local name="$1" script="$2" how="$3" s
   LOCK_LEFT=unknown  # yes or no once the job is cancelled
@@ -251,13 +251,16 @@ cancel_round() {
   if [ "$how" = kill-master ]; then
     local master
     master=$(master_pid "$JOB")
-    [ -n "$master" ] || { fail "$name: no master process (SLURM_PROCID=0) of job $JOB found"; return; }
+    [ -n "$master" ] || { fail "$name: no master process (rank 0) of job $JOB found"; return; }
     kill -KILL "$master"
-    for _ in $(seq 1 100); do kill -0 "$master" 2>/dev/null || break; sleep 0.1; done
+    # Slurm's PMIx plugin aborts the step when a task dies: no scancel.
+    s=$(wait_job "$JOB" 60)
+    [ "$s" = FAILED ] || fail "$name: after the master was killed: $s: $(cat "$name.log")"
+  else
+    scancel "$JOB"
+    s=$(wait_job "$JOB" 60)
+    [ "$s" = CANCELLED ] || fail "$name: after scancel: $s"
   fi
-  scancel "$JOB"
-  s=$(wait_job "$JOB" 60)
-  case "$s" in CANCELLED | FAILED) ;; *) fail "$name: after scancel: $s" ;; esac
   local before
   before=$(frames_done "$name")
   [ "$before" -ge 1 ] && [ "$before" -lt 10 ] || fail "$name: $before frames in the journal after the cancel"
