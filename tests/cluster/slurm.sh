@@ -57,8 +57,16 @@ teardown() {
       for _ in $(seq 1 60); do [ -z "$(squeue -h -o %i 2>/dev/null)" ] && break; sleep 0.5; done
     fi
   fi
-  # The daemons, newest first, by the PIDs they wrote: TERM, then KILL.
-  local i name pid
+  # The daemons, newest first, by the PIDs they wrote: TERM, then KILL.  A
+  # daemon started but not yet recorded (the test stopped in between) is
+  # found by its pid file, if that pid is really the daemon.
+  local i name pid pidfile
+  for pidfile in "$S/slurmd.pid" "$S/slurmctld.pid" "$M/munged.pid"; do
+    pid=$(cat "$pidfile" 2>/dev/null) || continue
+    name=$(basename "$pidfile" .pid)
+    [ "$(cat "/proc/$pid/comm" 2>/dev/null)" = "$name" ] || continue
+    [[ " ${DAEMONS[*]} " == *" $name $pid "* ]] || DAEMONS+=("$name $pid")
+  done
   for ((i = ${#DAEMONS[@]} - 1; i >= 0; i--)); do
     read -r name pid <<<"${DAEMONS[$i]}"
     kill -TERM "$pid" 2>/dev/null || continue
