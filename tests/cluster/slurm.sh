@@ -11,7 +11,10 @@
 #      frame is rendered twice, the frames are byte-identical: under srun,
 #      under mpirun, and with the master first killed by SIGKILL (it leaves
 #      its lock file, which must not block the resubmission).
-# docs/cluster.md quotes both job scripts; this test checks it still does.
+#   3. sbatch of tests/cluster/showcase-pmix.sbatch: the showcase at preview
+#      quality as one job; its videos, and its frames byte-identical to a
+#      1-thread run.
+# docs/cluster.md quotes the job scripts; this test checks it still does.
 #
 # Needs root (to start the daemons) and the packages slurmctld slurmd
 # slurm-client munge (installed here with apt-get if missing); without
@@ -297,9 +300,35 @@ cancel_round cancel_mpirun render-mpirun.sbatch scancel
 cancel_round kill render-pmix.sbatch kill-master
 [ "$LOCK_LEFT" != no ] || fail "kill: no lock file was left by the killed master, so this round tested nothing"
 
+# 3. The showcase as one job, at preview quality (a tiny size and rate, to
+# stay quick): its videos, and frames byte-identical to a 1-thread run.
+SC=(--quality preview --size 128x72 --rate 0.25 --progress 0)
+"$LIGHTCONE" showcase "${SC[@]}" --threads 1 --out showcase.ref >showcase.ref.log 2>&1 ||
+  fail "showcase (1 thread): $(cat showcase.ref.log)"
+JOBS_SUBMITTED=$((JOBS_SUBMITTED + 1))
+if JOB=$(sbatch --parsable --output="$WORK/showcase.log" "$HERE/showcase-pmix.sbatch" "$WORK/showcase" "${SC[@]}"); then
+  JOB=${JOB%%;*}
+  s=$(wait_job "$JOB" 300)
+  [ "$s" = COMPLETED ] || fail "showcase (job $JOB): $s: $(cat showcase.log 2>/dev/null)"
+  grep -q "3 ranks (a master and 2 workers)" showcase.log || fail "showcase: not a 3-rank farm: $(cat showcase.log)"
+  check_probe showcase/showcase.mp4 codec_name=h264 width=128 height=72
+  for seq in kerr_accrDisk kerr_passing dihole; do
+    [ -s "showcase/$seq.mp4" ] || fail "showcase: no $seq.mp4"
+  done
+  CHECKS=$((CHECKS + 1))
+  n=0
+  while IFS= read -r f; do
+    n=$((n + 1))
+    cmp -s "showcase.ref/frames/$f" "showcase/frames/$f" || fail "showcase: frames/$f differs from the 1-thread run"
+  done < <(cd showcase.ref/frames && find . -name '*.png' -o -name '*.exr' | sort)
+  [ "$n" -gt 50 ] || fail "showcase: only $n frame files to compare"
+else
+  fail "showcase: sbatch failed"
+fi
+
 # docs/cluster.md quotes the job scripts exactly as tested here.
 CHECKS=$((CHECKS + 1))
-python3 - "$SRC/docs/cluster.md" "$HERE/render-pmix.sbatch" "$HERE/render-mpirun.sbatch" <<'PY' || fail "docs/cluster.md does not quote the job scripts as tested"
+python3 - "$SRC/docs/cluster.md" "$HERE/render-pmix.sbatch" "$HERE/render-mpirun.sbatch" "$HERE/showcase-pmix.sbatch" <<'PY' || fail "docs/cluster.md does not quote the job scripts as tested"
 import sys
 doc = open(sys.argv[1]).read()
 for f in sys.argv[2:]:
