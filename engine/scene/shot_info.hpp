@@ -13,6 +13,7 @@
 
 #include "core/constants.hpp"
 #include "core/fields.hpp"
+#include "image/display.hpp"
 
 namespace lc {
 
@@ -22,6 +23,8 @@ struct ShotInfo {
   double fps = 30.0;
   int width = 640, height = 360;
   int supersample = 1;
+  double exposure = 0.0;
+  int filmic = 0;
 
   static constexpr auto fields = std::tuple{
       field("name", &ShotInfo::name, std::optional<std::string>{}, std::nullopt, std::nullopt,
@@ -34,6 +37,12 @@ struct ShotInfo {
       field("height", &ShotInfo::height, std::optional<int>{}, at_least(1), at_most(16384), "image height", "pixels"),
       field("supersample", &ShotInfo::supersample, std::optional<int>{1}, at_least(1), at_most(16),
             "N x N samples per pixel (the paper: 2)"),
+      field("exposure", &ShotInfo::exposure, std::optional<double>{0.0}, at_least(-20.0), at_most(20.0),
+            "the PNG and the video show the light times 2^exposure (the EXR keeps it as traced; docs/light.md)",
+            "stops"),
+      field("filmic", &ShotInfo::filmic, std::optional<int>{0}, at_least(0), at_most(1),
+            "the PNG's and the video's tone curve: 0, light above 1 shows as 1 (the paper's look); 1, highlights roll "
+            "off along a film-like curve (for a glowing disk; docs/light.md)"),
   };
 
   // What the fields' ranges cannot say: the name must make file names.
@@ -46,6 +55,11 @@ struct ShotInfo {
       if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
         throw std::invalid_argument(
             fmt::format("name '{}' may only use letters, digits, '_' and '-' (it names the output files)", name));
+  }
+
+  // What the PNG and the video show of the frame's linear light.
+  DisplayTransform display() const {
+    return {exposure, filmic ? ToneCurve::filmic : ToneCurve::clip};
   }
 };
 

@@ -104,9 +104,10 @@ void FrameStore::note_inputs(const std::map<std::string, std::string>& files) {
 
 void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata,
                              const FrameSettings& settings, const std::string& inputs, const InputParts& parts,
-                             long rays) {
+                             long rays, const DisplayTransform& display) {
   with_space_hint(dir_, [&] {
-    write_frame_files(frame_path(dir_, shot_, frame, "exr"), frame_path(dir_, shot_, frame, "png"), image, metadata);
+    write_frame_files(frame_path(dir_, shot_, frame, "exr"), frame_path(dir_, shot_, frame, "png"), image, metadata,
+                      display);
   });
   JournalFrame jf;
   jf.frame = frame;
@@ -151,13 +152,14 @@ void fill_missing_rows(FrameImage& image, const std::vector<int>& rendered) {
   }
 }
 
-void FrameStore::write_preview(int frame, FrameImage image, const std::vector<int>& rendered) {
+void FrameStore::write_preview(int frame, FrameImage image, const std::vector<int>& rendered,
+                               const DisplayTransform& display) {
   fill_missing_rows(image, rendered);
   const fs::path dir = preview_dir();
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw std::runtime_error(fmt::format("cannot create {}: {}", dir.string(), ec.message()));
-  with_space_hint(dir, [&] { write_png_file(frame_path(dir, shot_, frame, "png"), image); });
+  with_space_hint(dir, [&] { write_png_file(frame_path(dir, shot_, frame, "png"), image, display); });
 }
 
 }  // namespace lc::farm

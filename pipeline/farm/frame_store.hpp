@@ -22,6 +22,7 @@
 
 #include "farm/dir_lock.hpp"
 #include "farm/journal.hpp"
+#include "image/display.hpp"
 #include "image/image.hpp"
 
 namespace lc::farm {
@@ -56,13 +57,14 @@ class FrameStore {
   // durable, then appends its journal line.  Throws std::runtime_error
   // naming the file (a full disk, a vanished directory).  Thread-safe for
   // different frames (the journal appends are serialised).
+  // The PNG shows the image through `display`.
   void write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata, const FrameSettings& settings,
-                   const std::string& inputs, const InputParts& parts, long rays);
+                   const std::string& inputs, const InputParts& parts, long rays, const DisplayTransform& display);
 
   // Writes DIR/preview/<shot>.<NNNN>.png atomically from a frame of which
   // only `rendered` rows are filled: every other row is copied from the
   // nearest rendered row (the upper one on a tie).
-  void write_preview(int frame, FrameImage image, const std::vector<int>& rendered);
+  void write_preview(int frame, FrameImage image, const std::vector<int>& rendered, const DisplayTransform& display);
 
   std::filesystem::path preview_dir() const { return dir_ / "preview"; }
 

@@ -11,11 +11,12 @@ FrameSettings frame_settings(const RenderSettings& rs) {
 
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
                      std::vector<int> preview_rows)
-    : store_(store), survey_(survey), shot_name_(shot.name), fps_(shot.fps), rs_(rs), preview_rows_(std::move(preview_rows)) {}
+    : store_(store), survey_(survey), shot_name_(shot.name), fps_(shot.fps), display_(shot.display()), rs_(rs),
+      preview_rows_(std::move(preview_rows)) {}
 
 void StoreSink::store(const CompletedFrame& cf) {
   if (cf.pass == Pass::preview) {
-    store_.write_preview(cf.frame, cf.image, preview_rows_);
+    store_.write_preview(cf.frame, cf.image, preview_rows_, display_);
     return;
   }
   const FrameFacts& facts = survey_.frames.at(cf.frame);
@@ -27,7 +28,8 @@ void StoreSink::store(const CompletedFrame& cf) {
                                   {"lightcone/spacetime", facts.spacetime},
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};
-  store_.write_frame(cf.frame, cf.image, metadata, frame_settings(rs_), facts.inputs, facts.parts, cf.stats.rays);
+  store_.write_frame(cf.frame, cf.image, metadata, frame_settings(rs_), facts.inputs, facts.parts, cf.stats.rays,
+                     display_);
 }
 
 }  // namespace lc::farm

@@ -21,6 +21,7 @@ class StoreSink final : public FrameSink {
   const ShotSurvey& survey_;
   std::string shot_name_;
   double fps_;
+  DisplayTransform display_;  // the shot's, for the PNGs
   RenderSettings rs_;
   std::vector<int> preview_rows_;
 };

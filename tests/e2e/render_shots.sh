@@ -27,6 +27,56 @@ echo "$gstats" | grep -q "NanCount: 0" || fail "hit.g has NaNs: $gstats"
 iinfo -v frames/kerr_disk.0000.exr | grep -q "48 x   32\|48 x 32" || fail "EXR size: $(iinfo frames/kerr_disk.0000.exr)"
 iinfo -v frames/kerr_disk.0000.exr | grep -q "compression: \"zip\"" || fail "EXR not zip-compressed"
 
+# The shot's exposure and tone curve change the PNG only: the EXR keeps the
+# light as traced (docs/light.md).  One stop down halves the linear values
+# (sRGB codes compared after decoding, to within their rounding).
+sed 's/supersample = 1,/supersample = 1, exposure = -1, filmic = 1,/' "$SRC/shots/bench/kerr_disk.lua" >dim.lua
+grep -q "exposure = -1" dim.lua || fail "could not make the dimmed shot"
+"$LIGHTCONE" render dim.lua --out dim --size 48x32 --layers 2>dim.log || fail "render dimmed: $(cat dim.log)"
+idiff -a frames/kerr_disk.0000.exr dim/kerr_disk.0000.exr >dim.idiff 2>&1 || fail "exposure changed the EXR: $(cat dim.idiff)"
+python3 - frames/kerr_disk.0000.png dim/kerr_disk.0000.png <<'PY' || fail "exposure/filmic: the PNG is not the EXR's light through the curve"
+import struct, sys, zlib
+def pixels(path):
+    data = open(path, "rb").read()
+    pos, idat, w = 8, b"", 0
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        if kind == b"IHDR": w, h, depth, ctype = struct.unpack(">IIBB", data[pos + 8:pos + 18])
+        if kind == b"IDAT": idat += data[pos + 8:pos + 8 + n]
+        pos += 12 + n
+    raw, out, prev, stride = zlib.decompress(idat), [], bytearray(3 * w), 3 * w
+    for y in range(len(raw) // (stride + 1)):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - 3] if i >= 3 else 0
+            b, c = prev[i], prev[i - 3] if i >= 3 else 0
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        out += line; prev = line
+    return out
+lin = lambda s: s / 12.92 if s <= 0.04045 else ((s + 0.055) / 1.055) ** 2.4
+aces = lambda x: min(1.0, x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14))
+full, dim = pixels(sys.argv[1]), pixels(sys.argv[2])
+worst = 0.0
+for a, b in zip(full, dim):
+    if a == 255: continue  # clipped in the plain PNG: its light is unknown
+    want = aces(0.5 * lin(a / 255))
+    worst = max(worst, abs(lin(b / 255) - want) / max(want, 0.02))
+sys.exit(0 if worst < 0.05 else 1)
+PY
+
+# The shipped glowing-disk shot renders, its disk blueshifted on one side
+# and redshifted on the other (hit.g above and below 1).
+"$LIGHTCONE" render "$SRC/shots/glowing_disk.lua" --out glow --size 64x36 --layers 2>glow.log ||
+  fail "render glowing_disk: $(cat glow.log)"
+gl=$(oiiotool glow/glowing_disk.0000.exr --ch hit.g --printstats 2>&1)
+gmax=$(echo "$gl" | sed -n 's/.*Stats Max: \([0-9.]*\).*/\1/p')
+awk -v m="$gmax" 'BEGIN { exit !(m > 1.1) }' || fail "glowing_disk: no blueshifted pixel: $gl"
+
 # One thread and two threads give the same pixels.
 "$LIGHTCONE" render "$SRC/shots/bench/kerr_disk.lua" --out frames1 --size 48x32 --layers --threads 1 2>/dev/null
 idiff -a frames/kerr_disk.0000.exr frames1/kerr_disk.0000.exr >idiff.log 2>&1 || fail "1 vs 2 threads differ: $(cat idiff.log)"

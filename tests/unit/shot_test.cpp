@@ -94,4 +94,22 @@ TEST(Shot, ObjectsAndNamesAreBounded) {
             named.string() + ": name has 1000000 characters, at most 128 are allowed (it names the output files)");
 }
 
+TEST(Shot, ExposureAndToneReachTheDisplayTransform) {
+  ScratchDir dir;
+  const auto shot_with = [&](const std::string& fields) {
+    return write_shot(dir, "display.lua",
+                      "return {name = 'shot', frames = 1, width = 8, height = 8, " + fields +
+                          "\n  frame = function(i) return {} end}\n");
+  };
+  const lc::Shot plain(shot_with(""));
+  EXPECT_TRUE(plain.info().display().identity());
+  const lc::Shot filmic(shot_with("exposure = -1.5, filmic = 1,"));
+  EXPECT_EQ(filmic.info().display().exposure, -1.5);
+  EXPECT_EQ(filmic.info().display().curve, lc::ToneCurve::filmic);
+  const fs::path bad = shot_with("filmic = 2,");
+  EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot shot(bad); }).find("filmic"), std::string::npos);
+  const fs::path far = shot_with("exposure = 40,");
+  EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot shot(far); }).find("exposure"), std::string::npos);
+}
+
 }  // namespace
