@@ -42,8 +42,10 @@ fi
 
 # --- Bring the cluster up --------------------------------------------------
 S="$WORK/slurm"  # config, state, spool, logs, pid files
-M="$WORK/munge"  # munged's socket, pid, seed and log (owned by munge)
-mkdir -p "$S/state" "$S/spool" "$M"
+# munged's socket, pid, seed and log (owned by munge).  Not under $WORK:
+# munged runs as the munge user, who cannot reach a checkout under /root.
+M=$(mktemp -d /tmp/lightcone-munge.XXXXXX)
+mkdir -p "$S/state" "$S/spool"
 chown munge:munge "$M"
 chmod 755 "$M"  # munged wants the socket's directory open to all (execute)
 DAEMONS=()  # "name pid" of each daemon this test started
@@ -79,6 +81,7 @@ teardown() {
       kill -KILL "$pid" 2>/dev/null
     fi
   done
+  rm -rf "$M"
   exit "$rc"
 }
 trap teardown EXIT
