@@ -40,6 +40,13 @@ if ! have_all; then
   have_all || skip "still missing after apt-get: one of ${need[*]}"
 fi
 
+# slurmd (Slurm 22.05) initialises its cgroup plugin whatever the
+# configuration and stops without a cgroup filesystem: a chroot whose /sys
+# is bound without its submounts (a fresh-root check's, say)
+# has none.  Every booted Debian 12 has one.
+mountpoint -q /sys/fs/cgroup ||
+  skip "slurmd needs the cgroup filesystem at /sys/fs/cgroup, which is not mounted here (a chroot?)"
+
 # --- Bring the cluster up --------------------------------------------------
 S="$WORK/slurm"  # config, state, spool, logs, pid files
 # munged's socket, pid, seed and log (owned by munge).  Not under $WORK:
@@ -123,7 +130,7 @@ NODE=$(slurmd -C | head -1)  # NodeName=host CPUs=... RealMemory=...
 NODENAME=$(sed 's/^NodeName=\([^ ]*\).*/\1/' <<<"$NODE")
 cat >"$SLURM_CONF" <<EOF
 ClusterName=lightcone-test
-SlurmctldHost=$NODENAME
+SlurmctldHost=$NODENAME(127.0.0.1)
 SlurmctldPort=$PORT
 SlurmdPort=$((PORT + 1))
 SlurmUser=root
@@ -148,7 +155,7 @@ MpiDefault=none
 MailProg=/bin/true
 ReturnToService=2
 KillWait=5
-$NODE State=UNKNOWN
+$NODE NodeAddr=127.0.0.1 State=UNKNOWN
 PartitionName=test Nodes=$NODENAME Default=YES MaxTime=INFINITE State=UP
 EOF
 : >"$S/plugstack.conf"
