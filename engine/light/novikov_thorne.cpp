@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
+#include "core/kerr_isco.hpp"
 
 namespace lc {
 
@@ -18,9 +19,7 @@ NovikovThorneFlux::NovikovThorneFlux(double mass, double spin) : M_(mass) {
         "limit for accreting holes is 0.998 M), got spin {} for mass {}",
         spin, mass));
   a_ = std::abs(spin) / mass;
-  const double z1 = 1.0 + std::cbrt(1.0 - a_ * a_) * (std::cbrt(1.0 + a_) + std::cbrt(1.0 - a_));
-  const double z2 = std::sqrt(3.0 * a_ * a_ + z1 * z1);
-  r_isco_ = M_ * (3.0 + z2 - std::sqrt((3.0 - z1) * (3.0 + z1 + 2.0 * z2)));
+  r_isco_ = kerr_isco_radius(mass, spin);
   x0_ = std::sqrt(r_isco_ / M_);
   const double third = std::acos(a_) / 3.0;
   x_[0] = 2.0 * std::cos(third - pi / 3.0);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
+#include "core/kerr_isco.hpp"
 
 namespace lc {
 
@@ -95,13 +96,7 @@ Mat4Derivs Kerr::metric_derivatives(const Vec4& x) const {
   return d;
 }
 
-double Kerr::isco_radius() const {
-  if (!(M_ > 0.0)) return 0.0;
-  const double chi = std::min(std::abs(a_) / M_, 1.0);
-  const double z1 = 1.0 + std::cbrt(1.0 - chi * chi) * (std::cbrt(1.0 + chi) + std::cbrt(1.0 - chi));
-  const double z2 = std::sqrt(3.0 * chi * chi + z1 * z1);
-  return M_ * (3.0 + z2 - std::sqrt((3.0 - z1) * (3.0 + z1 + 2.0 * z2)));
-}
+double Kerr::isco_radius() const { return kerr_isco_radius(M_, a_); }
 
 Vec4 Kerr::disk_velocity_bl(double r) const {
   if (!(M_ > 0.0)) return {1.0, 0.0, 0.0, 0.0};
