@@ -270,18 +270,26 @@ TEST(GlowingDisk, TheApproachingSideIsBrighterAndFlipsWithTheSpin) {
 }
 
 TEST(GlowingDisk, NeedsAKerrHole) {
-  SceneSpec fs;
-  fs.spacetime = Dihole(0.4, 0.4, 1.0);
-  fs.observer.position = {0, 0, 30, 0};
-  Disk::Params d{2, 20, 4, 12};
-  d.temperature = 8000;
-  fs.objects.push_back(d);
-  ShotResources res;
-  try {
-    build_scene(fs, 4, 4, res);
-    ADD_FAILURE() << "a glowing disk around a dihole was built";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("needs a Kerr hole"), std::string::npos) << e.what();
+  // Around a dihole, and around an extremal Kerr hole (its disk's inner
+  // edge would be on the horizon): a clear error, no scene.
+  SceneSpec di;
+  di.spacetime = Dihole(0.4, 0.4, 1.0);
+  di.observer.position = {0, 0, 30, 0};
+  SceneSpec extremal;
+  extremal.spacetime = Kerr(1, 1);
+  extremal.observer.position = {0, 30, 80 * degree, 0};
+  for (SceneSpec fs : {di, extremal}) {
+    Disk::Params d{2, 20, 4, 12};
+    d.temperature = 8000;
+    fs.objects.push_back(d);
+    ShotResources res;
+    try {
+      build_scene(fs, 4, 4, res);
+      ADD_FAILURE() << "a glowing disk was built around " << describe(fs.spacetime);
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("needs a Kerr hole with mass > 0 and |spin| < mass"), std::string::npos)
+          << e.what();
+    }
   }
 }
 
