@@ -77,6 +77,13 @@ std::shared_ptr<const BlackbodyColors> ShotResources::blackbody_colors(double re
   });
 }
 
+std::shared_ptr<const SpectralShift> ShotResources::spectral_shift() {
+  return get<SpectralShift>("spectral shift", "texture spectra", [] {
+    auto s = std::make_shared<const SpectralShift>();
+    return std::pair{s, s->bytes()};
+  });
+}
+
 std::vector<std::filesystem::path> ShotResources::files() const {
   std::lock_guard lock(mutex_);
   return {files_.begin(), files_.end()};

@@ -15,6 +15,7 @@
 #include "core/constants.hpp"
 #include "image/texture.hpp"
 #include "light/blackbody.hpp"
+#include "light/spectral_shift.hpp"
 #include "worldline/worldline.hpp"
 
 namespace lc {
@@ -37,6 +38,9 @@ class ShotResources {
   // Blackbody colours with luminance 1 at `reference` K, made once per
   // reference (a table of ~50 KB that takes ~10 ms to make).
   std::shared_ptr<const BlackbodyColors> blackbody_colors(double reference);
+  // The spectra textures are seen shifted through (a table of ~40 KB that
+  // takes ~30 ms to make).
+  std::shared_ptr<const SpectralShift> spectral_shift();
   // Every file loaded (textures), for hashing a shot's inputs.
   std::vector<std::filesystem::path> files() const;
   // Bytes held now.

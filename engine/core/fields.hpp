@@ -32,8 +32,28 @@ inline constexpr Bound above(double v) { return {v, false}; }
 inline constexpr Bound at_most(double v) { return {v, true}; }
 inline constexpr Bound below(double v) { return {v, false}; }
 
-// One field of Owner, of type T (double, int, std::uint32_t or a Color of
-// three floats; textual fields are read by hand).  fallback: the default,
+// A field that takes one of a few named values: a scoped enum E for which
+// choice_names(E{}) (found by argument-dependent lookup) gives the names in
+// the enumerators' order, 0, 1, ...: the shot writes the name.
+template <class E>
+concept Choice = std::is_enum_v<E> && requires { choice_names(E{}); };
+
+template <Choice E>
+constexpr std::string_view choice_name(E e) {
+  return choice_names(e)[static_cast<std::size_t>(e)];
+}
+// "a, b or c".
+template <Choice E>
+std::string choices_text() {
+  const auto names = choice_names(E{});
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += fmt::format("{}{}", i == 0 ? "" : i + 1 == names.size() ? " or " : ", ", names[i]);
+  return out;
+}
+
+// One field of Owner, of type T (double, int, std::uint32_t, a string, a
+// Palette of two colours or a Choice).  fallback: the default,
 // nullopt when the field is required.  lo, hi: the allowed range (for
 // numbers).
 template <class Owner, class T>
@@ -112,6 +132,10 @@ inline std::string field_text(const std::string& v, bool) {
     out += c;
   }
   return out + "\"";
+}
+template <Choice E>
+std::string field_text(E e, bool exact) {
+  return exact ? std::string(choice_name(e)) : field_text(std::string(choice_name(e)), false);
 }
 inline std::string field_text(const Palette& p, bool exact) {
   auto colour = [exact](const Color& c) {

@@ -12,20 +12,6 @@ namespace lc {
 
 namespace {
 
-// One lobe of the fit: a Gaussian with different widths left and right of
-// its centre (nm).
-double lobe(double nm, double centre, double left, double right) {
-  const double s = (nm - centre) / (nm < centre ? left : right);
-  return std::exp(-0.5 * s * s);
-}
-// CIE 1931 2° matching functions, Wyman, Sloan & Shirley (2013), eq. 2.
-double x_bar(double nm) {
-  return 1.056 * lobe(nm, 599.8, 37.9, 31.0) + 0.362 * lobe(nm, 442.0, 16.0, 26.7) -
-         0.065 * lobe(nm, 501.1, 20.4, 26.2);
-}
-double y_bar(double nm) { return 0.821 * lobe(nm, 568.8, 46.9, 40.5) + 0.286 * lobe(nm, 530.9, 16.3, 31.1); }
-double z_bar(double nm) { return 1.217 * lobe(nm, 437.0, 11.8, 36.0) + 0.681 * lobe(nm, 459.0, 26.0, 13.8); }
-
 constexpr double table_lo = 100.0, table_hi = 1e7;  // K
 constexpr int table_size = 2048;
 
@@ -39,19 +25,12 @@ XYZ blackbody_xyz(double kelvin) {
   for (int nm = 360; nm <= 830; ++nm) {
     const double l = nm * 1e-9;
     const double b = c1 / (l * l * l * l * l) / std::expm1(c2 / (l * kelvin)) * 1e-9;  // per nm
-    out.X += b * x_bar(nm);
-    out.Y += b * y_bar(nm);
-    out.Z += b * z_bar(nm);
+    const XYZ m = cie_1931(nm);
+    out.X += b * m.X;
+    out.Y += b * m.Y;
+    out.Z += b * m.Z;
   }
   return out;
-}
-
-Color linear_srgb(const XYZ& c) {
-  const double r = 3.2406 * c.X - 1.5372 * c.Y - 0.4986 * c.Z;
-  const double g = -0.9689 * c.X + 1.8758 * c.Y + 0.0415 * c.Z;
-  const double b = 0.0557 * c.X - 0.2040 * c.Y + 1.0570 * c.Z;
-  return {static_cast<float>(std::max(r, 0.0)), static_cast<float>(std::max(g, 0.0)),
-          static_cast<float>(std::max(b, 0.0))};
 }
 
 BlackbodyColors::BlackbodyColors(double reference)

@@ -1,26 +1,18 @@
 #pragma once
 // The colour of blackbody light: Planck's spectrum at temperature T through
-// the CIE 1931 2° colour-matching functions, as linear sRGB (D65, Rec. 709
-// primaries).  The matching functions are Wyman, Sloan & Shirley's
-// multi-lobe fit (JCGT 2(2), 2013: within ~1% of the CIE table), so no
-// table of them is shipped; the XYZ -> linear sRGB matrix is IEC 61966-2-1's.
+// the CIE 1931 2° colour-matching functions, as linear sRGB (light/cie.hpp).
 
 #include <cstddef>
 #include <vector>
 
 #include "core/color.hpp"
+#include "light/cie.hpp"
 
 namespace lc {
 
 // CIE XYZ of the spectral radiance B_lambda(T) (W sr^-1 m^-3), integrated
 // over 360-830 nm at 1 nm.  Exact to the fit; costs ~1,400 exponentials.
-struct XYZ {
-  double X, Y, Z;
-};
 XYZ blackbody_xyz(double kelvin);
-
-// Linear sRGB of an XYZ; components out of the gamut (negative) become 0.
-Color linear_srgb(const XYZ& c);
 
 // blackbody_xyz(T) as linear sRGB scaled so that T = reference has
 // luminance 1, from a table in log T (100 K to 1e7 K, interpolated:

@@ -20,6 +20,7 @@
 #include "core/fields.hpp"
 #include "core/hit_kind.hpp"
 #include "light/blackbody.hpp"
+#include "light/light.hpp"
 #include "light/novikov_thorne.hpp"
 #include "objects/step_test.hpp"
 #include "spacetime/chart.hpp"
@@ -49,9 +50,9 @@ class Disk {
         field("colors", &Params::colors, std::optional<Palette>{Palette{{1.0f, 0.55f, 0.15f}, {0.35f, 0.12f, 0.03f}}},
               std::nullopt, std::nullopt, "the two colours {{r, g, b}, {r, g, b}}, linear RGB"),
         field("temperature", &Params::temperature, std::optional<double>{0.0}, at_least(0.0), at_most(1e9),
-              "0: the checker as it is (the paper's look); above 0: a Novikov–Thorne disk (Kerr only) glowing as a "
-              "blackbody whose hottest ring has this temperature, seen through the frequency shift g (colour and "
-              "beaming; docs/light.md); that ring, seen unshifted, has luminance 1",
+              "0: the checker; above 0: a Novikov–Thorne disk (Kerr only) glowing as a blackbody whose hottest ring "
+              "has this temperature, seen as lc.light{...} says (model = \"shifted\": through the frequency shift g; "
+              "docs/light.md); that ring, seen unshifted, has luminance 1",
               "K"),
         field("color_correction", &Params::color_correction, std::optional<double>{1.0}, at_least(1.0), at_most(10.0),
               "a glowing disk's colour-correction factor f: each ring shines as a blackbody at f T diluted by "
@@ -80,14 +81,21 @@ class Disk {
   bool covers(double r) const { return r >= p_.inner && r <= p_.outer; }
 
   // Colour at the chart's (r, phi), r in [inner, outer], phi in [0, 2 pi),
-  // of light seen shifted by g: a glowing disk's ring at its temperature
-  // seen at g f T (I_nu / nu^3 is invariant, so a blackbody stays one), else
-  // the checker.
-  Color color(double r, double phi, double g) const {
-    if (colors_) return (*colors_)(g * p_.color_correction * ring_temperature(r));
+  // seen as `shift` says: a glowing disk's ring at temperature T seen
+  // shifted by g is a blackbody at g f T (I_nu / nu^3 is invariant, so a
+  // blackbody stays one); else the checker.
+  Color color(double r, double phi, const SeenShift& shift) const {
+    if (colors_) {
+      Color c = (*colors_)(shift.color * p_.color_correction * ring_temperature(r));
+      if (shift.beaming != shift.color) {
+        const float k = shift.extra_beaming();
+        for (float& v : c) v *= k;
+      }
+      return c;
+    }
     const long ring = static_cast<long>(std::floor((r - p_.inner) / (p_.outer - p_.inner) * p_.rings));
     const long sector = static_cast<long>(std::floor(phi / two_pi * p_.sectors));
-    return checker(ring, sector, p_.colors);
+    return shift.texture(checker(ring, sector, p_.colors));
   }
 
   // Where the test's step crosses the plane within the disk, if before the
@@ -105,10 +113,10 @@ class Disk {
   }
 
   template <class S>
-  Color color_at(const S& st, const RayState& y, double g) const {
+  Color color_at(const S& st, const RayState& y, const SeenShift& shift) const {
     double time, r, phi;
     scene_polar(st, {y[0], y[1], y[2], y[3]}, time, r, phi);
-    return color(r, phi, g);
+    return color(r, phi, shift);
   }
 
   // Its matter's 4-velocity at the trace event y: the spacetime's thin-disk

@@ -31,8 +31,8 @@ namespace lc {
 // frame's observer event), how far from the origin it reaches (for the
 // free-flight radius), the first hit within a step (before the earliest
 // found so far; objects/step_test.hpp), the 4-velocity of its matter where
-// a ray meets it (trace chart; for hit.g) and the colour there of light
-// seen shifted by g.
+// a ray meets it (trace chart; for hit.g) and the colour there seen as the
+// light model says (light/light.hpp).
 template <class O, class S>
 concept ObjectKind = requires(const O& o, const typename O::Params& p, const S& st, ShotResources& res, const Vec4& x,
                               StepTest& t, const RayState& y, std::size_t index) {
@@ -43,7 +43,7 @@ concept ObjectKind = requires(const O& o, const typename O::Params& p, const S& 
   O(p, st, res, x);
   { o.reach(1.0) } -> std::same_as<double>;
   { o.first_hit(st, t, index) } -> std::same_as<std::optional<double>>;
-  { o.color_at(st, y, 1.0) } -> std::same_as<Color>;
+  { o.color_at(st, y, SeenShift{}) } -> std::same_as<Color>;
   { o.emitter_velocity(st, y) } -> std::same_as<Vec4>;
 };
 

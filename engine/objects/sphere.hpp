@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "core/color.hpp"
+#include "light/light.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "core/hit_kind.hpp"
@@ -125,16 +126,16 @@ class Sphere : public SphereBody {
     return std::nullopt;
   }
 
-  // Colour where the ray meets it (the trace event y): checker in its own
-  // polar angles, pole along the frame's third leg, as it is whatever the
-  // light's shift g.
+  // Colour where the ray meets it (the trace event y), seen as `shift`
+  // says: checker in its own polar angles, pole along the frame's third leg.
   template <class S>
-  Color color_at(const S& st, const RayState& y, double) const {
+  Color color_at(const S& st, const RayState& y, const SeenShift& shift) const {
     const Vec3 xi = detail::sphere_local(st, *this, {y[0], y[1], y[2], y[3]});
     const double th = std::acos(std::clamp(xi[2] / norm3(xi), -1.0, 1.0));
     double ph = std::atan2(xi[1], xi[0]);
     if (ph < 0) ph += two_pi;
-    return checker(static_cast<long>(th / pi * p_.rows), static_cast<long>(ph / two_pi * p_.columns), p_.colors);
+    return shift.texture(
+        checker(static_cast<long>(th / pi * p_.rows), static_cast<long>(ph / two_pi * p_.columns), p_.colors));
   }
 
   // Its matter's 4-velocity where the ray meets it (the trace event y): the

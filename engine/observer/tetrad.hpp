@@ -4,6 +4,7 @@
 // frames are ordered (e_t, e_r, e_theta, e_phi); a camera "looking at the hole"
 // uses forward = -e_r, up = -e_theta, right = e_phi (docs/architecture.md, "Conventions").
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -50,19 +51,30 @@ Tetrad static_polar_tetrad(const S& st, const Vec4& scene_point) {
   return orthonormalize(g, st.polar_basis(scene_point), "static observer");
 }
 
-// Zero-angular-momentum observer: 4-velocity along -grad t (scene time), so it
-// exists everywhere outside the horizon, ergoregion included.
+// The zero-angular-momentum observer's 4-velocity at the trace event x,
+// outside any horizon: along -grad t (scene time), normalised, so it exists
+// everywhere outside the horizon, ergoregion included; in a static
+// spacetime it is the static observer.
 template <class S>
-Tetrad zamo_polar_tetrad(const S& st, const Vec4& scene_point) {
-  const Vec4 x = st.trace_from_scene(scene_point);
-  if (st.inside_horizon(x)) throw ObserverError("ZAMO: the position is inside a horizon");
+Vec4 zamo_velocity(const S& st, const Vec4& x) {
   const Mat4 gi = st.inverse_metric(x);
   const Vec4 dt = st.scene_time_gradient(x);
   Vec4 u{};
   for (int m = 0; m < 4; ++m)
     for (int n = 0; n < 4; ++n) u[m] -= gi[m][n] * dt[n];
+  // u.u = g^{mn} t_m t_n = -u^m t_m
+  const double norm = std::sqrt(u[0] * dt[0] + u[1] * dt[1] + u[2] * dt[2] + u[3] * dt[3]);
+  for (double& c : u) c /= norm;
+  return u;
+}
+
+// Zero-angular-momentum observer's frame (zamo_velocity).
+template <class S>
+Tetrad zamo_polar_tetrad(const S& st, const Vec4& scene_point) {
+  const Vec4 x = st.trace_from_scene(scene_point);
+  if (st.inside_horizon(x)) throw ObserverError("ZAMO: the position is inside a horizon");
   auto basis = st.polar_basis(scene_point);
-  basis[0] = u;
+  basis[0] = zamo_velocity(st, x);
   return orthonormalize(st.metric(x), basis, "ZAMO");
 }
 

@@ -15,6 +15,7 @@
 #include "geodesic/crossing.hpp"
 #include "spacetime/weak_field_tail.hpp"
 #include "observer/ray_direction.hpp"
+#include "observer/tetrad.hpp"
 #include "render/hit.hpp"
 #include "render/scene.hpp"
 #include "spacetime/chart.hpp"
@@ -100,7 +101,7 @@ class HamiltonianRay {
     for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
       if (index == winner) {
         const double g = frequency_ratio(y, o.emitter_velocity(st, y));
-        hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y, g), g, y, t.best(), res);
+        hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y, seen(g, y)), g, y, t.best(), res);
       }
     });
     return true;
@@ -127,6 +128,8 @@ class HamiltonianRay {
     if (res.reason != StopReason::escaped) return out_;  // gave up: black, kind 4
     sky_sample(sc_, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out_);
     out_.g = 1.0 / res.y[4];  // the source at rest far away: p.u = p_t
+    // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
+    out_.color = sc_.light.seen(out_.g, observer_reference() * out_.g).texture(out_.color);
     return out_;
   }
 
@@ -135,6 +138,19 @@ class HamiltonianRay {
   // there) from matter of 4-velocity u.
   static double frequency_ratio(const RayState& y, const Vec4& u) {
     return 1.0 / (y[4] * u[0] + y[5] * u[1] + y[6] * u[2] + y[7] * u[3]);
+  }
+  // p.u_ref at the observer, where the light model splits g (light/light.hpp).
+  double observer_reference() const {
+    if (!sc_.light.splits()) return 1.0;
+    const Vec4& u = sc_.reference_observer;
+    return p0_[0] * u[0] + p0_[1] * u[1] + p0_[2] * u[2] + p0_[3] * u[3];
+  }
+  // How light of ratio g from the event y is seen: g_grav = D(u_ref,obs) /
+  // D(u_ref,em), the ZAMOs' at the two ends.
+  SeenShift seen(double g, const RayState& y) const {
+    if (!sc_.light.splits()) return sc_.light.seen(g, g);
+    const Vec4 x = {y[0], y[1], y[2], y[3]};
+    return sc_.light.seen(g, observer_reference() * frequency_ratio(y, zamo_velocity(sc_.spacetime, x)));
   }
   // Ends the ray at the event y (affine parameter lambda) on an object.
   bool hit(HitKind kind, const Color& color, double g, const RayState& y, double lambda, RayResult& res) {

@@ -46,7 +46,7 @@ class MinoRay {
   MinoRay(const SceneIn<Kerr>& sc, const Mat4& observer_jacobian, const Vec3& n, OnStep& on_step)
       : sc_(sc), on_step_(on_step), start_(make_start(sc, observer_jacobian, n)), clock_(start_.k, start_.y0[1]),
         u_escape_(1.0 / sc.rays.escape_radius), u_capture_(capture_radius() > 0.0 ? 1.0 / capture_radius() : 1e300),
-        at_escape_{start_.y0, start_.y0[0]} {}
+        at_escape_{start_.y0, start_.y0[0]}, observer_reference_(observer_reference(sc, n)) {}
 
   // What run_rays starts the ray with.
   const KerrMinoConstants& constants() const { return start_.k; }
@@ -77,7 +77,7 @@ class MinoRay {
         if (disk.covers(out_.r)) {
           out_.kind = Disk::hit_kind;
           out_.g = disk_frequency_ratio(e);
-          out_.color = disk.color(out_.r, out_.phi, out_.g);
+          out_.color = disk.color(out_.r, out_.phi, seen_from_disk(e, out_.g));
           res.reason = StopReason::hit;
           res.y = e.y;
           res.lambda = lz;
@@ -133,8 +133,9 @@ class MinoRay {
     const double theta = std::acos(std::clamp(direction_[2] / n2, -1.0, 1.0));
     double sphi = std::atan2(direction_[1], direction_[0]);
     if (sphi < 0) sphi += two_pi;
-    out_.color = sc_.sky.color(theta, sphi);
     out_.g = -1.0 / start_.k.E;  // the source at rest far away: p.u = p_t = -E
+    // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
+    out_.color = sc_.light.seen(out_.g, observer_reference_ * out_.g).texture(sc_.sky.color(theta, sphi));
     return out_;
   }
 
@@ -196,6 +197,27 @@ class MinoRay {
       for (int nu = 0; nu < 4; ++nu) pk[mu] += p[nu] * Ji[nu][mu];
     return RayState{x[0], x[1], x[2], x[3], pk[0], pk[1], pk[2], pk[3]};
   }
+  // p.u_ref at the observer, where the light model splits g
+  // (light/light.hpp).
+  static double observer_reference(const SceneIn<Kerr>& sc, const Vec3& n) {
+    if (!sc.light.splits()) return 1.0;
+    const Vec4 p = backward_ray_momentum(sc.metric, sc.frame, n);
+    const Vec4& u = sc.reference_observer;
+    return p[0] * u[0] + p[1] * u[1] + p[2] * u[2] + p[3] * u[3];
+  }
+  // How light of ratio g from the disk at e is seen: g_grav = D(u_ref,obs) /
+  // D(u_ref,em), the ZAMO at e in Boyer–Lindquist, u^mu = -g^{mu t} /
+  // sqrt(-g^{tt}).
+  SeenShift seen_from_disk(const Event& e, double g) const {
+    if (!sc_.light.splits()) return sc_.light.seen(g, g);
+    Vec4 s, p;
+    kerr_mino_event(start_.k, e.y, s, p);
+    const Mat4 m = sc_.spacetime.bl_metric(s);
+    const double det = m[0][0] * m[3][3] - m[0][3] * m[0][3];
+    const double gtt = m[3][3] / det, gtp = -m[0][3] / det;
+    const double d_ref = -(p[0] * gtt + p[3] * gtp) / std::sqrt(-gtt);
+    return sc_.light.seen(g, observer_reference_ / d_ref);
+  }
   // nu_observed / nu_emitted for light that left the disk at e: 1 / (p_mu
   // u^mu) in Boyer–Lindquist, the matter's u from Kerr::disk_velocity_bl.
   double disk_frequency_ratio(const Event& e) const {
@@ -223,6 +245,7 @@ class MinoRay {
   Event at_capture_{};  // where r passed the capture radius (the same for the horizon)
   Event at_hit_{};      // where the ray met the disk
   Vec3 direction_{};  // at infinity, in the Kerr–Schild Cartesian frame
+  double observer_reference_;  // p.u_ref at the observer (1 where g is not split)
   RaySample out_;
   int crossings_ = 0;
 };

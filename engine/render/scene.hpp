@@ -14,6 +14,7 @@
 
 #include "geodesic/null_ray.hpp"
 #include "camera/camera.hpp"
+#include "light/light.hpp"
 #include "objects/objects.hpp"
 #include "sky/sky.hpp"
 
@@ -35,6 +36,10 @@ struct SceneIn {
   // empty: frames with equal non-empty keys may share the samples of rays
   // that stay clear of moving objects (render/sample_memo.hpp).
   std::string still_key{};
+  Light light{};  // how hits' light is shown
+  // The ZAMO's 4-velocity at the observer (trace coordinates), where the
+  // light model splits g into its parts (light/light.hpp).
+  Vec4 reference_observer{};
 };
 
 // A scene in any registered spacetime (spacetime/spacetime.hpp).

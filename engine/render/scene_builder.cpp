@@ -59,6 +59,8 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
   scene_polar(st, sc.observer, sc.observer_time, r_unused, phi_unused);
 
   for (const ObjectSpec& o : fs.objects) add_object(sc.objects, o, st, res, sc.observer);
+  if (fs.light.model != LightModel::geometric) sc.light = Light(fs.light, res.spectral_shift());
+  if (sc.light.splits()) sc.reference_observer = zamo_velocity(st, sc.observer);
   sc.rays.free_radius = free_radius(sc);
   // Where the spacetime's far field is known (far_field_radius), rays
   // escape there, or beyond the objects; the sky lookup adds the rest of

@@ -21,6 +21,7 @@ std::string to_json(const SceneSpec& fs, int frame, const std::string& evaluated
   out += "\"objects\": [";
   for (std::size_t i = 0; i < fs.objects.size(); ++i) out += (i ? ", " : "") + ObjectRegistry::json(fs.objects[i], polar);
   out += "]";
+  out += fmt::format(", \"light\": {{{}}}", fields_json(fs.light).substr(2));
   if (!evaluated.empty()) out += ", \"evaluated\": " + evaluated;
   return out + "}";
 }

@@ -15,6 +15,7 @@
 
 #include "camera/camera.hpp"
 #include "core/color.hpp"
+#include "light/light.hpp"
 #include "objects/objects.hpp"
 #include "sky/sky.hpp"
 #include "core/tensor.hpp"
@@ -39,6 +40,7 @@ struct SceneSpec {
   CameraSpec camera;
   SkySpec sky;
   std::vector<ObjectSpec> objects;  // the scene's `disk`, then its `objects`
+  LightParams light;                // how its light is shown (lc.light{...})
 };
 
 }  // namespace lc

@@ -10,12 +10,14 @@ namespace {
 // their declared fields (core/registry.hpp), so a new kind or field joins
 // the key by itself.  A new member of these two structs must be added here,
 // or frames that differ in it would share rays: each size must be the sum
-// of the members' known here (x86-64, libstdc++, where none pads), so a
-// new member trips it, while a registered kind growing (a larger
-// spacetime, say) does not.
+// of the members' known here (x86-64, libstdc++, where only the last pads
+// to the struct's alignment), so a new member trips it, while a registered
+// kind growing (a larger spacetime, say) does not.
 #if defined(__x86_64__) && defined(__GLIBCXX__)
-static_assert(sizeof(SceneSpec) == sizeof(Spacetime) + sizeof(ObserverSpec) + sizeof(CameraSpec) + sizeof(SkySpec) +
-                                       sizeof(std::vector<ObjectSpec>),
+constexpr std::size_t aligned(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; }
+static_assert(sizeof(SceneSpec) == aligned(sizeof(Spacetime) + sizeof(ObserverSpec) + sizeof(CameraSpec) +
+                                               sizeof(SkySpec) + sizeof(std::vector<ObjectSpec>) + sizeof(LightParams),
+                                           alignof(SceneSpec)),
               "SceneSpec has a member still_key does not know: add it to still_key");
 static_assert(sizeof(ObserverSpec) ==
                   sizeof(double) /* kind, padded */ + sizeof(Vec4) + sizeof(std::optional<WorldlineSpec>) + sizeof(double),
@@ -43,6 +45,7 @@ std::string still_key(const SceneSpec& fs) {
   k += "|camera " + CameraRegistry::key(fs.camera);
   k += "|sky " + SkyRegistry::key(fs.sky);
   for (const ObjectSpec& o : fs.objects) k += "|object " + ObjectRegistry::key(o);
+  k += "|light" + fields_key(fs.light);
   return k;
 }
 

@@ -6,6 +6,7 @@
 
 #include "camera/camera.hpp"
 #include "core/fields.hpp"
+#include "light/light.hpp"
 #include "objects/objects.hpp"
 #include "scene/shot_info.hpp"
 #include "sky/sky.hpp"
@@ -22,6 +23,8 @@ std::string default_text(const T& v) {
     return fmt::format("{{{{{:g}, {:g}, {:g}}}, {{{:g}, {:g}, {:g}}}}}", v.a[0], v.a[1], v.a[2], v.b[0], v.b[1], v.b[2]);
   else if constexpr (std::is_same_v<T, std::string>)
     return fmt::format("\"{}\"", v);
+  else if constexpr (Choice<T>)
+    return fmt::format("\"{}\"", choice_name(v));
   else
     return fmt::format("{:g}", static_cast<double>(v));
 }
@@ -45,7 +48,9 @@ std::string table(std::string_view name, std::string_view heading = {}) {
   for_each_field<P>([&](const auto& f) {
     const std::string unit = f.unit.empty() ? std::string() : fmt::format(" {}", f.unit);
     const std::string fallback = f.fallback ? default_text(*f.fallback) + unit : "required";
-    const std::string range = range_text(f.lo, f.hi);
+    using T = typename std::decay_t<decltype(f)>::Value;
+    std::string range = range_text(f.lo, f.hi);
+    if constexpr (Choice<T>) range = choices_text<T>();
     out += fmt::format("| `{}` | {} | {} | {} |\n", f.name, cell(fallback), range.empty() ? "" : range + unit,
                        cell(f.doc));
   });
@@ -74,6 +79,8 @@ std::string constructor_tables() {
   kinds("Cameras", CameraRegistry{});
   kinds("Skies", SkyRegistry{});
   kinds("Objects", ObjectRegistry{});
+  out += "### Light\n\n";
+  out += table<LightParams>("light");
   return out;
 }
 

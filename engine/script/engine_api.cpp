@@ -61,6 +61,7 @@ void validate_camera(lua::TableReader& t) { read_camera(t); }
 void validate_object(lua::TableReader& t) { read_object(t, nullptr); }
 void validate_sky(lua::TableReader& t) { read_sky(t); }
 void validate_worldline(lua::TableReader& t) { read_worldline(t); }
+void validate_light(lua::TableReader& t) { read_light(t); }
 void validate_observer(lua::TableReader& t) { read_observer(t, nullptr); }
 
 // apocentres(w) -> array of {t = scene time, tau = proper time, r = radius}
@@ -108,6 +109,7 @@ void install_engine_api(lua::Sandbox& sandbox) {
   CameraRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera); });
   ObjectRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_object); });
   add("worldline", validate_worldline);
+  add("light", validate_light);
   lua_pushcfunction(L, l_apocentres);
   lua_setfield(L, -2, "apocentres");
   lua_setglobal(L, "__lightcone");

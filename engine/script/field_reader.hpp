@@ -5,6 +5,7 @@
 // got 0").  The reader does not finish() the table: the caller may read
 // more fields by hand first.
 
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 
@@ -53,6 +54,14 @@ void read_fields(lua::TableReader& t, S& out) {
         v = *f.fallback;
       else
         throw lua::FieldError(fmt::format("{}: missing field '{}'", t.context(), f.name));
+    } else if constexpr (Choice<T>) {
+      const std::string name = f.fallback ? t.string_or(f.name, std::string(choice_name(*f.fallback))) : t.string(f.name);
+      const auto names = choice_names(T{});
+      const auto it = std::find(names.begin(), names.end(), name);
+      if (it == names.end())
+        throw lua::FieldError(fmt::format("{}: field '{}' must be {}, got '{}'", t.context(), f.name,
+                                          choices_text<T>(), name));
+      v = static_cast<T>(it - names.begin());
     } else if constexpr (std::is_floating_point_v<T>) {
       v = f.fallback ? t.number_or(f.name, *f.fallback) : t.number(f.name);
     } else {

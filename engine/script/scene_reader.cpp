@@ -112,6 +112,14 @@ SkySpec read_sky(TableReader& t) {
   return read_kind<SkyRegistry>(t, "a sky constructor", ", or lc.starfield{...}");
 }
 
+LightParams read_light(TableReader& t) {
+  expect_kind(t, {"light"}, "lc.light{...}");
+  LightParams p;
+  read_fields(t, p);
+  t.finish();
+  return p;
+}
+
 WorldlineSpec read_worldline(TableReader& t) {
   expect_kind(t, {"worldline"}, "lc.worldline{...}");
   WorldlineSpec w;
@@ -197,6 +205,7 @@ SceneSpec read_scene_spec(TableReader& t) {
   if (auto c = t.optional_table("camera")) fs.camera = read_camera(*c);
   if (auto d = t.optional_table("disk")) fs.objects.push_back(read_object(*d, &fs.spacetime));
   if (auto s = t.optional_table("sky")) fs.sky = read_sky(*s);
+  if (auto l = t.optional_table("light")) fs.light = read_light(*l);
   if (auto objs = t.optional_table("objects")) {
     if (objs->length() > max_scene_objects)
       fail(*objs, fmt::format("at most {} objects, got {}", max_scene_objects, objs->length()));

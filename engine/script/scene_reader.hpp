@@ -30,6 +30,8 @@ Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::s
 CameraSpec read_camera(lua::TableReader& t);
 SkySpec read_sky(lua::TableReader& t);
 WorldlineSpec read_worldline(lua::TableReader& t);
+// lc.light{...}.
+LightParams read_light(lua::TableReader& t);
 // Object (a sphere's) and observer positions resolve against `st` when given.
 ObjectSpec read_object(lua::TableReader& t, const Spacetime* st);
 ObserverSpec read_observer(lua::TableReader& t, const Spacetime* st);

@@ -224,7 +224,7 @@ namespace lc {
 namespace {
 
 // A 24x16 image of a glowing disk (Kerr a, static observer at r = 30,
-// 75 deg) on a black sky, as colours.
+// 75 deg) on a black sky, seen shifted, as colours.
 std::vector<Color> glowing_disk(double a, KerrChart chart) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, a);
@@ -233,6 +233,7 @@ std::vector<Color> glowing_disk(double a, KerrChart chart) {
   Disk::Params d{2, 20, 4, 12};
   d.temperature = 8000;
   fs.objects.push_back(d);
+  fs.light.model = LightModel::shifted;
   std::get<CheckerSky::Params>(fs.sky).colors = {{0, 0, 0}, {0, 0, 0}};  // a black sky: no checker to mirror
   ShotResources res;
   RayOptions o;

@@ -112,4 +112,37 @@ TEST(Shot, ExposureAndToneReachTheDisplayTransform) {
   EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot shot(far); }).find("exposure"), std::string::npos);
 }
 
+// lc.light{...} reaches the frame's scene; an unknown model or a switch
+// out of range is an error at the line that made it, naming the field.
+TEST(Shot, LightIsReadAndCheckedAtTheShotsLine) {
+  ScratchDir dir;
+  const auto shot_with = [&](const std::string& light) {
+    return write_shot(dir, "light.lua",
+                      "local lc = require 'lightcone'\n"
+                      "return {name = 'shot', frames = 1, width = 8, height = 8,\n"
+                      "  frame = function(i) return {spacetime = lc.kerr{mass = 1, spin = 0.9},\n"
+                      "    observer = lc.static_observer{r = 30, theta = 80, phi = 0},\n"
+                      "    light = " + light + "} end}\n");
+  };
+  const lc::SceneSpec fs = lc::Shot(shot_with("lc.light{model = 'shifted', kinematic = 0}")).frame(0);
+  EXPECT_EQ(fs.light.model, lc::LightModel::shifted);
+  EXPECT_EQ(fs.light.kinematic, 0);
+  EXPECT_EQ(fs.light.gravitational, 1);
+  EXPECT_EQ(lc::Shot(shot_with("lc.light{}")).frame(0).light.model, lc::LightModel::geometric);
+
+  const fs::path unknown = shot_with("lc.light{model = 'physical'}");
+  EXPECT_EQ(error_of<lc::lua::ScriptError>([&] { lc::Shot(unknown).frame(0); })
+                .rfind(unknown.string() + ": frame 0: " + unknown.string() +
+                           ":5: light: field 'model' must be geometric or shifted, got 'physical'\n",
+                       0),
+            0u);
+  const fs::path out_of_range = shot_with("lc.light{model = 'shifted', beaming = 2}");
+  EXPECT_NE(error_of<lc::lua::ScriptError>([&] { lc::Shot(out_of_range).frame(0); })
+                .find(":5: light: field 'beaming' must be between 0 and 1, got 2"),
+            std::string::npos);
+  const fs::path not_light = shot_with("lc.camera{}");
+  EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot(not_light).frame(0); }).find("expected a value made by lc.light{...}, got a camera"),
+            std::string::npos);
+}
+
 }  // namespace
