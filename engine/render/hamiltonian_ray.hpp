@@ -145,10 +145,15 @@ class HamiltonianRay {
     const Vec4& u = sc_.reference_observer;
     return p0_[0] * u[0] + p0_[1] * u[1] + p0_[2] * u[2] + p0_[3] * u[3];
   }
-  // How light of ratio g from the event y is seen: g_grav = D(u_ref,obs) /
-  // D(u_ref,em), the ZAMOs' at the two ends.
+  // How light of ratio g from the event y is seen.
   SeenShift seen(double g, const RayState& y) const {
     if (!sc_.light.splits()) return sc_.light.seen(g, g);
+    return seen_in_parts(g, y);
+  }
+  // The same where g is split: g_grav = D(u_ref,obs) / D(u_ref,em), the
+  // ZAMOs' at the two ends.  Kept out of line: the visitor is inlined into
+  // every step of the integration.
+  [[gnu::noinline]] SeenShift seen_in_parts(double g, const RayState& y) const {
     const Vec4 x = {y[0], y[1], y[2], y[3]};
     return sc_.light.seen(g, observer_reference() * frequency_ratio(y, zamo_velocity(sc_.spacetime, x)));
   }

@@ -205,11 +205,15 @@ class MinoRay {
     const Vec4& u = sc.reference_observer;
     return p[0] * u[0] + p[1] * u[1] + p[2] * u[2] + p[3] * u[3];
   }
-  // How light of ratio g from the disk at e is seen: g_grav = D(u_ref,obs) /
-  // D(u_ref,em), the ZAMO at e in Boyer–Lindquist, u^mu = -g^{mu t} /
-  // sqrt(-g^{tt}).
+  // How light of ratio g from the disk at e is seen.
   SeenShift seen_from_disk(const Event& e, double g) const {
     if (!sc_.light.splits()) return sc_.light.seen(g, g);
+    return seen_in_parts(e, g);
+  }
+  // The same where g is split: g_grav = D(u_ref,obs) / D(u_ref,em), the
+  // ZAMO at e in Boyer–Lindquist, u^mu = -g^{mu t} / sqrt(-g^{tt}).  Kept
+  // out of line: the visitor is inlined into every step.
+  [[gnu::noinline]] SeenShift seen_in_parts(const Event& e, double g) const {
     Vec4 s, p;
     kerr_mino_event(start_.k, e.y, s, p);
     const Mat4 m = sc_.spacetime.bl_metric(s);
