@@ -11,11 +11,18 @@ inline constexpr double pi = std::numbers::pi;
 inline constexpr double two_pi = 2.0 * std::numbers::pi;
 inline constexpr double degree = std::numbers::pi / 180.0;  // radians per degree
 
-// Physical constants in SI (CODATA 2018, exact by the 2019 SI), for
-// blackbody light (light/blackbody.hpp).
-inline constexpr double planck_h = 6.62607015e-34;      // J s
-inline constexpr double speed_of_light = 299792458.0;   // m / s
-inline constexpr double boltzmann_k = 1.380649e-23;     // J / K
+// Physical constants in SI (CODATA 2018; h, c, k exact by the 2019 SI), for
+// blackbody light (light/blackbody.hpp) and a disk's temperature from its
+// accretion rate (light/novikov_thorne.hpp).
+inline constexpr double planck_h = 6.62607015e-34;             // J s
+inline constexpr double speed_of_light = 299792458.0;          // m / s
+inline constexpr double boltzmann_k = 1.380649e-23;            // J / K
+inline constexpr double stefan_boltzmann = 5.670374419e-8;     // W m^-2 K^-4
+inline constexpr double gravitational_constant = 6.67430e-11;  // m^3 kg^-1 s^-2
+// The Sun's mass from IAU 2015 Resolution B3's nominal GM (1.3271244e20
+// m^3 s^-2) over G; a Julian year.
+inline constexpr double solar_mass = 1.3271244e20 / gravitational_constant;  // kg
+inline constexpr double julian_year = 365.25 * 86400.0;                       // s
 
 // Null rays are stopped at this Boyer–Lindquist (or Cartesian) radius when
 // moving outwards: beyond the outermost photon orbit no ray turns back, so the

@@ -67,4 +67,11 @@ double NovikovThorneFlux::peak_radius() const {
   return 0.5 * (lo + hi);
 }
 
+double NovikovThorneFlux::temperature(double r, double solar_masses, double solar_masses_per_year) const {
+  const double metres = gravitational_constant * solar_masses * solar_mass / (speed_of_light * speed_of_light) / M_;
+  const double mdot = solar_masses_per_year * solar_mass / julian_year;  // kg / s
+  const double flux = (*this)(r) * mdot * speed_of_light * speed_of_light / (metres * metres);  // W / m^2
+  return std::sqrt(std::sqrt(flux / stefan_boltzmann));
+}
+
 }  // namespace lc

@@ -3,8 +3,9 @@
 // Thorne 1973; Page & Thorne 1974, ApJ 191, 499): the energy its surface
 // radiates, per unit proper time and proper area of one face, in the frame
 // of its orbiting matter, from a steady accretion rate and zero torque at
-// the innermost stable circular orbit.  Geometric units (G = c = 1); the
-// disk co-rotates with the hole, so the flux depends on |a| only.
+// the innermost stable circular orbit.  Geometric units (G = c = 1), and SI
+// for a temperature; the disk co-rotates with the hole, so the flux depends
+// on |a| only.
 
 namespace lc {
 
@@ -24,6 +25,13 @@ class NovikovThorneFlux {
 
   // The radius where F is largest (golden-section search; to ~1e-9 M).
   double peak_radius() const;
+
+  // The effective temperature (K) of the ring at r for a hole of
+  // `solar_masses` (the physical mass the geometric mass stands for)
+  // accreting `solar_masses_per_year`: sigma T^4 = F (Stefan–Boltzmann), F
+  // in SI being F(r) Mdot c^2 / l^2 with l = G M / c^2 per unit of the
+  // geometric mass.  Both rates > 0.
+  double temperature(double r, double solar_masses, double solar_masses_per_year) const;
 
  private:
   double M_, a_;  // a_ = |spin| / mass

@@ -5,16 +5,24 @@
 namespace lc {
 
 void Disk::glow(const std::optional<NovikovThorneFlux>& flux, ShotResources& res) {
+  const std::string how = p_.temperature > 0.0 ? fmt::format("temperature = {}", p_.temperature)
+                                                : fmt::format("solar_masses = {}, accretion_rate = {}", p_.solar_masses,
+                                                              p_.accretion_rate);
   if (!flux)
     throw std::invalid_argument(fmt::format(
-        "disk: temperature = {} makes a glowing Novikov–Thorne disk, which needs a Kerr hole with mass > 0 and "
-        "|spin| < mass (set temperature = 0 for the checker)",
-        p_.temperature));
+        "disk: {} makes a glowing Novikov–Thorne disk, which needs a Kerr hole with mass > 0 and |spin| < mass "
+        "(leave temperature, solar_masses and accretion_rate at 0 for the checker)",
+        how));
   flux_ = flux;
-  flux_max_ = (*flux_)(flux_->peak_radius());
+  const double peak = flux_->peak_radius();
+  flux_max_ = (*flux_)(peak);
+  t_max_ = p_.temperature > 0.0 ? p_.temperature : flux_->temperature(peak, p_.solar_masses, p_.accretion_rate);
+  if (!(t_max_ >= 1.0) || !(t_max_ <= 1e9))
+    throw std::invalid_argument(fmt::format(
+        "disk: {} makes the hottest ring {:.4g} K, outside the 1 K to 1e9 K lightcone shows", how, t_max_));
   // The hottest ring, unshifted, has luminance 1: the table's reference is
   // its light, a blackbody at f T_max (the dilution f^-4 cancels).
-  colors_ = res.blackbody_colors(p_.color_correction * p_.temperature);
+  colors_ = res.blackbody_colors(p_.color_correction * t_max_);
 }
 
 }  // namespace lc

@@ -41,6 +41,7 @@ class Disk {
     int rings = 7, sectors = 24;
     Palette colors = {{1.0f, 0.55f, 0.15f}, {0.35f, 0.12f, 0.03f}};
     double temperature = 0.0, color_correction = 1.0;
+    double solar_masses = 0.0, accretion_rate = 0.0;
     static constexpr auto fields = std::tuple{
         field("inner", &Params::inner, std::optional<double>{}, at_least(0.0), std::nullopt, "inner radius", "M"),
         field("outer", &Params::outer, std::optional<double>{}, std::nullopt, std::nullopt, "outer radius, above inner", "M"),
@@ -57,12 +58,28 @@ class Disk {
         field("color_correction", &Params::color_correction, std::optional<double>{1.0}, at_least(1.0), at_most(10.0),
               "a glowing disk's colour-correction factor f: each ring shines as a blackbody at f T diluted by "
               "f^-4 (hot disks: ~1.7)"),
+        field("solar_masses", &Params::solar_masses, std::optional<double>{0.0}, at_least(0.0), at_most(1e12),
+              "with accretion_rate, instead of temperature: the hole's mass in the Sun's, which the spacetime's "
+              "mass stands for; the hottest ring's temperature follows (docs/light.md)",
+              "M_sun"),
+        field("accretion_rate", &Params::accretion_rate, std::optional<double>{0.0}, at_least(0.0), at_most(1e6),
+              "with solar_masses: the rest mass accreted per year", "M_sun/yr"),
     };
-    // Throws std::invalid_argument unless inner < outer.
+    // Throws std::invalid_argument unless inner < outer and the disk's glow
+    // is given one way.
     void validate() const {
       if (!(outer > inner))
         throw std::invalid_argument(fmt::format("inner radius {} must be below the outer radius {}", inner, outer));
+      if ((solar_masses > 0.0) != (accretion_rate > 0.0))
+        throw std::invalid_argument(fmt::format(
+            "a disk's glow from physical units needs both solar_masses and accretion_rate above 0, got {} and {}",
+            solar_masses, accretion_rate));
+      if (solar_masses > 0.0 && temperature > 0.0)
+        throw std::invalid_argument(
+            "give a glowing disk either its temperature or its solar_masses and accretion_rate, not both");
     }
+    // Whether it glows (else it is the checker).
+    bool glows() const { return temperature > 0.0 || solar_masses > 0.0; }
   };
 
   // In the spacetime st, with colour tables from `res`.  Throws
@@ -70,7 +87,7 @@ class Disk {
   // disk.
   template <class S>
   Disk(const Params& p, const S& st, ShotResources& res, const Vec4&) : p_(p) {
-    if (p.temperature > 0.0) glow(st.thin_disk_flux(), res);
+    if (p.glows()) glow(st.thin_disk_flux(), res);
   }
   // A checkered disk.
   explicit Disk(const Params& p) : p_(p) {}
@@ -129,12 +146,13 @@ class Disk {
  private:
   // T(r) = T_max (F(r) / F_max)^(1/4): each ring radiates its flux as a
   // blackbody (Stefan–Boltzmann).
-  double ring_temperature(double r) const { return p_.temperature * std::sqrt(std::sqrt((*flux_)(r) / flux_max_)); }
+  double ring_temperature(double r) const { return t_max_ * std::sqrt(std::sqrt((*flux_)(r) / flux_max_)); }
   void glow(const std::optional<NovikovThorneFlux>& flux, ShotResources& res);
 
   Params p_;
   std::optional<NovikovThorneFlux> flux_;  // a glowing disk's
   double flux_max_ = 0.0;
+  double t_max_ = 0.0;  // the hottest ring's temperature (K)
   std::shared_ptr<const BlackbodyColors> colors_;
 };
 

@@ -86,5 +86,29 @@ TEST(NovikovThorne, PeakAndScaling) {
   EXPECT_THROW(NovikovThorneFlux(0, 0), std::invalid_argument);
 }
 
+TEST(NovikovThorne, TemperatureInSiUnitsIsShakuraSunyaevsFarOut) {
+  // Far out the disk is the Newtonian one with a zero-torque inner edge
+  // (Shakura & Sunyaev 1973): sigma T^4 = 3 G M Mdot / (8 pi R^3) (1 -
+  // sqrt(R_in / R)), R in metres.  Written here in SI from scratch: 10 solar
+  // masses (1.98841e31 kg) accreting 1e-8 solar masses a year, at 1e8 M
+  // (Schwarzschild, R_in = 6 M).  Tolerance 1e-3: the relativistic
+  // corrections to the flux fall off as sqrt(M / r) times logarithms, ~1e-3
+  // at 1e8 M (1.5e-2 at 1e4 M), and T goes as its fourth root.
+  const double G = 6.6743e-11, c = 299792458.0, sigma = 5.670374419e-8;
+  const double mass = 10 * 1.98841e30, mdot = 1e-8 * 1.98841e30 / (365.25 * 86400);
+  const double metres_per_m = G * mass / (c * c);
+  for (const double geometric_mass : {1.0, 3.0}) {
+    const NovikovThorneFlux F(geometric_mass, 0);
+    const double r = 1e8 * geometric_mass, R = 1e8 * metres_per_m;
+    const double expected =
+        std::pow(3 * G * mass * mdot / (8 * pi * sigma * R * R * R) * (1 - std::sqrt(6.0 / 1e8)), 0.25);
+    EXPECT_NEAR(F.temperature(r, 10, 1e-8), expected, 1e-3 * expected) << "M = " << geometric_mass;
+  }
+  // T ∝ (Mdot / M^2)^(1/4) at the same r / M.
+  const NovikovThorneFlux F(1, 0.9);
+  const double r = F.peak_radius();
+  EXPECT_NEAR(F.temperature(r, 40, 16e-8) / F.temperature(r, 10, 1e-8), 1.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace lc
