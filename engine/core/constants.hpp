@@ -23,6 +23,9 @@ inline constexpr double gravitational_constant = 6.67430e-11;  // m^3 kg^-1 s^-2
 // m^3 s^-2) over G; a Julian year.
 inline constexpr double solar_mass = 1.3271244e20 / gravitational_constant;  // kg
 inline constexpr double julian_year = 365.25 * 86400.0;                       // s
+// Luminous efficacy of the photopic curve y-bar (lm / W; CIE): luminance in
+// cd m^-2 is this times the y-bar-weighted radiance in W sr^-1 m^-2.
+inline constexpr double luminous_efficacy = 683.0;
 
 // Null rays are stopped at this Boyer–Lindquist (or Cartesian) radius when
 // moving outwards: beyond the outermost photon orbit no ray turns back, so the

@@ -1,6 +1,7 @@
 #include "objects/disk.hpp"
 
 #include "assets/shot_resources.hpp"
+#include "core/constants.hpp"
 
 namespace lc {
 
@@ -20,9 +21,14 @@ void Disk::glow(const std::optional<NovikovThorneFlux>& flux, ShotResources& res
   if (!(t_max_ >= 1.0) || !(t_max_ <= 1e9))
     throw std::invalid_argument(fmt::format(
         "disk: {} makes the hottest ring {:.4g} K, outside the 1 K to 1e9 K lightcone shows", how, t_max_));
-  // The hottest ring, unshifted, has luminance 1: the table's reference is
-  // its light, a blackbody at f T_max (the dilution f^-4 cancels).
-  colors_ = res.blackbody_colors(p_.color_correction * t_max_);
+  // The table's reference is the hottest ring's light, a blackbody at f T_max
+  // diluted by f^-4.  Given a temperature, that light, unshifted, has
+  // luminance 1 (the dilution cancels); given physical units, the light is
+  // in cd/m^2.
+  const double f = p_.color_correction;
+  colors_ = res.blackbody_colors(f * t_max_);
+  if (p_.solar_masses > 0.0)
+    scale_ = static_cast<float>(luminous_efficacy * blackbody_xyz(f * t_max_).Y / (f * f * f * f));
 }
 
 }  // namespace lc

@@ -60,7 +60,7 @@ class Disk {
               "f^-4 (hot disks: ~1.7)"),
         field("solar_masses", &Params::solar_masses, std::optional<double>{0.0}, at_least(0.0), at_most(1e12),
               "with accretion_rate, instead of temperature: the hole's mass in the Sun's, which the spacetime's "
-              "mass stands for; the hottest ring's temperature follows (docs/light.md)",
+              "mass stands for; the rings' temperatures follow, and the light is in cd/m^2 (docs/light.md)",
               "M_sun"),
         field("accretion_rate", &Params::accretion_rate, std::optional<double>{0.0}, at_least(0.0), at_most(1e6),
               "with solar_masses: the rest mass accreted per year", "M_sun/yr"),
@@ -104,10 +104,9 @@ class Disk {
   Color color(double r, double phi, const SeenShift& shift) const {
     if (colors_) {
       Color c = (*colors_)(shift.color * p_.color_correction * ring_temperature(r));
-      if (shift.beaming != shift.color) {
-        const float k = shift.extra_beaming();
+      const float k = shift.beaming != shift.color ? scale_ * shift.extra_beaming() : scale_;
+      if (k != 1.0f)
         for (float& v : c) v *= k;
-      }
       return c;
     }
     const long ring = static_cast<long>(std::floor((r - p_.inner) / (p_.outer - p_.inner) * p_.rings));
@@ -153,6 +152,7 @@ class Disk {
   std::optional<NovikovThorneFlux> flux_;  // a glowing disk's
   double flux_max_ = 0.0;
   double t_max_ = 0.0;  // the hottest ring's temperature (K)
+  float scale_ = 1.0f;  // the colour table's values to the light's units
   std::shared_ptr<const BlackbodyColors> colors_;
 };
 

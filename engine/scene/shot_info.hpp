@@ -37,7 +37,7 @@ struct ShotInfo {
       field("height", &ShotInfo::height, std::optional<int>{}, at_least(1), at_most(16384), "image height", "pixels"),
       field("supersample", &ShotInfo::supersample, std::optional<int>{1}, at_least(1), at_most(16),
             "N x N samples per pixel (the paper: 2)"),
-      field("exposure", &ShotInfo::exposure, std::optional<double>{0.0}, at_least(-20.0), at_most(20.0),
+      field("exposure", &ShotInfo::exposure, std::optional<double>{0.0}, at_least(-64.0), at_most(64.0),
             "the PNG and the video show the light times 2^exposure (the EXR keeps it as traced; docs/light.md)",
             "stops"),
       field("filmic", &ShotInfo::filmic, std::optional<int>{0}, at_least(0), at_most(1),

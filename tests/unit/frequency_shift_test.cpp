@@ -10,6 +10,8 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "light/blackbody.hpp"
+#include "light/novikov_thorne.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
 #include "test_scenes.hpp"
@@ -268,6 +270,36 @@ TEST(GlowingDisk, TheApproachingSideIsBrighterAndFlipsWithTheSpin) {
       }
     EXPECT_GT(std::max(left, right), 2 * std::min(left, right)) << "left " << left << " right " << right;
   }
+}
+
+TEST(GlowingDisk, InPhysicalUnitsItsLightIsInCandelasPerSquareMetre) {
+  // A hole standing for 4.3e6 Suns accreting 1e-8 of a Sun a year (the
+  // hottest ring ~9600 K), seen in the paper's look (unshifted): each disk
+  // pixel's luminance is 683 lm/W times the y-bar-weighted Planck radiance
+  // at its ring's temperature.  Tolerance 1e-3: the colour table's
+  // interpolation (1e-4) and the sRGB matrices' rounding.
+  SceneSpec fs;
+  fs.spacetime = Kerr(1, 0.9);
+  fs.observer.position = {0, 30, 20 * degree, 0};
+  std::get<PinholeCamera::Params>(fs.camera).fov = 50;
+  Disk::Params d{2.4, 12, 4, 12};
+  d.solar_masses = 4.3e6;
+  d.accretion_rate = 1e-8;
+  fs.objects.push_back(d);
+  ShotResources res;
+  const Scene scene = build_scene(fs, 12, 12, res);
+  const NovikovThorneFlux flux(1, 0.9);
+  int disk = 0;
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 12; ++i) {
+      const RaySample s = std::visit(
+          [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{}); }, scene);
+      if (s.kind != HitKind::disk) continue;
+      const double expected = 683 * blackbody_xyz(flux.temperature(s.r, 4.3e6, 1e-8)).Y;
+      EXPECT_NEAR(luminance(s.color), expected, 1e-3 * expected) << i << "," << j;
+      ++disk;
+    }
+  EXPECT_GT(disk, 20);
 }
 
 TEST(GlowingDisk, NeedsAKerrHole) {

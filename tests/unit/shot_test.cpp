@@ -108,7 +108,7 @@ TEST(Shot, ExposureAndToneReachTheDisplayTransform) {
   EXPECT_EQ(filmic.info().display().curve, lc::ToneCurve::filmic);
   const fs::path bad = shot_with("filmic = 2,");
   EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot shot(bad); }).find("filmic"), std::string::npos);
-  const fs::path far = shot_with("exposure = 40,");
+  const fs::path far = shot_with("exposure = 70,");
   EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot shot(far); }).find("exposure"), std::string::npos);
 }
 
@@ -142,6 +142,35 @@ TEST(Shot, LightIsReadAndCheckedAtTheShotsLine) {
             std::string::npos);
   const fs::path not_light = shot_with("lc.camera{}");
   EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot(not_light).frame(0); }).find("expected a value made by lc.light{...}, got a camera"),
+            std::string::npos);
+}
+
+// A glowing disk is given by its temperature or by physical units, one way;
+// a negative rate or half of the physical pair is an error at the line.
+TEST(Shot, AGlowingDisksUnitsAreCheckedAtTheShotsLine) {
+  ScratchDir dir;
+  const auto error_for = [&](const std::string& disk) {
+    const fs::path file = write_shot(dir, "disk.lua",
+                                     "local lc = require 'lightcone'\n"
+                                     "return {name = 'shot', frames = 1, width = 8, height = 8,\n"
+                                     "  frame = function(i) return {spacetime = lc.kerr{mass = 1, spin = 0.9},\n"
+                                     "    observer = lc.static_observer{r = 30, theta = 80, phi = 0},\n"
+                                     "    disk = " + disk + "} end}\n");
+    return error_of<lc::lua::ScriptError>([&] { lc::Shot(file).frame(0); });
+  };
+  EXPECT_NE(error_for("lc.disk{inner = 3, outer = 9, solar_masses = 10, accretion_rate = -1}")
+                .find(":5: disk: field 'accretion_rate' must be between 0 and 1000000 M_sun/yr, got -1"),
+            std::string::npos);
+  EXPECT_NE(error_for("lc.disk{inner = 3, outer = 9, solar_masses = 10}")
+                .find(":5: disk: a disk's glow from physical units needs both solar_masses and accretion_rate above 0, "
+                      "got 10 and 0"),
+            std::string::npos);
+  EXPECT_NE(error_for("lc.disk{inner = 3, outer = 9, temperature = 5000, solar_masses = 10, accretion_rate = 1}")
+                .find(":5: disk: give a glowing disk either its temperature or its solar_masses and accretion_rate, "
+                      "not both"),
+            std::string::npos);
+  EXPECT_NE(error_for("lc.disk{inner = 3, outer = 9, temperature = -5}")
+                .find(":5: disk: field 'temperature' must be between 0 and 1000000000 K, got -5"),
             std::string::npos);
 }
 
