@@ -19,9 +19,11 @@ for name, fn in pairs(engine) do M[name] = fn end
 function M.starfield(t)
   t = t or {}
   for k in pairs(t) do
-    if k ~= "rotate" then error("starfield: unknown field '" .. tostring(k) .. "' (it takes only rotate)", 2) end
+    if k ~= "rotate" and k ~= "brightness" then
+      error("starfield: unknown field '" .. tostring(k) .. "' (it takes rotate and brightness)", 2)
+    end
   end
-  return engine.sky_image{file = "textures/starfield.png", rotate = t.rotate or 0}
+  return engine.sky_image{file = "textures/starfield.png", rotate = t.rotate or 0, brightness = t.brightness or 0}
 end
 
 -- Cartesian components and polar angles (radians) of a position table

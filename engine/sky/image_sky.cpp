@@ -5,6 +5,6 @@
 namespace lc {
 
 // The image is loaded once per shot (ShotResources).
-ImageSky::ImageSky(const Params& p, ShotResources& res) : TextureSky(p.rotate, res.texture(p.file)) {}
+ImageSky::ImageSky(const Params& p, ShotResources& res) : TextureSky(p.rotate, p.brightness, res.texture(p.file)) {}
 
 }  // namespace lc

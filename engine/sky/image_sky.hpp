@@ -27,12 +27,14 @@ class ImageSky : public TextureSky {
   static constexpr std::string_view name = "sky_image";
   struct Params {
     std::string file;
-    double rotate = 0.0;
+    double rotate = 0.0, brightness = 0.0;
     static constexpr auto fields = std::tuple{
         field("file", &Params::file, std::optional<std::string>{}, std::nullopt, std::nullopt,
               "the image, relative to the shot's folder or the project's shots/"),
         field("rotate", &Params::rotate, std::optional<double>{0.0}, std::nullopt, std::nullopt,
               "added to the longitude", "degrees"),
+        field("brightness", &Params::brightness, std::optional<double>{0.0}, at_least(-64.0), at_most(64.0),
+              "the texture's light times 2^brightness (for scenes in physical units: docs/light.md)", "stops"),
     };
   };
   // The file a frame with this sky reads (resolved as resolve_sky_image says).

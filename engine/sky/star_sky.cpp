@@ -6,6 +6,6 @@ namespace lc {
 
 // The field is made once per shot, seed and size (ShotResources).
 StarSky::StarSky(const Params& p, ShotResources& res)
-    : TextureSky(p.rotate, res.starfield(p.seed, p.resolution)) {}
+    : TextureSky(p.rotate, p.brightness, res.starfield(p.seed, p.resolution)) {}
 
 }  // namespace lc

@@ -28,7 +28,7 @@ class StarSky : public TextureSky {
   struct Params {
     std::uint32_t seed = 1;
     int resolution = 2048;
-    double rotate = 0.0;
+    double rotate = 0.0, brightness = 0.0;
     static constexpr auto fields = std::tuple{
         field("seed", &Params::seed, std::optional<std::uint32_t>{1}, at_least(0), at_most(2147483647),
               "the catalogue's seed"),
@@ -36,6 +36,8 @@ class StarSky : public TextureSky {
               "the texture's width (its height is half)", "pixels"),
         field("rotate", &Params::rotate, std::optional<double>{0.0}, std::nullopt, std::nullopt,
               "added to the longitude", "degrees"),
+        field("brightness", &Params::brightness, std::optional<double>{0.0}, at_least(-64.0), at_most(64.0),
+              "the texture's light times 2^brightness (for scenes in physical units: docs/light.md)", "stops"),
     };
   };
   static std::vector<std::string> assets(const Params&) { return {}; }

@@ -19,20 +19,25 @@ inline double rotated_longitude(double phi, double rotate_degrees) {
 }
 
 // A sky that is an equirectangular texture: longitude 0 at the left edge,
-// the top edge at theta = 0, turned by `rotate` degrees.
+// the top edge at theta = 0, turned by `rotate` degrees, its light times
+// 2^brightness.
 class TextureSky {
  public:
-  TextureSky(double rotate, std::shared_ptr<const Texture> texture) : rotate_(rotate), texture_(std::move(texture)) {}
+  TextureSky(double rotate, double brightness, std::shared_ptr<const Texture> texture)
+      : rotate_(rotate), scale_(static_cast<float>(std::exp2(brightness))), texture_(std::move(texture)) {}
 
   // Colour in the direction (theta from +z, phi = atan2(y, x)).
   Color color(double theta, double phi) const {
     Color c;
     texture_->sample(rotated_longitude(phi, rotate_) / two_pi, theta / pi, c.data());
+    if (scale_ != 1.0f)
+      for (float& v : c) v *= scale_;
     return c;
   }
 
  private:
   double rotate_;
+  float scale_;
   std::shared_ptr<const Texture> texture_;
 };
 
