@@ -215,6 +215,8 @@ int main(int argc, char** argv) {
   showcase_cmd->add_option("--threads", showcase.threads, "Render threads per process (as render --threads)")
       ->check(CLI::Range(1, 1024));
   showcase_cmd->add_flag("--force", showcase.force, "Re-render frames made from other settings or inputs (as render --force)");
+  showcase_cmd->add_flag("--thermal", showcase.thermal,
+                         "Add a fourth sequence: the first in light as physics says (kerr_accrDisk_thermal; docs/light.md)");
   showcase_cmd->add_option("--progress", showcase.progress, "Seconds between plain progress lines (0: none)");
 
   // Usage errors in the form of every other error, with a suggestion for a

@@ -163,7 +163,7 @@ void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const In
 
 int run_showcase(const ShowcaseCommand& cmd) {
   const Clock::time_point start = Clock::now();
-  const ShowcaseSettings settings{parse_showcase_quality(cmd.quality), cmd.size, cmd.rate};
+  const ShowcaseSettings settings{parse_showcase_quality(cmd.quality), cmd.size, cmd.rate, cmd.thermal};
   const ShowcaseLayout layout{cmd.out.value_or(fs::path("out") / "showcase" / cmd.quality)};
   const fs::path shots = cmd.shots.value_or(library_dir().parent_path() / "shots");
   farm::MpiSession mpi;

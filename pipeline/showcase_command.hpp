@@ -20,6 +20,7 @@ struct ShowcaseCommand {
   std::optional<std::filesystem::path> shots;  // default: the project's shots/
   int threads = 0;                             // as render --threads
   bool force = false;                          // as render --force
+  bool thermal = false;                        // the fourth sequence too
   double progress = 5.0;                       // as render --progress
 };
 

@@ -36,6 +36,13 @@ const std::vector<Sequence>& paper_sequences() {
   };
   return list;
 }
+// The fourth, beside the paper's: its first storyboard in light as physics
+// says (docs/light.md).
+const Sequence& thermal_sequence() {
+  static const Sequence s = {"kerr_accrDisk_thermal",
+                             {"THE SAME HOLE IN ITS OWN LIGHT", "A DISK GLOWING AT ITS TEMPERATURES,", "SHIFTED AND BEAMED BY ITS MOTION"}};
+  return s;
+}
 
 }  // namespace
 
@@ -61,7 +68,9 @@ ShowcasePlan plan_showcase(const ShowcaseSettings& settings, const fs::path& sho
   ShowcasePlan plan;
   plan.opening = {"LIGHTCONE", "GENERAL-RELATIVISTIC BLACK HOLE VISUALIZATION",
                   "AFTER MULLER, BOBLEST AND WEISKOPF"};
-  for (const Sequence& s : paper_sequences()) {
+  std::vector<Sequence> sequences = paper_sequences();
+  if (settings.thermal) sequences.push_back(thermal_sequence());
+  for (const Sequence& s : sequences) {
     const fs::path file = shots_dir / (std::string(s.name) + ".lua");
     std::error_code ec;
     if (!fs::is_regular_file(file, ec))

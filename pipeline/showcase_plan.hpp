@@ -46,16 +46,18 @@ struct ShowcasePlan {
 };
 
 // What the user chose: a quality, and optionally a smaller or larger image
-// (--size) and, for a preview, more or fewer frames per second of story
-// (--rate).
+// (--size), for a preview more or fewer frames per second of story
+// (--rate), and the fourth sequence after the paper's three (--thermal).
 struct ShowcaseSettings {
   ShowcaseQuality quality = ShowcaseQuality::preview;
   std::optional<std::string> size;  // WxH
   std::optional<double> rate;       // preview only
+  bool thermal = false;             // kerr_accrDisk_thermal.lua too
 };
 
 // Loads the three shots from `shots_dir` (kerr_accrDisk.lua, kerr_passing.lua,
-// dihole.lua) for their frame counts, rates and sizes.  Production renders
+// dihole.lua, and kerr_accrDisk_thermal.lua with settings.thermal) for their
+// frame counts, rates and sizes.  Production renders
 // every frame at the shot's size and sampling; preview picks
 // max(4, round(seconds x preview_fps)) frames evenly (first and last included) at
 // preview_width x preview_height, one sample per pixel; --size and --rate

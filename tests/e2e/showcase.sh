@@ -6,7 +6,8 @@
 # against the storyboard (the dihole's first frame has no shadow, later ones
 # do; the disk's last frame, M = 0, is an undistorted projection while a
 # lensed one is not); a second run resumes without redoing anything; under
-# mpirun the frames come out byte-identical; bad flags are refused.
+# mpirun the frames come out byte-identical; --thermal adds the fourth
+# sequence; bad flags are refused.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 use_mpirun
@@ -79,6 +80,13 @@ for f in sc/frames/*/*.exr sc/frames/*/*.png; do
 done
 [ "$n" -eq 80 ] || fail "expected 80 frame files, found $n"
 check_probe mpi/showcase.mp4 nb_read_frames=56
+
+# --- --thermal adds the fourth sequence and keeps the three -------------------
+"$LIGHTCONE" showcase "${ARGS[@]}" --thermal --out sc 2>thermal.log || fail "showcase --thermal: $(cat thermal.log)"
+[ "$(grep -c 'nothing to render' thermal.log)" -eq 3 ] || fail "--thermal rendered the three again: $(cat thermal.log)"
+check_probe sc/kerr_accrDisk_thermal.mp4 nb_read_frames=8 duration=32.000000
+check_probe sc/cards/kerr_accrDisk_thermal.mp4 nb_read_frames=4
+check_probe sc/showcase.mp4 nb_read_frames=68 duration=272.000000
 
 # --- bad flags -----------------------------------------------------------------
 expect_error quality "--quality 'draft': choose preview or production" -- "$LIGHTCONE" showcase --quality draft --out bad

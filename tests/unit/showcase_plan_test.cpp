@@ -53,6 +53,14 @@ TEST(ShowcasePlan, PreviewKeepsTheStorysLengthWithFirstAndLastFrames) {
   }
 }
 
+TEST(ShowcasePlan, ThermalAddsTheFourthSequence) {
+  const ShowcasePlan plan = plan_showcase({ShowcaseQuality::preview, {}, {}, true}, project_shots);
+  ASSERT_EQ(plan.sequences.size(), 4u);
+  EXPECT_EQ(plan.sequences[3].name, "kerr_accrDisk_thermal");
+  EXPECT_EQ(plan.sequences[3].shot_frames, 900);  // the first storyboard's
+  EXPECT_EQ(plan.sequences[3].frames.size(), 90u);
+}
+
 TEST(ShowcasePlan, SizeAndRateOverride) {
   const ShowcasePlan plan = plan_showcase({ShowcaseQuality::preview, "64x36", 0.1}, project_shots);
   EXPECT_EQ(plan.width, 64);
