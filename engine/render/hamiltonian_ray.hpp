@@ -97,13 +97,7 @@ class HamiltonianRay {
       if (lz < t.best()) ++crossings_;
     }
     if (winner == no_object) return false;
-    const RayState y = step.at(t.best());
-    for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
-      if (index == winner) {
-        const double g = frequency_ratio(y, o.emitter_velocity(st, y));
-        hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y, seen(g, y)), g, y, t.best(), res);
-      }
-    });
+    hit_object(step.at(t.best()), t.best(), winner, res);
     return true;
   }
 
@@ -156,6 +150,19 @@ class HamiltonianRay {
   [[gnu::noinline]] SeenShift seen_in_parts(double g, const RayState& y) const {
     const Vec4 x = {y[0], y[1], y[2], y[3]};
     return sc_.light.seen(g, observer_reference() * frequency_ratio(y, zamo_velocity(sc_.spacetime, x)));
+  }
+  // Ends the ray at the event y (affine parameter lambda) on the object
+  // numbered `winner`: its frequency ratio and colour.  Kept out of line:
+  // it runs once per ray, while the visitor is inlined into every step of
+  // the integration, where its size decides what else the compiler inlines.
+  [[gnu::noinline]] void hit_object(const RayState& y, double lambda, std::size_t winner, RayResult& res) {
+    const S& st = sc_.spacetime;
+    for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
+      if (index == winner) {
+        const double g = frequency_ratio(y, o.emitter_velocity(st, y));
+        hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y, seen(g, y)), g, y, lambda, res);
+      }
+    });
   }
   // Ends the ray at the event y (affine parameter lambda) on an object.
   bool hit(HitKind kind, const Color& color, double g, const RayState& y, double lambda, RayResult& res) {

@@ -86,8 +86,11 @@ class Dihole : public CartesianScene {
   // Hamilton's equations for H = 1/2 (-U^2 p_t^2 + U^-2 |p|^2) on the state
   // y = (x^mu, p_mu).  T is double or a vector of lanes (core/lanes.hpp),
   // one ray each: the potential's algebra inline, as potential() has it.
+  // Always inlined into the integrator's stages: the compiler's own choice
+  // there changes with unrelated code elsewhere in the renderer
+  // (docs/performance.md, change 32).
   template <class T>
-  void rhs(const std::array<T, 8>& y, std::array<T, 8>& dy) const {
+  [[gnu::always_inline]] void rhs(const std::array<T, 8>& y, std::array<T, 8>& dy) const {
     const T X = y[1], Y = y[2], z1 = y[3] - d_, z2 = y[3] + d_;
     const T rho2 = X * X + Y * Y;
     const T i1 = 1.0 / sqrt_of(rho2 + z1 * z1), i2 = 1.0 / sqrt_of(rho2 + z2 * z2);
