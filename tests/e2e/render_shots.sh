@@ -69,13 +69,18 @@ for a, b in zip(full, dim):
 sys.exit(0 if worst < 0.05 else 1)
 PY
 
-# The shipped glowing-disk shot renders, its disk blueshifted on one side
-# and redshifted on the other (hit.g above and below 1).
-"$LIGHTCONE" render "$SRC/shots/glowing_disk.lua" --out glow --size 64x36 --layers 2>glow.log ||
-  fail "render glowing_disk: $(cat glow.log)"
-gl=$(oiiotool glow/glowing_disk.0000.exr --ch hit.g --printstats 2>&1)
+# The shipped light-model shot renders: its glowing disk (frame 5) is
+# blueshifted on one side (hit.g above 1.1); the checker seen shifted
+# (frame 3) looks different from the paper's look (frame 0) though every
+# hit's g is the same.
+"$LIGHTCONE" render "$SRC/shots/light_models.lua" --frames 0:5 --out glow --size 64x36 --layers 2>glow.log ||
+  fail "render light_models: $(cat glow.log)"
+gl=$(oiiotool glow/light_models.0005.exr --ch hit.g --printstats 2>&1)
 gmax=$(echo "$gl" | sed -n 's/.*Stats Max: \([0-9.]*\).*/\1/p')
-awk -v m="$gmax" 'BEGIN { exit !(m > 1.1) }' || fail "glowing_disk: no blueshifted pixel: $gl"
+awk -v m="$gmax" 'BEGIN { exit !(m > 1.1) }' || fail "glowing disk: no blueshifted pixel: $gl"
+cmp -s glow/light_models.0000.png glow/light_models.0003.png && fail "the shifted checker looks like the paper's"
+oiiotool glow/light_models.0000.exr --ch hit.g -o g0.exr && oiiotool glow/light_models.0003.exr --ch hit.g -o g3.exr
+idiff -a g0.exr g3.exr >gdiff.log 2>&1 || fail "hit.g depends on the light model: $(cat gdiff.log)"
 
 # One thread and two threads give the same pixels.
 "$LIGHTCONE" render "$SRC/shots/bench/kerr_disk.lua" --out frames1 --size 48x32 --layers --threads 1 2>/dev/null
