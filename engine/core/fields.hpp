@@ -99,6 +99,13 @@ inline std::string range_text(const std::optional<Bound>& lo, const std::optiona
   return {};
 }
 
+// The same for a whole-number field: "0 or 1" where it has two values.
+inline std::string integer_range_text(const std::optional<Bound>& lo, const std::optional<Bound>& hi) {
+  if (lo && hi && lo->inclusive && hi->inclusive && hi->value == lo->value + 1)
+    return fmt::format("{:.12g} or {:.12g}", lo->value, hi->value);
+  return range_text(lo, hi);
+}
+
 // Whether v lies in the range (NaN never does).
 inline bool in_range(double v, const std::optional<Bound>& lo, const std::optional<Bound>& hi) {
   if (std::isnan(v)) return false;

@@ -18,6 +18,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string_view>
 #include <tuple>
 #include <utility>
@@ -47,6 +48,14 @@ struct LightParams {
       field("kinematic", &LightParams::kinematic, std::optional<int>{1}, at_least(0), at_most(1),
             "shifted: 1 includes g's kinematic part (the observer's and the emitter's motion against the ZAMOs)"),
   };
+  // The switches belong to the shifted model: a geometric light that sets
+  // one would be silently ignored.  Throws std::invalid_argument.
+  void validate() const {
+    if (model == LightModel::geometric && !(color_shift && beaming && gravitational && kinematic))
+      throw std::invalid_argument(
+          "color_shift, beaming, gravitational and kinematic choose what model = \"shifted\" shows; the geometric "
+          "model shows textures as they are (set model = \"shifted\", or leave the switches out)");
+  }
 };
 
 // How one hit's light is seen: the ratio its spectrum is shifted by and the

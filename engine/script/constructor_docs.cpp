@@ -51,6 +51,7 @@ std::string table(std::string_view name, std::string_view heading = {}) {
     using T = typename std::decay_t<decltype(f)>::Value;
     std::string range = range_text(f.lo, f.hi);
     if constexpr (Choice<T>) range = choices_text<T>();
+    else if constexpr (std::is_integral_v<T>) range = integer_range_text(f.lo, f.hi);
     out += fmt::format("| `{}` | {} | {} | {} |\n", f.name, cell(fallback), range.empty() ? "" : range + unit,
                        cell(f.doc));
   });

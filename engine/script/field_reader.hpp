@@ -68,7 +68,7 @@ void read_fields(lua::TableReader& t, S& out) {
       static_assert(std::is_integral_v<T>, "read_fields reads numbers, strings and palettes; read other fields by hand");
       const std::int64_t i = f.fallback ? t.integer_or(f.name, static_cast<std::int64_t>(*f.fallback)) : t.integer(f.name);
       if (!in_range(static_cast<double>(i), f.lo, f.hi))
-        throw lua::FieldError(fmt::format("{}: field '{}' must be {}{}{}, got {}", t.context(), f.name, range_text(f.lo, f.hi),
+        throw lua::FieldError(fmt::format("{}: field '{}' must be {}{}{}, got {}", t.context(), f.name, integer_range_text(f.lo, f.hi),
                                           f.unit.empty() ? "" : " ", f.unit, i));
       v = static_cast<T>(i);
     }

@@ -116,6 +116,11 @@ LightParams read_light(TableReader& t) {
   expect_kind(t, {"light"}, "lc.light{...}");
   LightParams p;
   read_fields(t, p);
+  try {
+    p.validate();
+  } catch (const std::invalid_argument& e) {
+    fail(t, e.what());
+  }
   t.finish();
   return p;
 }

@@ -138,7 +138,13 @@ TEST(Shot, LightIsReadAndCheckedAtTheShotsLine) {
             0u);
   const fs::path out_of_range = shot_with("lc.light{model = 'shifted', beaming = 2}");
   EXPECT_NE(error_of<lc::lua::ScriptError>([&] { lc::Shot(out_of_range).frame(0); })
-                .find(":5: light: field 'beaming' must be between 0 and 1, got 2"),
+                .find(":5: light: field 'beaming' must be 0 or 1, got 2"),
+            std::string::npos);
+  // A switch without the shifted model would be ignored: refused.
+  const fs::path ignored = shot_with("lc.light{beaming = 0}");
+  EXPECT_NE(error_of<lc::lua::ScriptError>([&] { lc::Shot(ignored).frame(0); })
+                .find(":5: light: color_shift, beaming, gravitational and kinematic choose what model = \"shifted\" "
+                      "shows"),
             std::string::npos);
   const fs::path not_light = shot_with("lc.camera{}");
   EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot(not_light).frame(0); }).find("expected a value made by lc.light{...}, got a camera"),
