@@ -25,6 +25,16 @@ std::string kind_of(TableReader& t) {
   return t.optional_string("__kind").value_or("");
 }
 
+// What p.validate() says is wrong with p, reported at the table t.
+template <class P>
+void validate_at(TableReader& t, const P& p) {
+  try {
+    p.validate();
+  } catch (const std::invalid_argument& e) {
+    fail(t, e.what());
+  }
+}
+
 void expect_kind(TableReader& t, std::initializer_list<const char*> kinds, const char* made_by) {
   const std::string k = kind_of(t);
   for (const char* want : kinds)
@@ -49,13 +59,7 @@ typename R::Spec read_kind(TableReader& t, const char* what, const char* more = 
     typename K::Params p;
     read_fields(t, p);
     extra(&p);
-    if constexpr (requires { p.validate(); }) {
-      try {
-        p.validate();
-      } catch (const std::invalid_argument& e) {
-        fail(t, e.what());
-      }
-    }
+    if constexpr (requires { p.validate(); }) validate_at(t, p);
     t.finish();
     out = p;
   });
@@ -116,11 +120,7 @@ LightParams read_light(TableReader& t) {
   expect_kind(t, {"light"}, "lc.light{...}");
   LightParams p;
   read_fields(t, p);
-  try {
-    p.validate();
-  } catch (const std::invalid_argument& e) {
-    fail(t, e.what());
-  }
+  validate_at(t, p);
   t.finish();
   return p;
 }
@@ -227,11 +227,7 @@ SceneSpec read_scene_spec(TableReader& t) {
 ShotInfo read_shot_info(TableReader& t) {
   ShotInfo s;
   read_fields(t, s);
-  try {
-    s.validate();
-  } catch (const std::invalid_argument& e) {
-    fail(t, e.what());
-  }
+  validate_at(t, s);
   return s;
 }
 
