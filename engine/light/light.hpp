@@ -88,7 +88,6 @@ class Light {
   // spectra: the table of texture spectra (shared by the shot's frames).
   Light(const LightParams& p, std::shared_ptr<const SpectralShift> spectra) : p_(p), spectra_(std::move(spectra)) {}
 
-  const LightParams& params() const { return p_; }
   // Whether seen() needs g's gravitational part (else any value will do).
   bool splits() const {
     return p_.model == LightModel::shifted && (p_.color_shift || p_.beaming) && !(p_.gravitational && p_.kinematic);

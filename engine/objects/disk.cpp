@@ -6,8 +6,8 @@
 namespace lc {
 
 void Disk::glow(const std::optional<NovikovThorneFlux>& flux, ShotResources& res) {
-  const std::string how = p_.temperature > 0.0 ? fmt::format("temperature = {}", p_.temperature)
-                                                : fmt::format("solar_masses = {}, accretion_rate = {}", p_.solar_masses,
+  const std::string how = p_.temperature > 0.0 ? fmt::format("temperature = {:g}", p_.temperature)
+                                                : fmt::format("solar_masses = {:g}, accretion_rate = {:g}", p_.solar_masses,
                                                               p_.accretion_rate);
   if (!flux)
     throw std::invalid_argument(fmt::format(

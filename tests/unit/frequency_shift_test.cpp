@@ -302,6 +302,28 @@ TEST(GlowingDisk, InPhysicalUnitsItsLightIsInCandelasPerSquareMetre) {
   EXPECT_GT(disk, 20);
 }
 
+TEST(GlowingDisk, PhysicalUnitsBeyondWhatCanBeShownAreRefused) {
+  // 1e12 Suns accreting 1e-30 of a Sun a year: the hottest ring would be
+  // far below 1 K.  A clear error naming both fields, no scene.
+  SceneSpec fs;
+  fs.spacetime = Kerr(1, 0.5);
+  fs.observer.position = {0, 30, 80 * degree, 0};
+  Disk::Params d{3, 12, 4, 12};
+  d.solar_masses = 1e12;
+  d.accretion_rate = 1e-30;
+  fs.objects.push_back(d);
+  ShotResources res;
+  try {
+    build_scene(fs, 4, 4, res);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("solar_masses = 1e+12, accretion_rate = 1e-30 makes the hottest ring"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("outside the 1 K to 1e9 K lightcone shows"), std::string::npos) << e.what();
+  }
+}
+
 TEST(GlowingDisk, NeedsAKerrHole) {
   // Around a dihole, and around an extremal Kerr hole (its disk's inner
   // edge would be on the horizon): a clear error, no scene.
