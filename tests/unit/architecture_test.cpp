@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 // the levels below.  Folders on one level must not include each other.
 const std::vector<std::vector<std::string>> engine_levels = {
     {"core"},
-    {"light"},
+    {"light", "stars"},
     {"lua", "image", "spacetime"},
     {"observer"},
     {"geodesic"},
