@@ -66,12 +66,11 @@ std::optional<std::array<double, 2>> SkyQuad::locate(const Vec3& d) const {
     const double dx = ex + v * gx, dy = ey + v * gy;
     return std::abs(dx) > std::abs(dy) ? (hx - v * fx) / dx : (hy - v * fy) / dy;
   };
-  // Rounding may put a corner or an edge a hair outside: 1e-12 of slack,
-  // then clamped (a direction on a shared edge is then in both quads).
-  auto inside = [](double x) { return x >= -1e-12 && x <= 1.0 + 1e-12; };
-  auto clamped = [](double u, double v) {
-    return std::array<double, 2>{std::clamp(u, 0.0, 1.0), std::clamp(v, 0.0, 1.0)};
-  };
+  // Rounding may put a corner or an edge a hair outside: locate_slack of
+  // slack (a direction on a shared edge is then in both quads; callers that
+  // must count it once keep u, v < 1 - locate_slack).
+  auto inside = [](double x) { return x >= -locate_slack && x <= 1.0 + locate_slack; };
+  auto clamped = [](double u, double v) { return std::array<double, 2>{u, v}; };
   const double scale = std::abs(k1) + std::abs(k0) + std::abs(k2);
   if (std::abs(k2) <= 1e-12 * scale) {
     // A parallelogram: the equation is linear in v.

@@ -20,12 +20,15 @@ double spherical_triangle_area(const Vec3& a, const Vec3& b, const Vec3& c);
 // The spherical quadrilateral with corners c[0] (u = 0, v = 0), c[1] (1, 0),
 // c[2] (1, 1), c[3] (0, 1), unit vectors, seen from the centre of the unit
 // sphere: corners in order around it, either orientation.
+inline constexpr double locate_slack = 1e-12;
+
 struct SkyQuad {
   std::array<Vec3, 4> c;
 
   // Its solid angle (sr): the two triangles (0, 1, 2) and (0, 2, 3).
   double area() const;
-  // The bilinear coordinates (u, v) in [0, 1]^2 of the unit direction d,
+  // The bilinear coordinates (u, v) in [0, 1]^2 (to within locate_slack)
+  // of the unit direction d,
   // found in the plane tangent to the sphere at the quad's centre (the
   // gnomonic projection keeps great circles straight, so the quad's edges
   // stay straight); nullopt when d is not inside.
