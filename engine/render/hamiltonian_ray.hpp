@@ -47,6 +47,7 @@ void sky_sample(const SceneIn<S>& sc, const Vec4& x, const Vec4& p, RaySample& o
   double sphi = std::atan2(d[1], d[0]);
   if (sphi < 0) sphi += two_pi;
   out.color = sc.sky.color(theta, sphi);
+  out.sky = {theta, sphi};
 }
 
 

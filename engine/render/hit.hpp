@@ -14,6 +14,9 @@ namespace lc {
 struct RaySample {
   Color color{0.0f, 0.0f, 0.0f};  // linear RGB
   HitKind kind = HitKind::gave_up;
+  // Where a sky ray went: its direction at infinity (theta from +z, phi in
+  // [0, 2 pi)), for stars drawn as points (stars/star_pass.hpp).
+  std::array<double, 2> sky{0.0, 0.0};
   // The event where the ray ended (disk or object hit, capture, escape), in
   // Boyer–Lindquist r and phi (phi in [0, 2 pi)) for Kerr, spherical r and
   // phi about the origin otherwise; t is its scene time minus the observer's.
