@@ -2,10 +2,12 @@
 // Stars as points, added to a finished frame (docs/architecture.md: the
 // star pass runs after the pixels): each quad of four neighbouring pixel
 // centres whose rays all reached the sky sees a patch of it (stars/
-// sky_quad.hpp); a star in that patch sends the camera flux F mu, mu =
-// Omega_pixel / Omega_patch (the lensing magnification: the patch is the
-// pixel's share of sky), spread over the quad's four pixels with bilinear
-// weights.  The weights sum to 1, so a star's light is conserved as it
+// sky_quad.hpp); a star in that patch sends the camera flux F mu, spread
+// over the quad's four pixels with bilinear weights.  mu, the lensing
+// magnification Omega_camera / Omega_sky, is interpolated at the star from
+// the quad's corners, each pixel's 1 / (the mean patch around it): second
+// order, where one patch's area alone was off by percents on a demagnified
+// image.  The weights sum to 1, so a star's light is conserved as it
 // moves across pixels (no flicker), and a star has as many images as
 // patches that hold it, each with its own magnification.
 
