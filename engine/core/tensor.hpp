@@ -51,6 +51,11 @@ inline Mat4 multiply(const Mat4& a, const Mat4& b) {
 }
 
 inline double norm3(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 unit3(const Vec3& v) {
+  const double n = norm3(v);
+  return {v[0] / n, v[1] / n, v[2] / n};
+}
 
 }  // namespace lc
 

@@ -47,7 +47,8 @@ void sky_sample(const SceneIn<S>& sc, const Vec4& x, const Vec4& p, RaySample& o
   double sphi = std::atan2(d[1], d[0]);
   if (sphi < 0) sphi += two_pi;
   out.color = sc.sky.color(theta, sphi);
-  out.sky = {theta, sphi};
+  out.sky.theta = theta;
+  out.sky.phi = sphi;
 }
 
 
@@ -124,7 +125,10 @@ class HamiltonianRay {
     sky_sample(sc_, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out_);
     out_.g = 1.0 / res.y[4];  // the source at rest far away: p.u = p_t
     // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
-    out_.color = sc_.light.seen(out_.g, observer_reference() * out_.g).texture(out_.color);
+    const SeenShift shift = sc_.light.seen(out_.g, observer_reference() * out_.g);
+    out_.color = shift.texture(out_.color);
+    out_.sky.color = static_cast<float>(shift.color);
+    out_.sky.beaming = static_cast<float>(shift.beaming);
     return out_;
   }
 

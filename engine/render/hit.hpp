@@ -6,6 +6,7 @@
 
 #include "core/color.hpp"
 #include "core/hit_kind.hpp"
+#include "core/sky_point.hpp"
 #include "geodesic/stop_reason.hpp"
 
 namespace lc {
@@ -14,9 +15,7 @@ namespace lc {
 struct RaySample {
   Color color{0.0f, 0.0f, 0.0f};  // linear RGB
   HitKind kind = HitKind::gave_up;
-  // Where a sky ray went: its direction at infinity (theta from +z, phi in
-  // [0, 2 pi)), for stars drawn as points (stars/star_pass.hpp).
-  std::array<double, 2> sky{0.0, 0.0};
+  SkyPoint sky;  // where a sky ray went, for point stars
   // The event where the ray ended (disk or object hit, capture, escape), in
   // Boyer–Lindquist r and phi (phi in [0, 2 pi)) for Kerr, spherical r and
   // phi about the origin otherwise; t is its scene time minus the observer's.

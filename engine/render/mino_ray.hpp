@@ -133,10 +133,14 @@ class MinoRay {
     const double theta = std::acos(std::clamp(direction_[2] / n2, -1.0, 1.0));
     double sphi = std::atan2(direction_[1], direction_[0]);
     if (sphi < 0) sphi += two_pi;
-    out_.sky = {theta, sphi};
+    out_.sky.theta = theta;
+    out_.sky.phi = sphi;
     out_.g = -1.0 / start_.k.E;  // the source at rest far away: p.u = p_t = -E
     // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
-    out_.color = sc_.light.seen(out_.g, observer_reference_ * out_.g).texture(sc_.sky.color(theta, sphi));
+    const SeenShift shift = sc_.light.seen(out_.g, observer_reference_ * out_.g);
+    out_.color = shift.texture(sc_.sky.color(theta, sphi));
+    out_.sky.color = static_cast<float>(shift.color);
+    out_.sky.beaming = static_cast<float>(shift.beaming);
     return out_;
   }
 

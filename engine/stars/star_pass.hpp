@@ -1,49 +1,48 @@
 #pragma once
-// Stars as points, added to a finished frame (docs/architecture.md: the
-// star pass runs after the pixels): each quad of four neighbouring pixel
-// centres whose rays all reached the sky sees a patch of it (stars/
-// sky_quad.hpp); a star in that patch sends the camera flux F mu, spread
-// over the quad's four pixels with bilinear weights.  mu, the lensing
-// magnification Omega_camera / Omega_sky, is interpolated at the star from
-// the quad's corners, each pixel's 1 / (the mean patch around it): second
-// order, where one patch's area alone was off by percents on a demagnified
-// image.  The weights sum to 1, so a star's light is conserved as it
-// moves across pixels (no flicker), and a star has as many images as
-// patches that hold it, each with its own magnification.
+// Stars as points, added to a finished frame (docs/stars.md; the pipeline's
+// stage after the pixels): the rays of a frame form a grid, one per pixel
+// at a known point of it (core/sky_point.hpp), and each quad of four
+// neighbouring rays that all reached the sky sees a patch of it
+// (stars/sky_quad.hpp).  A star in that patch has an image there: its
+// place on the image is the patch's bilinear map of the star back onto the
+// quad's four image points, its magnification mu = Omega_camera /
+// Omega_sky is interpolated at the star from the grid's points (each the
+// ratio of the camera's to the sky's solid angle of the quads around it:
+// second order, where one quad's ratio alone was off by percents on a
+// demagnified image), and its light F mu is spread over the 2 x 2 pixels
+// nearest that place with a tent filter.  The weights sum to 1, so a
+// star's light is conserved as it moves across pixels (no flicker), and a
+// star has as many images as patches that hold it, each with its own
+// magnification.  Only pixels the camera saw sky through get stars: a star
+// behind the disk's edge in a quad that touches the disk is not drawn.
 
+#include <functional>
 #include <span>
-#include <vector>
 
-#include "core/color.hpp"
+#include "core/sky_point.hpp"
 #include "core/tensor.hpp"
-#include "stars/star_bins.hpp"
+#include "stars/star_field.hpp"
 
 namespace lc {
 
-struct PointStar {
-  Vec3 direction;  // unit vector on the sky (the trace chart's directions at infinity)
-  Color flux;      // linear RGB, per unit area facing it (what a pixel of solid angle Omega shows as flux / Omega)
-};
-
-// Where each pixel centre's ray went: its direction at infinity, or none
-// (it met the disk, an object or the horizon).  Row by row, width x height.
-struct SkyDirections {
-  int width = 0, height = 0;
-  std::vector<Vec3> direction;
-  std::vector<unsigned char> reached;  // 1 where the ray reached the sky
-};
-
 struct StarPassOptions {
-  double pixel_solid_angle = 0.0;  // the camera's, per pixel (sr): with max_magnification, the smallest patch
   double max_magnification = 1e4;  // mu is clamped here (caustics, where a patch shrinks to nothing)
   double max_patch_radius = 0.3;   // a patch wider (rad, centre to corner) straddles a branch of rays: skipped
+  // Glare: this fraction of each star's light is spread into a halo
+  // (1 + r^2 / a^2)^-2 of scale a = glare_radius pixels, cut at 8 a.
+  double glare = 0.0;
+  double glare_radius = 1.0;
 };
 
-// Adds the stars' light into `radiance` (width x height, linear RGB, row by
-// row).  Pixels on the image's edge get their outer quads from directions
-// extrapolated half a pixel beyond it.  Returns how many star images were
-// added.
-long add_point_stars(const SkyDirections& sky, std::span<const PointStar> stars, const StarBins& bins,
-                     const StarPassOptions& options, std::span<Color> radiance);
+// The camera's unit direction through image point (x, y) in pixel units
+// (the observer's local frame): the pixels' and the quads' solid angles.
+using CameraDirections = std::function<Vec3(double x, double y)>;
+
+// Adds the stars' light to `rgb` (linear RGB, 3 floats per pixel, row by
+// row, width x height); `sky` holds each pixel's ray (width x height).
+// Pixels on the image's edge get their outer quads from rays extrapolated
+// one pixel beyond it.  Returns how many star images were added.
+long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const StarField& field,
+                     const CameraDirections& camera, const StarPassOptions& options, std::span<float> rgb);
 
 }  // namespace lc

@@ -24,8 +24,8 @@ namespace fs = std::filesystem;
 // the levels below.  Folders on one level must not include each other.
 const std::vector<std::vector<std::string>> engine_levels = {
     {"core"},
-    {"light", "stars"},
-    {"lua", "image", "spacetime"},
+    {"light"},
+    {"lua", "image", "spacetime", "stars"},
     {"observer"},
     {"geodesic"},
     {"worldline"},

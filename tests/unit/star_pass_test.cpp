@@ -1,10 +1,13 @@
 // Stars as points on a finished frame (engine/stars/star_pass.hpp), in flat
 // space where the sky a pixel sees is its own solid angle: a star's light
 // lands within the 2 x 2 pixels around it at any field of view, its total
-// (radiance times each pixel's solid angle) is conserved to 1% as it pans
-// across pixels in tenth-pixel steps (landing exactly on pixel centres'
-// lines too: counted once), and a star behind an object (a pixel
-// whose ray did not reach the sky) is not drawn.
+// (radiance times each pixel's solid angle) is conserved to 1% and its
+// centroid follows it as it pans across pixels in tenth-pixel steps
+// (landing exactly on the rays' lines too: counted once), whether the rays
+// pass through the pixel centres or (adaptive sampling's first samples) a
+// quarter pixel off them, alternating along the row; glare spreads a share
+// of the light wider and keeps it; a star behind an object (a pixel whose
+// ray did not reach the sky) is not drawn.
 
 #include "stars/star_pass.hpp"
 
@@ -18,11 +21,6 @@
 namespace lc {
 namespace {
 
-Vec3 unit(Vec3 v) {
-  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  return {v[0] / n, v[1] / n, v[2] / n};
-}
-
 // A pinhole camera looking along +z: the direction through image point
 // (x, y) in pixels (centres at i + 0.5), horizontal field fov.
 struct Pinhole {
@@ -30,14 +28,21 @@ struct Pinhole {
   double fov;
   Vec3 at(double x, double y) const {
     const double t = std::tan(0.5 * fov * degree);
-    return unit({(2 * x / width - 1) * t, (2 * y - height) / width * t, 1});
+    return unit3({(2 * x / width - 1) * t, (2 * y - height) / width * t, 1});
   }
-  SkyDirections sky() const {
-    SkyDirections s{width, height, {}, {}};
+  // Each pixel's ray: through its centre, or (`adaptive`) through
+  // (0.25, 0.25) and (0.75, 0.75) of it alternately along the row.
+  std::vector<SkyPoint> sky(bool adaptive = false) const {
+    std::vector<SkyPoint> s;
     for (int j = 0; j < height; ++j)
       for (int i = 0; i < width; ++i) {
-        s.direction.push_back(at(i + 0.5, j + 0.5));
-        s.reached.push_back(1);
+        SkyPoint p;
+        p.dx = p.dy = adaptive ? (i % 2 == 0 ? 0.25f : 0.75f) : 0.5f;
+        const Vec3 d = at(i + p.dx, j + p.dy);
+        p.theta = std::acos(d[2]);
+        p.phi = std::atan2(d[1], d[0]);
+        if (p.phi < 0) p.phi += two_pi;
+        s.push_back(p);
       }
     return s;
   }
@@ -48,50 +53,69 @@ struct Pinhole {
 };
 
 struct Seen {
-  double total = 0.0;  // sum of radiance x pixel solid angle (first channel)
+  double total = 0.0, x = 0.0, y = 0.0;  // sum of radiance x pixel solid angle (first channel), its centroid
   int lit = 0, min_i = 1 << 30, max_i = -1, min_j = 1 << 30, max_j = -1;
 };
 
-Seen render(const Pinhole& cam, const SkyDirections& sky, const Vec3& star) {
-  std::vector<PointStar> stars = {{star, {1.0f, 1.0f, 1.0f}}};
-  const StarBins bins({star}, 1 * degree);
-  std::vector<Color> image(static_cast<std::size_t>(cam.width * cam.height), Color{0, 0, 0});
+Seen render(const Pinhole& cam, const std::vector<SkyPoint>& sky, const Vec3& star, double glare = 0.0) {
+  const StarField field({{star, {1.0f, 1.0f, 1.0f}}}, nullptr, nullptr);
+  std::vector<float> image(3 * static_cast<std::size_t>(cam.width * cam.height), 0.0f);
   StarPassOptions o;
-  o.pixel_solid_angle = cam.pixel_solid_angle(cam.width / 2, cam.height / 2);
-  add_point_stars(sky, stars, bins, o, image);
+  o.glare = glare;
+  o.glare_radius = 1.5;
+  add_point_stars(sky, cam.width, cam.height, field, [&](double x, double y) { return cam.at(x, y); }, o, image);
   Seen s;
   for (int j = 0; j < cam.height; ++j)
     for (int i = 0; i < cam.width; ++i) {
-      const float r = image[static_cast<std::size_t>(j * cam.width + i)][0];
+      const float r = image[3 * static_cast<std::size_t>(j * cam.width + i)];
       if (r <= 0) continue;
-      s.total += r * cam.pixel_solid_angle(i, j);
+      const double f = r * cam.pixel_solid_angle(i, j);
+      s.total += f;
+      s.x += f * (i + 0.5);
+      s.y += f * (j + 0.5);
       ++s.lit;
       s.min_i = std::min(s.min_i, i), s.max_i = std::max(s.max_i, i);
       s.min_j = std::min(s.min_j, j), s.max_j = std::max(s.max_j, j);
     }
+  s.x /= s.total;
+  s.y /= s.total;
   return s;
 }
 
 TEST(StarPass, AStarIsSharpAndItsLightConservedAsItPans) {
-  for (const double fov : {1.0, 20.0, 60.0, 120.0}) {
-    const Pinhole cam{64, 36, fov};
-    const SkyDirections sky = cam.sky();
-    double lo = 1e300, hi = 0;
-    for (int step = 0; step <= 20; ++step) {
-      const double x = 30.3 + 0.1 * step, y = 17.45 + 0.037 * step;
-      const Seen s = render(cam, sky, cam.at(x, y));
-      EXPECT_LE(s.max_i - s.min_i, 1) << "fov " << fov << " x " << x;  // within the 2 x 2 pixel filter
-      EXPECT_LE(s.max_j - s.min_j, 1) << "fov " << fov << " y " << y;
-      lo = std::min(lo, s.total), hi = std::max(hi, s.total);
+  for (const bool adaptive : {false, true})
+    for (const double fov : {1.0, 20.0, 60.0, 120.0}) {
+      const Pinhole cam{64, 36, fov};
+      const std::vector<SkyPoint> sky = cam.sky(adaptive);
+      double lo = 1e300, hi = 0;
+      for (int step = 0; step <= 20; ++step) {
+        const double x = 30.3 + 0.1 * step, y = 17.45 + 0.037 * step;
+        const Seen s = render(cam, sky, cam.at(x, y));
+        const std::string where = "fov " + std::to_string(fov) + (adaptive ? " adaptive" : "") + " x " + std::to_string(x);
+        EXPECT_LE(s.max_i - s.min_i, 1) << where;  // within the 2 x 2 pixel filter
+        EXPECT_LE(s.max_j - s.min_j, 1) << where;
+        // The centroid within 0.05 pixels (wide fields stretch the pixels
+        // unevenly across the filter).
+        EXPECT_NEAR(s.x, x, 0.05) << where;
+        EXPECT_NEAR(s.y, y, 0.05) << where;
+        lo = std::min(lo, s.total), hi = std::max(hi, s.total);
+      }
+      EXPECT_NEAR(lo, 1.0, 0.01) << "fov " << fov << (adaptive ? " adaptive" : "");
+      EXPECT_NEAR(hi, 1.0, 0.01) << "fov " << fov << (adaptive ? " adaptive" : "");
     }
-    EXPECT_NEAR(lo, 1.0, 0.01) << "fov " << fov;
-    EXPECT_NEAR(hi, 1.0, 0.01) << "fov " << fov;
-  }
+}
+
+TEST(StarPass, GlareSpreadsAShareOfTheLightAndKeepsIt) {
+  const Pinhole cam{64, 36, 20};
+  const Seen sharp = render(cam, cam.sky(), cam.at(30.3, 17.6));
+  const Seen glared = render(cam, cam.sky(), cam.at(30.3, 17.6), 0.3);
+  EXPECT_NEAR(glared.total, sharp.total, 0.01 * sharp.total);
+  EXPECT_GT(glared.max_i - glared.min_i, 8);  // 8 a = 12 pixels each way
 }
 
 TEST(StarPass, StarsAtTheImagesEdgeAndBehindObjects) {
   const Pinhole cam{32, 18, 40};
-  SkyDirections sky = cam.sky();
+  std::vector<SkyPoint> sky = cam.sky();
   // At the outermost pixel centres, all of a star's light is in the image;
   // between them and the edge it is still drawn (from directions
   // extrapolated beyond it), the pixel filter's share outside it lost: 0.7
@@ -102,7 +126,7 @@ TEST(StarPass, StarsAtTheImagesEdgeAndBehindObjects) {
   // Outside the image: nothing.
   EXPECT_EQ(render(cam, sky, cam.at(-3.0, 9.0)).lit, 0);
   // Pixel (10, 5) met an object: a star beside its centre is hidden.
-  sky.reached[5 * 32 + 10] = 0;
+  sky[5 * 32 + 10].theta = -1;
   EXPECT_EQ(render(cam, sky, cam.at(10.6, 5.6)).lit, 0);
 }
 
