@@ -192,7 +192,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
 
   farm::WorkQueue queue(job.rs, job.layout, plan.todo,
                         {.preview_every = job.preview, .max_open_frames = farm::open_frames_for(std::max(threads, 1), job.layout.stripes())});
-  farm::StoreSink sink(store, survey, info, job.rs, preview_rows(queue));
+  farm::StoreSink sink(store, survey, info, job.rs, preview_rows(queue), job.shot->asset_dirs());
   farm::Progress progress(farm::progress_style_for(stderr, cmd.progress), cmd.progress);
   int cores = threads;
   const double cpu_at_start = master_cpu_seconds();

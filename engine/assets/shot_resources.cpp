@@ -70,6 +70,22 @@ std::shared_ptr<const Texture> ShotResources::starfield(std::uint32_t seed, int 
   });
 }
 
+std::shared_ptr<const Texture> ShotResources::sky_glow(std::uint32_t seed, int width) {
+  return get<Texture>(fmt::format("glow {} {}", seed, width), "a sky's glow", [&] {
+    FrameImage img = render_sky_glow(width, width / 2, seed);
+    auto t = std::make_shared<const Texture>(Texture::from_pixels(img.width, img.height, std::move(img.rgb)));
+    return std::pair{t, t->bytes()};
+  });
+}
+
+std::shared_ptr<const StarField> ShotResources::star_field(const std::string& key,
+                                                           const std::function<StarField()>& make) {
+  return get<StarField>("point stars " + key, "a sky's point stars", [&] {
+    auto f = std::make_shared<const StarField>(make());
+    return std::pair{f, f->bytes()};
+  });
+}
+
 std::shared_ptr<const BlackbodyColors> ShotResources::blackbody_colors(double reference) {
   return get<BlackbodyColors>(fmt::format("blackbody {:a}", reference), "blackbody colours", [&] {
     auto c = std::make_shared<const BlackbodyColors>(reference);

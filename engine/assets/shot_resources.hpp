@@ -1,10 +1,12 @@
 #pragma once
 // What a shot makes once and every frame shares: integrated worldlines,
-// loaded sky images, generated star fields, within a memory budget.
+// loaded sky images, generated star fields, point stars, within a memory
+// budget.
 
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -16,6 +18,7 @@
 #include "image/texture.hpp"
 #include "light/blackbody.hpp"
 #include "light/spectral_shift.hpp"
+#include "stars/star_field.hpp"
 #include "worldline/worldline.hpp"
 
 namespace lc {
@@ -35,6 +38,12 @@ class ShotResources {
   std::shared_ptr<const Texture> texture(const std::filesystem::path& file);
   // The procedural star field (render_starfield), made once per seed and size.
   std::shared_ptr<const Texture> starfield(std::uint32_t seed, int width);
+  // The procedural sky's glow without its stars (render_sky_glow), made once
+  // per seed and size.
+  std::shared_ptr<const Texture> sky_glow(std::uint32_t seed, int width);
+  // A sky's point stars under `key` (what they were made from), made by
+  // make() on first use.
+  std::shared_ptr<const StarField> star_field(const std::string& key, const std::function<StarField()>& make);
   // Blackbody colours with luminance 1 at `reference` K, made once per
   // reference (a table of ~50 KB that takes ~10 ms to make).
   std::shared_ptr<const BlackbodyColors> blackbody_colors(double reference);

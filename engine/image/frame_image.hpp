@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/sky_point.hpp"
+
 namespace lc {
 
 // Largest image side the image layer reads, writes or generates.  Anything
@@ -23,6 +25,10 @@ struct FrameImage {
     std::vector<float> values;  // width * height
   };
   std::vector<Layer> layers;
+  // Each pixel's ray where the frame's sky has stars drawn as points (the
+  // star pass reads them; render/renderer.hpp's prepare_frame makes room),
+  // else empty.  Not written to the frame's files.
+  std::vector<SkyPoint> sky;
 };
 
 }  // namespace lc

@@ -301,8 +301,7 @@ void add_stars(FrameImage& image, std::span<const Star> stars) {
   }
 }
 
-// Background and band, then the catalogue on top.
-FrameImage render_starfield(int width, int height, std::uint32_t seed) {
+FrameImage render_sky_glow(int width, int height, std::uint32_t seed) {
   if (const std::string problem = size_problem(width, height); !problem.empty())
     throw std::runtime_error("star field: " + problem);
   FrameImage image;
@@ -310,6 +309,12 @@ FrameImage render_starfield(int width, int height, std::uint32_t seed) {
   image.height = height;
   image.rgb.resize(3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   paint_background(image, seed);
+  return image;
+}
+
+// Background and band, then the catalogue on top.
+FrameImage render_starfield(int width, int height, std::uint32_t seed) {
+  FrameImage image = render_sky_glow(width, height, seed);
   const std::vector<Star> stars = starfield_catalogue(seed);
   add_stars(image, stars);
   return image;

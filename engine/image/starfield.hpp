@@ -44,6 +44,11 @@ std::vector<Star> starfield_catalogue(std::uint32_t seed);
 // whose rgb.size() != 3 * width * height.
 void add_stars(FrameImage& image, std::span<const Star> stars);
 
+// The sky for `seed` without its stars: the dark background and the band's
+// glow (the diffuse light behind point stars, stars/star_field.hpp), linear
+// RGB.  Throws std::runtime_error for a bad size, as render_starfield.
+FrameImage render_sky_glow(int width, int height, std::uint32_t seed);
+
 // The whole sky for `seed` at width x height, linear RGB, no layers.
 // Throws std::runtime_error for a size that is not positive or above
 // max_image_side.

@@ -55,12 +55,14 @@ inline LayerValues layer_values(const RaySample& s) {
 }
 
 // What a frame uses of a traced ray: its colour, its hit kind (adaptive
-// sampling compares those) and its layer values (for the pixel's centre).
+// sampling compares those), its layer values (for the pixel's centre) and
+// where it went on the sky (for point stars).
 struct FrameSample {
   Color color{};
   LayerValues layers{};
   HitKind kind = HitKind::gave_up;
+  SkyPoint sky{};
 };
-inline FrameSample frame_sample(const RaySample& s) { return {s.color, layer_values(s), s.kind}; }
+inline FrameSample frame_sample(const RaySample& s) { return {s.color, layer_values(s), s.kind, s.sky}; }
 
 }  // namespace lc

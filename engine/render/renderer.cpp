@@ -26,6 +26,12 @@ FrameImage make_frame(const RenderSettings& rs) {
   return img;
 }
 
+void prepare_frame(const Scene& scene, FrameImage& image) {
+  const bool stars = std::visit([](const auto& sc) { return sc.sky.point_stars() != nullptr; }, scene);
+  const std::size_t n = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+  if (stars && image.sky.size() != n) image.sky.assign(n, SkyPoint{});
+}
+
 namespace {
 
 // The sub-pixel (a, b) of an N x N grid traced first in pixel column i when
@@ -78,6 +84,9 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
   const bool adaptive = rs.adaptive && N >= 2;
   const int centre = N % 2 == 1 ? (N / 2) * N + N / 2 : -1;  // index b * N + a of the centre sample, if any
   const std::size_t W = static_cast<std::size_t>(rs.width);
+  // Each pixel's first sample is its ray for point stars (their grid: a
+  // fixed point of every pixel, traced whatever adaptive sampling does).
+  const bool sky_points = !img.sky.empty();
   auto first_index = [&](std::size_t i) {
     const auto [a, b] = first_sample(N, i);
     return static_cast<std::size_t>(b) * N + a;
@@ -112,6 +121,7 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
       for (const std::size_t g : where) {
         if (kept && kept->has(g)) {
           grid[g] = kept->get(g);
+          if (sky_points && g % NN == first_index(g / NN)) grid[g].sky = kept->sky(g / NN);
           ++stats.reused;
         } else {
           tracing.push_back(g);
@@ -122,8 +132,12 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
       trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
       count(traced);
       for (std::size_t n = 0; n < tracing.size(); ++n) {
-        grid[tracing[n]] = frame_sample(traced[n]);
-        if (kept) kept->put(tracing[n], grid[tracing[n]], !traced[n].depends_on_time);
+        const std::size_t g = tracing[n];
+        grid[g] = frame_sample(traced[n]);
+        if (kept) {
+          kept->put(g, grid[g], !traced[n].depends_on_time);
+          if (sky_points && g % NN == first_index(g / NN)) kept->put_sky(g / NN, grid[g].sky, W);
+        }
       }
       if (adaptive)
         for (const std::size_t g : where) seen[g] = Perceived(grid[g]);
@@ -202,6 +216,13 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
       }
       const std::size_t p = static_cast<std::size_t>(j) * W + i;
       for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = static_cast<float>(acc[c] / n);
+      if (sky_points) {
+        const auto [a, b] = first_sample(N, i);
+        SkyPoint& sp = img.sky[p];
+        sp = grid[i * NN + first_index(i)].sky;
+        sp.dx = static_cast<float>((a + 0.5) / N);
+        sp.dy = static_cast<float>((b + 0.5) / N);
+      }
       if (rs.layers) {
         const FrameSample& centre_sample =
             has_centre_sample(i) ? grid[i * NN + static_cast<std::size_t>(centre)] : centres[i];
@@ -222,6 +243,7 @@ RenderStats render_rows(const Scene& scene, const RenderSettings& rs, std::span<
 FrameImage render_frame(const Scene& scene, const RenderSettings& rs, int threads, RenderStats* stats,
                         std::atomic<int>* rows_done) {
   FrameImage img = make_frame(rs);
+  prepare_frame(scene, img);
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::min(threads, rs.height);
   std::atomic<int> next{0};

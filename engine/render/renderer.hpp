@@ -41,8 +41,14 @@ class SampleMemo;
 // An empty frame of the right size (and layers, if asked for).
 FrameImage make_frame(const RenderSettings& rs);
 
-// Renders the listed rows into `image` (made by make_frame).  Thread-safe for
-// disjoint rows.  With a memo (made for the same settings), samples kept
+// Makes room in `image` (made by make_frame) for its rays' sky points when
+// the scene's sky has stars drawn as points (FrameImage::sky; the star pass
+// after the pixels reads them).  Not thread-safe: call it once for a frame
+// before rendering its rows.
+void prepare_frame(const Scene& scene, FrameImage& image);
+
+// Renders the listed rows into `image` (made by make_frame, then
+// prepare_frame for this scene).  Thread-safe for disjoint rows.  With a memo (made for the same settings), samples kept
 // from earlier frames of the same still_key are taken instead of traced,
 // and this frame's timeless ones kept: the image is the same either way.
 RenderStats render_rows(const Scene& scene, const RenderSettings& rs, std::span<const int> rows, FrameImage& image,

@@ -18,6 +18,7 @@ std::optional<SampleMemo::Row> SampleMemo::row(int j, const std::string& key) {
     // comes with a row's first use, so a process holds only its rows.
     slot.key = key;
     slot.samples.assign(row_size_, Kept{});
+    slot.sky.clear();
   }
   return row;
 }

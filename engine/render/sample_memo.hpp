@@ -40,6 +40,7 @@ class SampleMemo {
     std::mutex mutex;
     std::string key;  // still_key of the frame the samples came from
     std::vector<Kept> samples;
+    std::vector<SkyPoint> sky;  // where the sky is kept (point stars): per pixel, its grid's ray
   };
 
  public:
@@ -51,10 +52,17 @@ class SampleMemo {
    public:
     // Whether sample g was kept from an earlier frame.
     bool has(std::size_t g) const { return slot_->samples[g].kept; }
-    // Kept sample g (has(g)).
+    // Kept sample g (has(g)); its sky point is kept only where put_sky
+    // put it.
     FrameSample get(std::size_t g) const {
       const Kept& k = slot_->samples[g];
-      return {k.color, k.layers, static_cast<HitKind>(k.kind)};
+      return {k.color, k.layers, static_cast<HitKind>(k.kind), {}};
+    }
+    // The sky point of pixel i's ray for point stars, kept with its sample.
+    SkyPoint sky(std::size_t i) const { return i < slot_->sky.size() ? slot_->sky[i] : SkyPoint{}; }
+    void put_sky(std::size_t i, const SkyPoint& p, std::size_t width) {
+      slot_->sky.resize(width);
+      slot_->sky[i] = p;
     }
     // Sample g of this frame, kept for later frames unless its ray came near
     // a moving object (`keep` false: RaySample::depends_on_time).
@@ -77,10 +85,11 @@ class SampleMemo {
 
   // Samples per row: W N N grid samples and W centre rays.
   std::size_t row_size() const { return row_size_; }
-  // Bytes a memo for `rs` holds once every row has been used.
+  // Bytes a memo for `rs` holds once every row has been used (with point
+  // stars: a sky point per pixel too).
   static std::size_t bytes_for(const RenderSettings& rs) {
     return static_cast<std::size_t>(rs.height) * static_cast<std::size_t>(rs.width) *
-           (static_cast<std::size_t>(rs.supersample) * rs.supersample + 1) * sizeof(Kept);
+           ((static_cast<std::size_t>(rs.supersample) * rs.supersample + 1) * sizeof(Kept) + sizeof(SkyPoint));
   }
 
  private:

@@ -113,7 +113,7 @@ CameraSpec read_camera(TableReader& t) { return read_kind<CameraRegistry>(t, "a 
 
 
 SkySpec read_sky(TableReader& t) {
-  return read_kind<SkyRegistry>(t, "a sky constructor", ", or lc.starfield{...}");
+  return read_kind<SkyRegistry>(t, "a sky constructor");
 }
 
 LightParams read_light(TableReader& t) {

@@ -18,6 +18,7 @@
 #include "core/registry.hpp"
 #include "sky/checker_sky.hpp"
 #include "sky/image_sky.hpp"
+#include "sky/point_star_sky.hpp"
 #include "sky/star_sky.hpp"
 
 namespace lc {
@@ -27,7 +28,8 @@ class ShotResources;
 // What a sky is: name (its Lua constructor lc.<name>{...}), Params with
 // declared fields, assets(params) (the files it reads, for a shot's input
 // hash), a constructor from the parameters and the shot's resources, and
-// the colour for a direction (theta from +z, phi = atan2(y, x)).
+// the colour for a direction (theta from +z, phi = atan2(y, x)); a sky with
+// stars as points also has point_stars() (sky/point_star_sky.hpp).
 template <class K>
 concept SkyModel = requires(const K& k, const typename K::Params& p, ShotResources& res, double a) {
   requires std::same_as<std::remove_cv_t<decltype(K::name)>, std::string_view>;
@@ -38,7 +40,7 @@ concept SkyModel = requires(const K& k, const typename K::Params& p, ShotResourc
 };
 
 // Every sky kind, one line each.
-using SkyRegistry = Registry<CheckerSky, ImageSky, StarSky>;
+using SkyRegistry = Registry<CheckerSky, ImageSky, StarSky, PointStarSky>;
 
 namespace detail {
 // One assertion per sky, so that the compiler's notes name the one that
@@ -80,6 +82,17 @@ class Sky {
   // Colour in the direction (theta from +z, phi = atan2(y, x)).
   Color color(double theta, double phi) const {
     return std::visit([&](const auto& k) { return k.color(theta, phi); }, kind_);
+  }
+  // Its stars drawn as points after the pixels, if it has any.
+  const PointStars* point_stars() const {
+    return std::visit(
+        [](const auto& k) -> const PointStars* {
+          if constexpr (requires { k.point_stars(); })
+            return &k.point_stars();
+          else
+            return nullptr;
+        },
+        kind_);
   }
 
  private:

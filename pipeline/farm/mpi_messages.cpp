@@ -28,7 +28,7 @@ T get(std::span<const char> b, std::size_t& at) {
 }
 
 struct ResultHeader {
-  std::int32_t frame, stripe, pass, pad;
+  std::int32_t frame, stripe, pass, sky;  // sky: 1 when the rows' sky points follow their pixels
   std::int64_t rays, steps, gave_up, reused;
 };
 
@@ -87,18 +87,20 @@ std::vector<WorkItem> unpack_items(std::span<const char> b) {
 Bytes pack_result(const WorkItem& item, const RenderStats& stats, const FrameImage& canvas,
                   const std::vector<int>& rows) {
   const std::size_t w = static_cast<std::size_t>(canvas.width);
-  const std::size_t floats = rows.size() * w * (3 + canvas.layers.size());
+  const bool sky = !canvas.sky.empty();
+  const std::size_t bytes = rows.size() * w * ((3 + canvas.layers.size()) * sizeof(float) + (sky ? sizeof(SkyPoint) : 0));
   Bytes b;
-  b.reserve(sizeof(ResultHeader) + floats * sizeof(float));
-  put(b, ResultHeader{item.frame, item.stripe, static_cast<std::int32_t>(item.pass), 0, stats.rays, stats.steps,
-                      stats.gave_up, stats.reused});
-  auto append = [&](const float* p, std::size_t n) {
+  b.reserve(sizeof(ResultHeader) + bytes);
+  put(b, ResultHeader{item.frame, item.stripe, static_cast<std::int32_t>(item.pass), sky ? 1 : 0, stats.rays,
+                      stats.steps, stats.gave_up, stats.reused});
+  auto append = [&](const auto* p, std::size_t n) {
     const char* c = reinterpret_cast<const char*>(p);
-    b.insert(b.end(), c, c + n * sizeof(float));
+    b.insert(b.end(), c, c + n * sizeof(*p));
   };
   for (int j : rows) {
     append(canvas.rgb.data() + 3 * w * j, 3 * w);
     for (const auto& layer : canvas.layers) append(layer.values.data() + w * j, w);
+    if (sky) append(canvas.sky.data() + w * j, w);
   }
   return b;
 }
@@ -113,17 +115,21 @@ RenderStats unpack_result(std::span<const char> b, FrameImage& canvas, const std
   std::size_t at = 0;
   const auto h = get<ResultHeader>(b, at);
   const std::size_t w = static_cast<std::size_t>(canvas.width);
-  const std::size_t floats = rows.size() * w * (3 + canvas.layers.size());
-  if (b.size() != sizeof(ResultHeader) + floats * sizeof(float))
+  const std::size_t bytes =
+      rows.size() * w * ((3 + canvas.layers.size()) * sizeof(float) + (h.sky ? sizeof(SkyPoint) : 0));
+  if (b.size() != sizeof(ResultHeader) + bytes)
     throw std::runtime_error(fmt::format("farm message: stripe {} of frame {} has {} bytes, expected {}", h.stripe,
-                                         h.frame, b.size(), sizeof(ResultHeader) + floats * sizeof(float)));
-  auto take = [&](float* p, std::size_t n) {
-    std::memcpy(p, b.data() + at, n * sizeof(float));
-    at += n * sizeof(float);
+                                         h.frame, b.size(), sizeof(ResultHeader) + bytes));
+  // The first stripe with sky points makes room for the frame's.
+  if (h.sky) canvas.sky.resize(w * static_cast<std::size_t>(canvas.height));
+  auto take = [&](auto* p, std::size_t n) {
+    std::memcpy(p, b.data() + at, n * sizeof(*p));
+    at += n * sizeof(*p);
   };
   for (int j : rows) {
     take(canvas.rgb.data() + 3 * w * j, 3 * w);
     for (auto& layer : canvas.layers) take(layer.values.data() + w * j, w);
+    if (h.sky) take(canvas.sky.data() + w * j, w);
   }
   return {h.rays, h.steps, h.gave_up, h.reused};
 }

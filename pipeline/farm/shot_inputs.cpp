@@ -19,6 +19,8 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
   for (int f : frames) {
     const SceneSpec fs = shot.frame(f);
     out.frames[f].spacetime = describe(fs.spacetime);
+    out.frames[f].sky = fs.sky;
+    out.frames[f].camera = fs.camera;
     for (const std::string& asset : sky_assets(fs.sky)) {
       // The file the render will load (the same rules): checked before
       // anything reads it, for the hash below.

@@ -20,6 +20,8 @@ namespace lc::farm {
 
 struct FrameFacts {
   std::string spacetime;  // describe(spacetime), for the EXR header
+  SkySpec sky;            // for the stage after the pixels (point stars)
+  CameraSpec camera;
   std::string inputs;     // 16 hex digits
   InputParts parts;       // what `inputs` combines, for the journal
 };

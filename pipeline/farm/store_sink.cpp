@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "render/point_star_stage.hpp"
+
 namespace lc::farm {
 
 FrameSettings frame_settings(const RenderSettings& rs) {
@@ -10,16 +12,23 @@ FrameSettings frame_settings(const RenderSettings& rs) {
 }
 
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
-                     std::vector<int> preview_rows)
+                     std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs)
     : store_(store), survey_(survey), shot_name_(shot.name), fps_(shot.fps), display_(shot.display()), rs_(rs),
-      preview_rows_(std::move(preview_rows)) {}
+      preview_rows_(std::move(preview_rows)), resources_(std::move(asset_dirs)) {}
 
 void StoreSink::store(const CompletedFrame& cf) {
   if (cf.pass == Pass::preview) {
-    store_.write_preview(cf.frame, cf.image, preview_rows_, display_);
+    // Previews show no point stars: their missing rows are copies, and
+    // copied rays make no patches of sky.
+    FrameImage preview{cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}};
+    store_.write_preview(cf.frame, std::move(preview), preview_rows_, display_);
     return;
   }
   const FrameFacts& facts = survey_.frames.at(cf.frame);
+  // The stage after the pixels: a sky's point stars.
+  FrameImage image{cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}};
+  if (!cf.image.sky.empty())
+    draw_point_stars(Sky(facts.sky, resources_), Camera(facts.camera, image.width, image.height), cf.image.sky, image);
   // The same header in every mode (threads, ranks), so files are identical.
   // The frame rate lets `lightcone encode` play the frames at the shot's pace.
   const ImageMetadata metadata = {{"lightcone/shot", shot_name_},
@@ -28,7 +37,7 @@ void StoreSink::store(const CompletedFrame& cf) {
                                   {"lightcone/spacetime", facts.spacetime},
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};
-  store_.write_frame(cf.frame, cf.image, metadata, frame_settings(rs_), facts.inputs, facts.parts, cf.stats.rays,
+  store_.write_frame(cf.frame, image, metadata, frame_settings(rs_), facts.inputs, facts.parts, cf.stats.rays,
                      display_);
 }
 

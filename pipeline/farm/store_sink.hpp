@@ -5,15 +5,17 @@
 #include "farm/farm_run.hpp"
 #include "farm/frame_store.hpp"
 #include "farm/shot_inputs.hpp"
+#include "assets/shot_resources.hpp"
 
 namespace lc::farm {
 
 class StoreSink final : public FrameSink {
  public:
-  // `survey` gives each frame's input hash and spacetime; `preview_rows`
-  // the rows a preview frame has (sorted).
+  // `survey` gives each frame's input hash, spacetime, sky and camera;
+  // `preview_rows` the rows a preview frame has (sorted); `asset_dirs` the
+  // shot's (Shot::asset_dirs), where a point-star sky's background is read.
   StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
-            std::vector<int> preview_rows);
+            std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs);
   void store(const CompletedFrame& frame) override;
 
  private:
@@ -24,6 +26,7 @@ class StoreSink final : public FrameSink {
   DisplayTransform display_;  // the shot's, for the PNGs
   RenderSettings rs_;
   std::vector<int> preview_rows_;
+  ShotResources resources_;  // the skies' stars, for the stage after the pixels
 };
 
 // The journal's spelling of the settings.

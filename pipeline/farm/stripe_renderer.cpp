@@ -17,6 +17,12 @@ namespace lc::farm {
 RenderStats SceneStripeRenderer::render(const WorkItem& item, FrameImage& canvas) {
   const auto scene = scenes_.get(item.frame);
   const std::vector<int> rows = layout_.rows(item.stripe);
+  {
+    // The frame's first set makes room for its sky points; threads
+    // rendering other sets of the frame wait for that.
+    std::lock_guard lock(prepare_mutex_);
+    prepare_frame(*scene, canvas);
+  }
   return render_rows(*scene, rs_, rows, canvas, memo_.get());
 }
 

@@ -40,6 +40,7 @@ class SceneStripeRenderer final : public StripeRenderer {
   RenderSettings rs_;
   StripeLayout layout_;
   std::unique_ptr<SampleMemo> memo_;
+  std::mutex prepare_mutex_;
 };
 
 // A test hook (LIGHTCONE_TEST_PAUSE_AFTER, docs/cli.md; tests/e2e): renders
