@@ -239,6 +239,9 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
              cores == 1 ? "" : "s",
              p.stats.reused ? fmt::format("; {} samples reused from earlier frames", p.stats.reused) : "",
              plan.done.empty() ? "" : fmt::format("; {} more were finished before", plan.done.size()));
+  if (const double stars = sink.star_seconds(); stars > 0.0)
+    fmt::print(stderr, "render: point stars drawn in {:.2f} s ({:.1f}% of the time; on the {})\n", stars,
+               100 * stars / s, mpi ? "master" : "writer thread");
   if (mpi)
     fmt::print(stderr, "render: the master used {:.2f} s of CPU in {:.2f} s ({:.0f}% of one core) while {} worker threads rendered\n",
                master_cpu_seconds() - cpu_at_start, s, 100 * (master_cpu_seconds() - cpu_at_start) / s, cores);

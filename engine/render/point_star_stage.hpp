@@ -14,10 +14,11 @@
 
 namespace lc {
 
-// Adds the stars of `sky` to `image`'s colour when the sky has point stars
-// and the frame kept its rays' sky points (`rays`: FrameImage::sky, one per
-// pixel, or none).  `camera` is the frame's, for the image's size.  Returns
-// the number of star images drawn.
-long draw_point_stars(const Sky& sky, const Camera& camera, std::span<const SkyPoint> rays, FrameImage& image);
+// Adds `stars` (a sky's: sky_point_stars) to `image`'s colour from the
+// frame's rays' sky points (`rays`: FrameImage::sky, one per pixel).
+// `camera` is the frame's, for the image's size.  Returns the number of
+// star images drawn.
+long draw_point_stars(const PointStars& stars, const Camera& camera, std::span<const SkyPoint> rays,
+                      FrameImage& image);
 
 }  // namespace lc

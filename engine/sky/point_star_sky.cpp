@@ -81,12 +81,11 @@ void PointStarSky::Params::validate() const {
 // The stars are made once per shot for each catalogue, limit, seed, turn
 // and brightness (ShotResources); a catalogue that does not parse is an
 // error naming its file and line.
-PointStarSky::PointStarSky(const Params& p, ShotResources& res)
-    : rotate_(p.rotate), scale_(static_cast<float>(std::exp2(p.brightness))) {
-  if (p.background == StarBackground::generated) background_ = res.sky_glow(p.seed, glow_width);
+PointStars PointStarSky::stars(const Params& p, ShotResources& res) {
   const std::string key = fmt::format("{} {:a} {} {:a} {:a}", choice_name(p.catalogue), p.faintest, p.seed, p.rotate,
                                       p.brightness);
-  stars_.field = res.star_field(key, [&] {
+  PointStars out;
+  out.field = res.star_field(key, [&] {
     if (p.catalogue == StarCatalogue::kstars) {
       try {
         return kstars_stars(p, res);
@@ -96,8 +95,14 @@ PointStarSky::PointStarSky(const Params& p, ShotResources& res)
     }
     return generated_stars(p, res);
   });
-  stars_.glare = p.glare;
-  stars_.glare_size = p.glare_size;
+  out.glare = p.glare;
+  out.glare_size = p.glare_size;
+  return out;
+}
+
+PointStarSky::PointStarSky(const Params& p, ShotResources& res)
+    : rotate_(p.rotate), scale_(static_cast<float>(std::exp2(p.brightness))), stars_(stars(p, res)) {
+  if (p.background == StarBackground::generated) background_ = res.sky_glow(p.seed, glow_width);
 }
 
 Color PointStarSky::color(double theta, double phi) const {

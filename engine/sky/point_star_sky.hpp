@@ -90,6 +90,9 @@ class PointStarSky {
   static std::vector<std::string> assets(const Params&) { return {}; }
 
   PointStarSky(const Params& p, ShotResources& res);
+  // The stars alone, as the stage after the pixels needs them (without the
+  // background, which only the rays look up).
+  static PointStars stars(const Params& p, ShotResources& res);
 
   // The background in the direction (theta from +z, phi = atan2(y, x)).
   Color color(double theta, double phi) const;

@@ -6,6 +6,7 @@
 // built scene the sky with what it loaded (Sky).
 
 #include <array>
+#include <optional>
 #include <concepts>
 #include <string>
 #include <string_view>
@@ -72,6 +73,18 @@ inline std::vector<std::string> sky_assets(const SkySpec& spec) {
         return out;
       },
       spec);
+}
+
+// The point stars of the sky `spec` (without building the rest of it: the
+// stage after the pixels needs only them), if it has any.
+inline std::optional<PointStars> sky_point_stars(const SkySpec& spec, ShotResources& res) {
+  std::optional<PointStars> out;
+  SkyRegistry::for_each([&](auto* kind) {
+    using K = std::remove_pointer_t<decltype(kind)>;
+    if constexpr (requires(const typename K::Params& p) { K::stars(p, res); })
+      if (const auto* p = std::get_if<typename K::Params>(&spec)) out = K::stars(*p, res);
+  });
+  return out;
 }
 
 // The sky of a frame, built.

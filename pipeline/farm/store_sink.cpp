@@ -1,5 +1,7 @@
 #include "farm/store_sink.hpp"
 
+#include <chrono>
+
 #include <fmt/format.h>
 
 #include "render/point_star_stage.hpp"
@@ -27,8 +29,13 @@ void StoreSink::store(const CompletedFrame& cf) {
   const FrameFacts& facts = survey_.frames.at(cf.frame);
   // The stage after the pixels: a sky's point stars.
   FrameImage image{cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}};
-  if (!cf.image.sky.empty())
-    draw_point_stars(Sky(facts.sky, resources_), Camera(facts.camera, image.width, image.height), cf.image.sky, image);
+  if (const auto stars = cf.image.sky.empty() ? std::nullopt : sky_point_stars(facts.sky, resources_)) {
+    const auto start = std::chrono::steady_clock::now();
+    draw_point_stars(*stars, Camera(facts.camera, image.width, image.height), cf.image.sky, image);
+    const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+    std::lock_guard lock(star_mutex_);
+    star_seconds_ += took.count();
+  }
   // The same header in every mode (threads, ranks), so files are identical.
   // The frame rate lets `lightcone encode` play the frames at the shot's pace.
   const ImageMetadata metadata = {{"lightcone/shot", shot_name_},
@@ -39,6 +46,11 @@ void StoreSink::store(const CompletedFrame& cf) {
                                   {"lightcone/version", LIGHTCONE_VERSION}};
   store_.write_frame(cf.frame, image, metadata, frame_settings(rs_), facts.inputs, facts.parts, cf.stats.rays,
                      display_);
+}
+
+double StoreSink::star_seconds() const {
+  std::lock_guard lock(star_mutex_);
+  return star_seconds_;
 }
 
 }  // namespace lc::farm

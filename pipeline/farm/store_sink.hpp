@@ -3,6 +3,8 @@
 // journal line, a preview as DIR/preview/<shot>.<NNNN>.png.
 
 #include "farm/farm_run.hpp"
+#include <mutex>
+
 #include "farm/frame_store.hpp"
 #include "farm/shot_inputs.hpp"
 #include "assets/shot_resources.hpp"
@@ -17,6 +19,8 @@ class StoreSink final : public FrameSink {
   StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
             std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs);
   void store(const CompletedFrame& frame) override;
+  // Seconds spent drawing point stars so far (all writer threads).
+  double star_seconds() const;
 
  private:
   FrameStore& store_;
@@ -27,6 +31,8 @@ class StoreSink final : public FrameSink {
   RenderSettings rs_;
   std::vector<int> preview_rows_;
   ShotResources resources_;  // the skies' stars, for the stage after the pixels
+  mutable std::mutex star_mutex_;
+  double star_seconds_ = 0.0;
 };
 
 // The journal's spelling of the settings.
