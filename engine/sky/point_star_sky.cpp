@@ -1,6 +1,7 @@
 #include "sky/point_star_sky.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -47,7 +48,7 @@ StarField generated_stars(const PointStarSky::Params& p, ShotResources& res) {
 // KStars' stars: blackbodies at their B - V's temperature, of luminance
 // their V's light.
 StarField kstars_stars(const PointStarSky::Params& p, ShotResources& res) {
-  const auto read = read_star_catalogue(std::string(kstars_catalogue_file), p.faintest, max_catalogue_stars);
+  const auto read = read_star_catalogue(kstars_catalogue_path(), p.faintest, max_catalogue_stars);
   auto colors = res.blackbody_colors(5800.0);
   std::vector<PointStar> out;
   out.reserve(read.size());
@@ -67,14 +68,20 @@ StarField kstars_stars(const PointStarSky::Params& p, ShotResources& res) {
 
 }  // namespace
 
+std::string kstars_catalogue_path() {
+  const char* set = std::getenv("LIGHTCONE_STAR_CATALOGUE");
+  return set && *set ? std::string(set) : std::string(kstars_catalogue_file);
+}
+
 void PointStarSky::Params::validate() const {
   if (catalogue == StarCatalogue::kstars) {
+    const std::string file = kstars_catalogue_path();
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(std::string(kstars_catalogue_file), ec))
+    if (!std::filesystem::is_regular_file(file, ec))
       throw std::invalid_argument(fmt::format(
-          "starfield: catalogue = \"kstars\" reads {}, which is not there: install Debian's kstars-data (sudo apt-get "
+          "catalogue = \"kstars\" reads {}, which is not {}: install Debian's kstars-data (sudo apt-get "
           "install kstars-data), or use catalogue = \"generated\" (docs/stars.md)",
-          kstars_catalogue_file));
+          file, std::filesystem::exists(file, ec) ? "a regular file" : "there"));
   }
 }
 

@@ -33,8 +33,11 @@ constexpr std::array<std::string_view, 2> choice_names(StarCatalogue) { return {
 enum class StarBackground { generated, none };
 constexpr std::array<std::string_view, 2> choice_names(StarBackground) { return {"generated", "none"}; }
 
-// Where KStars' catalogue is read from (Debian's kstars-data installs it).
+// Where KStars' catalogue is read from: Debian's kstars-data installs it
+// here; the environment variable LIGHTCONE_STAR_CATALOGUE names another
+// file of its format (docs/stars.md).
 inline constexpr std::string_view kstars_catalogue_file = "/usr/share/kstars/stars.dat";
+std::string kstars_catalogue_path();
 
 // The light of a star of magnitude V = 0, before `brightness`: a pixel of
 // 1e-6 sr holding all of it shows 300 (linear).  The generated field's
@@ -62,7 +65,7 @@ class PointStarSky {
               std::nullopt,
               "generated: the procedural field of `seed` (~7,000 stars and a Milky-Way-like band); kstars: the real "
               "sky's Hipparcos and Tycho stars to V = 9, J2000 (the equator's pole on +z, right ascension 0 on +x), "
-              "from /usr/share/kstars/stars.dat (Debian's kstars-data)"),
+              "from /usr/share/kstars/stars.dat (Debian's kstars-data) or the file LIGHTCONE_STAR_CATALOGUE names"),
         field("faintest", &Params::faintest, std::optional<double>{8.0}, at_least(-2.0), at_most(12.0),
               "the faintest stars drawn", "magnitudes (V)"),
         field("seed", &Params::seed, std::optional<std::uint32_t>{1}, at_least(0), at_most(2147483647),

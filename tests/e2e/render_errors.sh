@@ -100,6 +100,21 @@ LUA
 expect_error long_worldline "long_worldline.lua:2: worldline: field 'duration' must be at most 20000 M of proper time, got 49000" -- "$LIGHTCONE" render long_worldline.lua --out out
 shot big_stars "$good_kerr sky = lc.sky_stars{resolution = 16384},"
 expect_error big_stars "big_stars.lua:5: sky_stars: field 'resolution' must be between 64 and 8192 pixels, got 16384" -- "$LIGHTCONE" render big_stars.lua --out out
+# The star catalogue: missing, a directory, a malformed line (named with its
+# line and field, the shot and the frame), and a bad choice.
+shot no_catalogue "$good_kerr sky = lc.starfield{catalogue = 'kstars'},"
+expect_error no_catalogue "no_catalogue.lua:5: starfield: catalogue = \"kstars\" reads $WORK/none.dat, which is not there: install Debian's kstars-data" -- \
+  env LIGHTCONE_STAR_CATALOGUE="$WORK/none.dat" "$LIGHTCONE" render no_catalogue.lua --out out
+mkdir -p catalogue_dir
+expect_error dir_catalogue "no_catalogue.lua:5: starfield: catalogue = \"kstars\" reads $WORK/catalogue_dir, which is not a regular file" -- \
+  env LIGHTCONE_STAR_CATALOGUE="$WORK/catalogue_dir" "$LIGHTCONE" render no_catalogue.lua --out out
+printf '# stars\n064508.92 -164258.0 -000546.0-001223.100379.2 -1.4400.01A0 1\n1836x6.34 +384701.3 000000.0 000000.0 00000.0 00.03-0.00A0 1\n' >bad_stars.dat
+expect_error bad_catalogue "starfield: the catalogue does not read: $WORK/bad_stars.dat:3: the right ascension (columns 1-9) is not hhmmss.ss" -- \
+  env LIGHTCONE_STAR_CATALOGUE="$WORK/bad_stars.dat" "$LIGHTCONE" render no_catalogue.lua --out out
+grep -qF "no_catalogue.lua" "$WORK/bad_catalogue.err" || fail "bad catalogue: no shot named: $(cat "$WORK/bad_catalogue.err")"
+[ ! -e out/no_catalogue.0000.exr ] || fail "a frame was written from a bad catalogue"
+shot bad_choice "$good_kerr sky = lc.starfield{catalogue = 'hipparcos'},"
+expect_error bad_choice "bad_choice.lua:5: starfield: field 'catalogue'" -- "$LIGHTCONE" render bad_choice.lua --out out
 shot nan "$good_kerr camera = lc.camera{fov = 0/0},"
 expect_error nan "nan.lua:5: camera: field 'fov' is nan" -- "$LIGHTCONE" render nan.lua --out out
 shot wide "$good_kerr camera = lc.camera{fov = 200},"
