@@ -30,9 +30,9 @@ struct NoPath {
 namespace detail {
 
 // The sky seen by a ray that escaped at the trace-coordinate event x with
-// momentum p: fills out.kind and out.color.
+// momentum p: fills out.kind and out.color, and sky's direction.
 template <class S>
-void sky_sample(const SceneIn<S>& sc, const Vec4& x, const Vec4& p, RaySample& out) {
+void sky_sample(const SceneIn<S>& sc, const Vec4& x, const Vec4& p, RayHit& out, SkyPoint& sky) {
   const S& st = sc.spacetime;
   // Escape direction: the spatial tangent, bent by the deflection still to
   // come between here and infinity (the spacetime's far field).
@@ -47,8 +47,8 @@ void sky_sample(const SceneIn<S>& sc, const Vec4& x, const Vec4& p, RaySample& o
   double sphi = std::atan2(d[1], d[0]);
   if (sphi < 0) sphi += two_pi;
   out.color = sc.sky.color(theta, sphi);
-  out.sky.theta = theta;
-  out.sky.phi = sphi;
+  sky.theta = theta;
+  sky.phi = sphi;
 }
 
 
@@ -104,7 +104,8 @@ class HamiltonianRay {
   }
 
   // The sample, once the integration has ended with `res`.
-  RaySample finish(const RayResult& res) {
+  // `sky` gets where a sky ray went (untouched otherwise).
+  RayHit finish(const RayResult& res, SkyPoint& sky) {
     out_.steps = res.steps;
     out_.reason = res.reason;
     out_.end = res.y;
@@ -122,13 +123,13 @@ class HamiltonianRay {
       return out_;
     }
     if (res.reason != StopReason::escaped) return out_;  // gave up: black, kind 4
-    sky_sample(sc_, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out_);
+    sky_sample(sc_, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out_, sky);
     out_.g = 1.0 / res.y[4];  // the source at rest far away: p.u = p_t
     // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
     const SeenShift shift = sc_.light.seen(out_.g, observer_reference() * out_.g);
     out_.color = shift.texture(out_.color);
-    out_.sky.color = static_cast<float>(shift.color);
-    out_.sky.beaming = static_cast<float>(shift.beaming);
+    sky.color = static_cast<float>(shift.color);
+    sky.beaming = static_cast<float>(shift.beaming);
     return out_;
   }
 
@@ -189,7 +190,7 @@ class HamiltonianRay {
   const SceneIn<S>& sc_;
   OnStep& on_step_;
   Vec4 p0_;
-  RaySample out_;
+  RayHit out_;
   int crossings_ = 0;
   static constexpr std::size_t no_object = static_cast<std::size_t>(-1);
   ObjectWarmStarts warm_ = no_warm_starts();  // per object (the first few), carried along the ray

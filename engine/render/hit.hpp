@@ -12,10 +12,12 @@
 namespace lc {
 
 
-struct RaySample {
+// What a ray found, as its integration fills it in.  (The Kerr lanes hold
+// one per ray while they integrate, and its size shows in their speed:
+// docs/performance.md, changes 25 and 33.)
+struct RayHit {
   Color color{0.0f, 0.0f, 0.0f};  // linear RGB
   HitKind kind = HitKind::gave_up;
-  SkyPoint sky;  // where a sky ray went, for point stars
   // The event where the ray ended (disk or object hit, capture, escape), in
   // Boyer–Lindquist r and phi (phi in [0, 2 pi)) for Kerr, spherical r and
   // phi about the origin otherwise; t is its scene time minus the observer's.
@@ -37,6 +39,12 @@ struct RaySample {
   // parameter; the Kerr fast path fills them only when a path is recorded.
   std::array<double, 8> end{};
   double lambda_end = 0.0;
+};
+
+// One traced ray: what it found, and where a sky ray went (for point
+// stars; filled when the ray ends, outside the lanes' state).
+struct RaySample : RayHit {
+  SkyPoint sky;
 };
 
 }  // namespace lc

@@ -108,7 +108,8 @@ class MinoRay {
   }
 
   // The sample, once the integration has ended with `res`.
-  RaySample finish(const MinoResult& res) {
+  // `sky` gets where a sky ray went (untouched otherwise).
+  RayHit finish(const MinoResult& res, SkyPoint& sky) {
     out_.steps = res.steps;
     out_.reason = res.reason;
     const Event last = res.reason == StopReason::escaped   ? at_escape_
@@ -133,14 +134,14 @@ class MinoRay {
     const double theta = std::acos(std::clamp(direction_[2] / n2, -1.0, 1.0));
     double sphi = std::atan2(direction_[1], direction_[0]);
     if (sphi < 0) sphi += two_pi;
-    out_.sky.theta = theta;
-    out_.sky.phi = sphi;
     out_.g = -1.0 / start_.k.E;  // the source at rest far away: p.u = p_t = -E
     // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
     const SeenShift shift = sc_.light.seen(out_.g, observer_reference_ * out_.g);
     out_.color = shift.texture(sc_.sky.color(theta, sphi));
-    out_.sky.color = static_cast<float>(shift.color);
-    out_.sky.beaming = static_cast<float>(shift.beaming);
+    sky.theta = theta;
+    sky.phi = sphi;
+    sky.color = static_cast<float>(shift.color);
+    sky.beaming = static_cast<float>(shift.beaming);
     return out_;
   }
 
@@ -255,7 +256,7 @@ class MinoRay {
   Event at_hit_{};      // where the ray met the disk
   Vec3 direction_{};  // at infinity, in the Kerr–Schild Cartesian frame
   double observer_reference_;  // p.u_ref at the observer (1 where g is not split)
-  RaySample out_;
+  RayHit out_;
   int crossings_ = 0;
 };
 

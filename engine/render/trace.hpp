@@ -44,7 +44,10 @@ void trace_rays(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RayS
     run_rays<W>(
         path, sc.rays.control, sc.rays.max_steps, dirs.size(),
         [&](std::size_t k, std::optional<Ray>& slot) { slot.emplace(sc, args..., dirs[k], on_step); },
-        [&](std::size_t k, Ray& ray, const RayResult& res) { out[k] = ray.finish(res); });
+        [&](std::size_t k, Ray& ray, const RayResult& res) {
+          out[k].sky = SkyPoint{};
+          static_cast<RayHit&>(out[k]) = ray.finish(res, out[k].sky);
+        });
   };
   if constexpr (std::is_same_v<S, Kerr>) {
     if (takes_mino_path(sc)) {
