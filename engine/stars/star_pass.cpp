@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <unordered_map>
 #include <vector>
 
 #include "stars/sky_quad.hpp"
@@ -81,8 +82,10 @@ std::optional<Quad> make_quad(const Node& a, const Node& b, const Node& c, const
 }
 
 // Tiles of quads searched together: one lookup in the star bins per tile,
-// then each of its quads tests only the tile's stars.
+// then each of its quads tests only the tile's stars; a tile with more
+// than split_above of them is searched as four.
 constexpr int tile = 16;
+constexpr std::size_t split_above = 16;
 
 // The halo of the glare: (1 + r^2 / a^2)^-2 on the pixels within 8 a
 // (at least the 3 x 3 around the centre), normalised to 1.
@@ -121,96 +124,152 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
     throw std::invalid_argument("star pass: the frame's rays or pixels do not match its size (at least 2 x 2)");
   const Grid grid(sky, w, h);
   const double cos_max = std::cos(options.max_patch_radius);
+  // The camera's and the sky's solid angles of quad (i, j) (0 and 0 where
+  // it is not used), made once each: the quads around one star's image
+  // are those around its neighbours' in a crowded lensed ring.
+  std::unordered_map<std::size_t, std::array<double, 2>> areas;
+  auto quad_areas = [&](int i, int j) -> std::array<double, 2> {
+    const std::size_t key = static_cast<std::size_t>(j + 1) * static_cast<std::size_t>(w + 1) + static_cast<std::size_t>(i + 1);
+    if (const auto it = areas.find(key); it != areas.end()) return it->second;
+    std::array<double, 2> a{0.0, 0.0};
+    if (const auto q = make_quad(grid.at(i, j), grid.at(i + 1, j), grid.at(i + 1, j + 1), grid.at(i, j + 1), cos_max)) {
+      const auto& k = q->corner;
+      a = {SkyQuad{{camera(k[0].x, k[0].y), camera(k[1].x, k[1].y), camera(k[2].x, k[2].y), camera(k[3].x, k[3].y)}}
+               .area(),
+           q->sky.area()};
+    }
+    return areas.emplace(key, a).first->second;
+  };
   // The magnification at node (i, j): the camera's over the sky's solid
   // angle of the quads around it.
   auto magnification = [&](int i, int j) {
     double seen = 0.0, sky_area = 0.0;
     for (int qj = std::max(-1, j - 1); qj <= std::min(h - 1, j); ++qj)
       for (int qi = std::max(-1, i - 1); qi <= std::min(w - 1, i); ++qi) {
-        const auto q = make_quad(grid.at(qi, qj), grid.at(qi + 1, qj), grid.at(qi + 1, qj + 1), grid.at(qi, qj + 1),
-                                 cos_max);
-        if (!q) continue;
-        const auto& k = q->corner;
-        seen += SkyQuad{{camera(k[0].x, k[0].y), camera(k[1].x, k[1].y), camera(k[2].x, k[2].y),
-                         camera(k[3].x, k[3].y)}}
-                    .area();
-        sky_area += q->sky.area();
+        const auto a = quad_areas(qi, qj);
+        seen += a[0];
+        sky_area += a[1];
       }
     return seen > 0.0 ? seen / std::max(sky_area, seen / options.max_magnification) : 0.0;
   };
   std::vector<Deposit> deposits;
   long images = 0;
-  std::vector<Node> nodes(static_cast<std::size_t>((tile + 1) * (tile + 1)));
-  std::vector<std::size_t> candidates;
+  // An image of star s in quad q = (i, j): its light onto the pixels.
+  auto draw = [&](int i, int j, const Quad& q, std::size_t s) {
+    const auto uv = q.sky.locate(field.stars()[s].direction);
+    // A star on an edge two quads share is counted in one: the one where
+    // it is at u = 0 (v = 0).
+    if (!uv || (*uv)[0] >= 1.0 - locate_slack || (*uv)[1] >= 1.0 - locate_slack) return;
+    const double u = std::clamp((*uv)[0], 0.0, 1.0), v = std::clamp((*uv)[1], 0.0, 1.0);
+    const double wt[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
+    const double mu[4] = {magnification(i, j), magnification(i + 1, j), magnification(i + 1, j + 1),
+                          magnification(i, j + 1)};
+    double m = 0.0, x = 0.0, y = 0.0, colour = 0.0, beaming = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      m += wt[k] * mu[k];
+      x += wt[k] * q.corner[k].x;
+      y += wt[k] * q.corner[k].y;
+      colour += wt[k] * q.corner[k].color;
+      beaming += wt[k] * q.corner[k].beaming;
+    }
+    const Color light = field.seen(s, static_cast<float>(colour), static_cast<float>(beaming));
+    // Tent filter: the pixels whose centres are within one pixel.
+    const double fx = x - 0.5, fy = y - 0.5;
+    const int px = static_cast<int>(std::floor(fx)), py = static_cast<int>(std::floor(fy));
+    const double ax = fx - px, ay = fy - py;
+    for (int k = 0; k < 4; ++k) {
+      const int pi_ = px + (k & 1), pj = py + (k >> 1);
+      if (pi_ < 0 || pj < 0 || pi_ >= w || pj >= h) continue;
+      const double share = m * ((k & 1) ? ax : 1 - ax) * ((k >> 1) ? ay : 1 - ay);
+      Deposit d{pi_, pj, {}};
+      for (int c = 0; c < 3; ++c) d.flux[c] = static_cast<float>(share * light[c]);
+      deposits.push_back(d);
+    }
+    ++images;
+  };
+  // The quads of a tile of tile x tile (cut at the grid's end), made once;
+  // a block of them is searched with one lookup in the bins for the cap
+  // their patches span, and a block whose cap holds many stars (a patch of
+  // sky the lens spreads wide) is split in four first, so each quad tests
+  // few stars.
+  std::vector<std::optional<Quad>> quads(static_cast<std::size_t>(tile * tile));
+  // `from`: the stars the enclosing block found (none for a whole tile,
+  // which asks the bins): a block only narrows them down.
+  auto search = [&](auto&& self, int ti, int tj, int i0, int j0, int i1, int j1,
+                    const std::vector<std::size_t>* from) -> void {
+    auto quad = [&](int i, int j) -> const std::optional<Quad>& {
+      return quads[static_cast<std::size_t>((j - tj) * tile + (i - ti))];
+    };
+    Vec3 sum{0, 0, 0};
+    int count = 0;
+    for (int j = j0; j < j1; ++j)
+      for (int i = i0; i < i1; ++i)
+        if (const auto& q = quad(i, j)) {
+          for (int m = 0; m < 3; ++m) sum[m] += q->centre[m];
+          ++count;
+        }
+    if (count == 0 || norm3(sum) == 0.0) return;
+    const Vec3 centre = unit3(sum);
+    double radius = 0.0;
+    for (int j = j0; j < j1; ++j)
+      for (int i = i0; i < i1; ++i)
+        if (const auto& q = quad(i, j))
+          radius = std::max(radius, std::acos(std::clamp(dot3(q->centre, centre), -1.0, 1.0)) +
+                                        std::acos(std::clamp(q->cos_reach, -1.0, 1.0)));
+    radius = std::min(radius, pi);
+    const double cos_radius = std::cos(radius);
+    std::vector<std::size_t> candidates;
+    auto take = [&](std::size_t s) {
+      if (dot3(field.stars()[s].direction, centre) >= cos_radius) candidates.push_back(s);
+    };
+    if (from)
+      for (const std::size_t s : *from) take(s);
+    else
+      field.bins().near(centre, radius, take);
+    if (candidates.empty()) return;
+    if (candidates.size() > split_above && count > 1) {
+      const int im = (i0 + i1 + 1) / 2, jm = (j0 + j1 + 1) / 2;
+      for (const auto& [a0, a1] : {std::pair{i0, im}, std::pair{im, i1}})
+        for (const auto& [b0, b1] : {std::pair{j0, jm}, std::pair{jm, j1}})
+          if (a0 < a1 && b0 < b1) self(self, ti, tj, a0, b0, a1, b1, &candidates);
+      return;
+    }
+    for (int j = j0; j < j1; ++j)
+      for (int i = i0; i < i1; ++i)
+        if (const auto& q = quad(i, j))
+          for (const std::size_t s : candidates)
+            if (dot3(field.stars()[s].direction, q->centre) >= q->cos_reach) draw(i, j, *q, s);
+  };
   // Quads (i, j) .. (i + 1, j + 1) for i in [-1, w), j in [-1, h), a tile
   // at a time.
   for (int tj = -1; tj < h; tj += tile)
     for (int ti = -1; ti < w; ti += tile) {
-      const int nw = std::min(w, ti + tile) - ti + 1, nh = std::min(h, tj + tile) - tj + 1;
+      const int i1 = std::min(w, ti + tile), j1 = std::min(h, tj + tile);
+      // The tile's nodes, made from the rays once.
+      const int nw = i1 - ti + 1;
+      std::vector<Node> nodes(static_cast<std::size_t>(nw * (j1 - tj + 1)));
+      for (int j = tj; j <= j1; ++j)
+        for (int i = ti; i <= i1; ++i) nodes[static_cast<std::size_t>((j - tj) * nw + (i - ti))] = grid.at(i, j);
       auto node = [&](int i, int j) -> const Node& { return nodes[static_cast<std::size_t>((j - tj) * nw + (i - ti))]; };
-      // The tile's nodes and its cap: around their mean, out to the
-      // farthest.
-      Vec3 sum{0, 0, 0};
-      int known = 0;
-      for (int j = tj; j < tj + nh; ++j)
-        for (int i = ti; i < ti + nw; ++i) {
-          Node& n = nodes[static_cast<std::size_t>((j - tj) * nw + (i - ti))];
-          n = grid.at(i, j);
-          if (!n.known) continue;
-          for (int m = 0; m < 3; ++m) sum[m] += n.sky[m];
-          ++known;
-        }
-      if (known < 4 || norm3(sum) == 0.0) continue;
-      const Vec3 centre = unit3(sum);
-      double least = 1.0;
-      for (int k = 0; k < nw * nh; ++k)
-        if (nodes[static_cast<std::size_t>(k)].known)
-          least = std::min(least, dot3(nodes[static_cast<std::size_t>(k)].sky, centre));
-      candidates.clear();
-      field.bins().near(centre, std::acos(std::clamp(least, -1.0, 1.0)), [&](std::size_t s) {
-        if (dot3(field.stars()[s].direction, centre) >= least) candidates.push_back(s);
-      });
-      if (candidates.empty()) continue;
-      for (int j = tj; j < tj + nh - 1; ++j)
-        for (int i = ti; i < ti + nw - 1; ++i) {
-          const auto q = make_quad(node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1), cos_max);
-          if (!q) continue;
-          for (const std::size_t s : candidates) {
-            const Vec3& star = field.stars()[s].direction;
-            if (dot3(star, q->centre) < q->cos_reach) continue;
-            const auto uv = q->sky.locate(star);
-            // A star on an edge two quads share is counted in one: the one
-            // where it is at u = 0 (v = 0).
-            if (!uv || (*uv)[0] >= 1.0 - locate_slack || (*uv)[1] >= 1.0 - locate_slack) continue;
-            const double u = std::clamp((*uv)[0], 0.0, 1.0), v = std::clamp((*uv)[1], 0.0, 1.0);
-            const double wt[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
-            const double mu[4] = {magnification(i, j), magnification(i + 1, j), magnification(i + 1, j + 1),
-                                  magnification(i, j + 1)};
-            double m = 0.0, x = 0.0, y = 0.0, colour = 0.0, beaming = 0.0;
-            for (std::size_t k = 0; k < 4; ++k) {
-              m += wt[k] * mu[k];
-              x += wt[k] * q->corner[k].x;
-              y += wt[k] * q->corner[k].y;
-              colour += wt[k] * q->corner[k].color;
-              beaming += wt[k] * q->corner[k].beaming;
-            }
-            const Color light = field.seen(s, static_cast<float>(colour), static_cast<float>(beaming));
-            // Tent filter: the pixels whose centres are within one pixel.
-            const double fx = x - 0.5, fy = y - 0.5;
-            const int px = static_cast<int>(std::floor(fx)), py = static_cast<int>(std::floor(fy));
-            const double ax = fx - px, ay = fy - py;
-            for (int k = 0; k < 4; ++k) {
-              const int pi_ = px + (k & 1), pj = py + (k >> 1);
-              if (pi_ < 0 || pj < 0 || pi_ >= w || pj >= h) continue;
-              const double share = m * ((k & 1) ? ax : 1 - ax) * ((k >> 1) ? ay : 1 - ay);
-              Deposit d{pi_, pj, {}};
-              for (int c = 0; c < 3; ++c) d.flux[c] = static_cast<float>(share * light[c]);
-              deposits.push_back(d);
-            }
-            ++images;
-          }
-        }
+      for (int j = tj; j < j1; ++j)
+        for (int i = ti; i < i1; ++i)
+          quads[static_cast<std::size_t>((j - tj) * tile + (i - ti))] =
+              make_quad(node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1), cos_max);
+      search(search, ti, tj, ti, tj, i1, j1, nullptr);
     }
+  // The light landed on each pixel, summed (a crowded lensed ring puts
+  // many images on one).
+  std::sort(deposits.begin(), deposits.end(),
+            [](const Deposit& x, const Deposit& y) { return x.j != y.j ? x.j < y.j : x.i < y.i; });
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < deposits.size(); ++k) {
+    if (kept > 0 && deposits[kept - 1].i == deposits[k].i && deposits[kept - 1].j == deposits[k].j) {
+      for (int c = 0; c < 3; ++c) deposits[kept - 1].flux[c] += deposits[k].flux[c];
+    } else {
+      deposits[kept++] = deposits[k];
+    }
+  }
+  deposits.resize(kept);
   // Flux to radiance over each pixel's solid angle; the glare's share
   // spread over the halo around it (the pixels there taken as the same
   // size: the halo spans a few pixels).
@@ -219,20 +278,22 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
   for (const Deposit& d : deposits) {
     const double omega =
         SkyQuad{{camera(d.i, d.j), camera(d.i + 1, d.j), camera(d.i + 1, d.j + 1), camera(d.i, d.j + 1)}}.area();
-    auto add = [&](int i, int j, double k) {
+    Color radiance;
+    for (int c = 0; c < 3; ++c) radiance[c] = static_cast<float>(d.flux[c] / omega);
+    auto add = [&](int i, int j, float k) {
       float* p = &rgb[3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i))];
-      for (int c = 0; c < 3; ++c) p[c] += static_cast<float>(k * d.flux[c] / omega);
+      for (int c = 0; c < 3; ++c) p[c] += k * radiance[c];
     };
     if (!kernel) {
-      add(d.i, d.j, 1.0);
+      add(d.i, d.j, 1.0f);
       continue;
     }
-    add(d.i, d.j, 1.0 - options.glare);
+    add(d.i, d.j, static_cast<float>(1.0 - options.glare));
     const int r = kernel->radius, n = 2 * r + 1;
     for (int dy = std::max(-r, -d.j); dy <= std::min(r, h - 1 - d.j); ++dy)
       for (int dx = std::max(-r, -d.i); dx <= std::min(r, w - 1 - d.i); ++dx)
         if (const double k = kernel->weight[static_cast<std::size_t>((dy + r) * n + dx + r)]; k > 0.0)
-          add(d.i + dx, d.j + dy, options.glare * k);
+          add(d.i + dx, d.j + dy, static_cast<float>(options.glare * k));
   }
   return images;
 }
