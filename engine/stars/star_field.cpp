@@ -10,7 +10,7 @@ namespace lc {
 
 namespace {
 
-float luminance(const Color& c) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]; }
+float luminance_of(const Color& c) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]; }
 
 std::vector<Vec3> directions_of(const std::vector<PointStar>& stars) {
   std::vector<Vec3> out;
@@ -30,6 +30,7 @@ StarField::StarField(std::vector<PointStar> stars, std::shared_ptr<const Blackbo
     : stars_(std::move(stars)), bins_(directions_of(stars_), bin_size), colors_(std::move(colors)),
       spectra_(std::move(spectra)) {
   blackbody_scale_.assign(stars_.size(), 0.0f);
+  luminance_.assign(stars_.size(), 0.0f);
   for (std::size_t k = 0; k < stars_.size(); ++k) {
     const PointStar& s = stars_[k];
     const double n = std::sqrt(dot3(s.direction, s.direction));
@@ -37,10 +38,12 @@ StarField::StarField(std::vector<PointStar> stars, std::shared_ptr<const Blackbo
       throw std::invalid_argument("star field: a star's direction is not a unit vector");
     for (const float f : s.flux)
       if (!(f >= 0.0f) || !std::isfinite(f)) throw std::invalid_argument("star field: a star's flux is negative or not finite");
+    luminance_[k] = luminance_of(s.flux);
+    faintest_ = k == 0 ? luminance_[k] : std::min(faintest_, static_cast<double>(luminance_[k]));
     if (s.temperature > 0.0) {
       if (!colors_) throw std::invalid_argument("star field: stars with temperatures need blackbody colours");
-      const float y = luminance((*colors_)(s.temperature));
-      blackbody_scale_[k] = y > 0.0f ? luminance(s.flux) / y : 0.0f;
+      const float y = luminance_of((*colors_)(s.temperature));
+      blackbody_scale_[k] = y > 0.0f ? luminance_of(s.flux) / y : 0.0f;
     }
   }
 }
@@ -57,7 +60,7 @@ Color StarField::seen(std::size_t k, float color, float beaming) const {
 }
 
 std::size_t StarField::bytes() const {
-  return stars_.size() * (sizeof(PointStar) + sizeof(float)) + bins_.bytes();
+  return stars_.size() * (sizeof(PointStar) + 2 * sizeof(float)) + bins_.bytes();
 }
 
 }  // namespace lc

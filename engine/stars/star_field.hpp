@@ -37,6 +37,10 @@ class StarField {
   std::span<const PointStar> stars() const { return stars_; }
   const StarBins& bins() const { return bins_; }
 
+  // Star k's light's luminance, unshifted, and the least of them all.
+  double luminance(std::size_t k) const { return luminance_[k]; }
+  double faintest_luminance() const { return faintest_; }
+
   // Star k's light seen with the ratios SeenShift applies there (color,
   // beaming; 1 and 1 for the geometric light).
   Color seen(std::size_t k, float color, float beaming) const;
@@ -46,7 +50,9 @@ class StarField {
  private:
   std::vector<PointStar> stars_;
   StarBins bins_;
-  std::vector<float> blackbody_scale_;  // flux's luminance / the table's at the star's temperature
+  std::vector<float> blackbody_scale_;
+  std::vector<float> luminance_;
+  double faintest_ = 0.0;  // flux's luminance / the table's at the star's temperature
   std::shared_ptr<const BlackbodyColors> colors_;
   std::shared_ptr<const SpectralShift> spectra_;
 };

@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "stars/sky_quad.hpp"
 
 namespace lc {
@@ -65,7 +66,24 @@ struct Quad {
   Vec3 centre;
   double cos_reach;
   std::array<Node, 4> corner;
+  // The planes of its edges (great circles), normals pointing in, when the
+  // patch is convex (else `convex` is false and every star in its cap is
+  // located): a star outside one is not in the patch, a cheap test before
+  // SkyQuad::locate.
+  std::array<Vec3, 4> inward;
+  bool convex = false;
+
+  bool may_hold(const Vec3& d) const {
+    if (!convex) return true;
+    for (const Vec3& n : inward)
+      if (dot3(d, n) < -1e-9 * norm3(n)) return false;  // generous: locate decides on the edge
+    return true;
+  }
 };
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 
 // The quad of nodes a, b, c, d (in order around it) if all are known and
 // its patch is no wider than the cosine cos_max says (centre to corner).
@@ -78,6 +96,17 @@ std::optional<Quad> make_quad(const Node& a, const Node& b, const Node& c, const
   q.centre = unit3(sum);
   for (const Vec3& k : q.sky.c) q.cos_reach = std::min(q.cos_reach, dot3(k, q.centre));
   if (q.cos_reach < cos_max) return std::nullopt;
+  // Edge k runs from corner k to k + 1; its plane's normal points to the
+  // side of the centre, and every other corner must lie on that side.
+  q.convex = true;
+  for (int k = 0; k < 4; ++k) {
+    Vec3 n = cross(q.sky.c[static_cast<std::size_t>(k)], q.sky.c[static_cast<std::size_t>((k + 1) % 4)]);
+    if (dot3(n, q.centre) < 0.0)
+      for (double& x : n) x = -x;
+    for (int m = 2; m <= 3; ++m)
+      if (dot3(n, q.sky.c[static_cast<std::size_t>((k + m) % 4)]) < 0.0) q.convex = false;
+    q.inward[static_cast<std::size_t>(k)] = n;
+  }
   return q;
 }
 
@@ -86,6 +115,18 @@ std::optional<Quad> make_quad(const Node& a, const Node& b, const Node& c, const
 // than split_above of them is searched as four.
 constexpr int tile = 16;
 constexpr std::size_t split_above = 16;
+
+// A tile whose nodes lie within this of their centre (rad) is searched in
+// its tangent plane (a gnomonic projection stretches 1 / cos^2: 1.3 here).
+constexpr double plane_tile = 30.0 * degree;
+
+// A patch wider than this (centre to corner, rad) is searched alone: about
+// a bin of the star field (stars/star_field.cpp).
+constexpr double wide_patch = 1.0 * degree;
+
+// Images fainter than this share of the faintest star's light are not
+// drawn: 7.5 magnitudes under the faintest star the sky holds.
+constexpr double invisible = 1e-3;
 
 // The halo of the glare: (1 + r^2 / a^2)^-2 on the pixels within 8 a
 // (at least the 3 x 3 around the centre), normalised to 1.
@@ -105,7 +146,18 @@ struct GlareKernel {
         sum += v;
       }
     for (double& v : weight) v /= sum;
+    at_radius.resize(static_cast<std::size_t>(radius + 1));
+    within.assign(static_cast<std::size_t>(radius + 1), 0.0);
+    for (int r = 0; r <= radius; ++r) {
+      const double q = 1.0 + r * r / (a * a);
+      at_radius[static_cast<std::size_t>(r)] = 1.0 / (q * q * sum);
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx)
+          within[static_cast<std::size_t>(r)] += weight[static_cast<std::size_t>((dy + radius) * n + dx + radius)];
+    }
   }
+  std::vector<double> at_radius;  // the weight at r pixels straight out, r = 0 .. radius
+  std::vector<double> within;     // the weights' sum over the square of half-side r
 };
 
 // Light landed on one pixel (its flux: radiance times its solid angle).
@@ -124,6 +176,8 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
     throw std::invalid_argument("star pass: the frame's rays or pixels do not match its size (at least 2 x 2)");
   const Grid grid(sky, w, h);
   const double cos_max = std::cos(options.max_patch_radius);
+  const double cos_wide = std::cos(wide_patch);
+  const double cos_plane = std::cos(plane_tile);
   // The camera's and the sky's solid angles of quad (i, j) (0 and 0 where
   // it is not used), made once each: the quads around one star's image
   // are those around its neighbours' in a crowded lensed ring.
@@ -187,6 +241,20 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
     }
     ++images;
   };
+  // The images in quad (i, j) of the stars `each` offers (each(f) calls
+  // f(star) for every one).  A star whose image here would be under a
+  // thousandth of the faintest star's light is left out (the thin rings of
+  // images at a shadow's edge hold most of a sky's stars, ever fainter):
+  // twice the quad's own magnification bounds its corners'.
+  auto stars_in = [&](int i, int j, const Quad& q, auto&& each) {
+    const auto a = quad_areas(i, j);
+    const double least =
+        invisible * field.faintest_luminance() * std::max(a[1], a[0] / options.max_magnification) / (2.0 * a[0]);
+    each([&](std::size_t s) {
+      const Vec3& d = field.stars()[s].direction;
+      if (field.luminance(s) >= least && dot3(d, q.centre) >= q.cos_reach && q.may_hold(d)) draw(i, j, q, s);
+    });
+  };
   // The quads of a tile of tile x tile (cut at the grid's end), made once;
   // a block of them is searched with one lookup in the bins for the cap
   // their patches span, and a block whose cap holds many stars (a patch of
@@ -236,9 +304,9 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
     }
     for (int j = j0; j < j1; ++j)
       for (int i = i0; i < i1; ++i)
-        if (const auto& q = quad(i, j))
-          for (const std::size_t s : candidates)
-            if (dot3(field.stars()[s].direction, q->centre) >= q->cos_reach) draw(i, j, *q, s);
+        if (const auto& q = quad(i, j)) stars_in(i, j, *q, [&](auto&& f) {
+            for (const std::size_t s : candidates) f(s);
+          });
   };
   // Quads (i, j) .. (i + 1, j + 1) for i in [-1, w), j in [-1, h), a tile
   // at a time.
@@ -251,10 +319,93 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
       for (int j = tj; j <= j1; ++j)
         for (int i = ti; i <= i1; ++i) nodes[static_cast<std::size_t>((j - tj) * nw + (i - ti))] = grid.at(i, j);
       auto node = [&](int i, int j) -> const Node& { return nodes[static_cast<std::size_t>((j - tj) * nw + (i - ti))]; };
+      // Most tiles see a small, smooth piece of sky: one lookup for the cap
+      // their nodes span, then in the plane tangent to it (gnomonic) each
+      // quad's box of corners holds few of the stars found, and only those
+      // are tested exactly.
+      Vec3 sum{0, 0, 0};
+      int known = 0;
+      for (const Node& n : nodes)
+        if (n.known) {
+          for (int m = 0; m < 3; ++m) sum[m] += n.sky[m];
+          ++known;
+        }
+      if (known < 4) continue;
+      if (norm3(sum) > 0.0) {
+        const Vec3 centre = unit3(sum);
+        double least = 1.0;
+        for (const Node& n : nodes)
+          if (n.known) least = std::min(least, dot3(n.sky, centre));
+        if (least >= cos_plane) {
+          std::vector<std::size_t> found;
+          field.bins().near(centre, std::acos(least), [&](std::size_t s) {
+            if (dot3(field.stars()[s].direction, centre) >= least) found.push_back(s);
+          });
+          if (found.empty()) continue;
+          const Vec3 e1 = unit3(cross(centre, std::abs(centre[2]) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0}));
+          const Vec3 e2 = cross(centre, e1);
+          auto project = [&](const Vec3& v) {
+            const double h = dot3(v, centre);
+            return std::array<double, 2>{dot3(v, e1) / h, dot3(v, e2) / h};
+          };
+          std::vector<std::array<double, 2>> flat(nodes.size());
+          for (std::size_t k = 0; k < nodes.size(); ++k)
+            if (nodes[k].known) flat[k] = project(nodes[k].sky);
+          // The stars found, by their x in the plane.
+          struct Placed {
+            double x, y;
+            std::size_t star;
+          };
+          std::vector<Placed> at;
+          at.reserve(found.size());
+          for (const std::size_t s : found) {
+            const auto p = project(field.stars()[s].direction);
+            at.push_back({p[0], p[1], s});
+          }
+          std::sort(at.begin(), at.end(), [](const Placed& a, const Placed& b) { return a.x < b.x; });
+          auto flat_at = [&](int i, int j) -> const std::array<double, 2>& {
+            return flat[static_cast<std::size_t>((j - tj) * nw + (i - ti))];
+          };
+          std::vector<std::size_t> here;
+          for (int j = tj; j < j1; ++j)
+            for (int i = ti; i < i1; ++i) {
+              if (!node(i, j).known || !node(i + 1, j).known || !node(i + 1, j + 1).known || !node(i, j + 1).known)
+                continue;
+              const auto &a = flat_at(i, j), &b = flat_at(i + 1, j), &c = flat_at(i + 1, j + 1), &d = flat_at(i, j + 1);
+              // The box, a hair wider: locate decides on its edge.
+              const double x0 = std::min({a[0], b[0], c[0], d[0]}), x1 = std::max({a[0], b[0], c[0], d[0]});
+              const double y0 = std::min({a[1], b[1], c[1], d[1]}), y1 = std::max({a[1], b[1], c[1], d[1]});
+              const double slack = 1e-9 * (x1 - x0 + y1 - y0) + 1e-15;
+              here.clear();
+              auto k = std::lower_bound(at.begin(), at.end(), x0 - slack,
+                                        [](const Placed& p, double x) { return p.x < x; });
+              for (; k != at.end() && k->x <= x1 + slack; ++k)
+                if (k->y >= y0 - slack && k->y <= y1 + slack) here.push_back(k->star);
+              if (here.empty()) continue;
+              const auto q = make_quad(node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1), cos_max);
+              if (q) stars_in(i, j, *q, [&](auto&& f) {
+                  for (const std::size_t s : here) f(s);
+                });
+            }
+          continue;
+        }
+      }
+      // A tile across a jump of the rays (a shadow's edge, where the lens
+      // spreads neighbouring rays over the sky): its quads one by one.
       for (int j = tj; j < j1; ++j)
         for (int i = ti; i < i1; ++i)
           quads[static_cast<std::size_t>((j - tj) * tile + (i - ti))] =
               make_quad(node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1), cos_max);
+      // A wide patch (the lens spreads it over more than a bin) asks the
+      // bins alone, so that the blocks' caps stay as small as their
+      // patches are.
+      for (int j = tj; j < j1; ++j)
+        for (int i = ti; i < i1; ++i) {
+          auto& q = quads[static_cast<std::size_t>((j - tj) * tile + (i - ti))];
+          if (!q || q->cos_reach >= cos_wide) continue;
+          stars_in(i, j, *q, [&](auto&& f) { field.bins().near(q->centre, std::acos(q->cos_reach), f); });
+          q.reset();
+        }
       search(search, ti, tj, ti, tj, i1, j1, nullptr);
     }
   // The light landed on each pixel, summed (a crowded lensed ring puts
@@ -289,11 +440,19 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
       continue;
     }
     add(d.i, d.j, static_cast<float>(1.0 - options.glare));
-    const int r = kernel->radius, n = 2 * r + 1;
+    // The halo as far as it is brighter than the invisible share of the
+    // faintest star's light on one pixel (a faint image's stops at once),
+    // its weights scaled up to keep the light.
+    const double glow = options.glare * (0.2126 * radiance[0] + 0.7152 * radiance[1] + 0.0722 * radiance[2]);
+    const double floor = invisible * field.faintest_luminance() / omega;
+    int r = 0;
+    while (r < kernel->radius && glow * kernel->at_radius[static_cast<std::size_t>(r + 1)] >= floor) ++r;
+    const int n = 2 * kernel->radius + 1, c0 = kernel->radius;
+    const double share = options.glare / kernel->within[static_cast<std::size_t>(r)];
     for (int dy = std::max(-r, -d.j); dy <= std::min(r, h - 1 - d.j); ++dy)
       for (int dx = std::max(-r, -d.i); dx <= std::min(r, w - 1 - d.i); ++dx)
-        if (const double k = kernel->weight[static_cast<std::size_t>((dy + r) * n + dx + r)]; k > 0.0)
-          add(d.i + dx, d.j + dy, static_cast<float>(options.glare * k));
+        if (const double k = kernel->weight[static_cast<std::size_t>((dy + c0) * n + dx + c0)]; k > 0.0)
+          add(d.i + dx, d.j + dy, static_cast<float>(share * k));
   }
   return images;
 }

@@ -110,7 +110,9 @@ TEST(StarPass, GlareSpreadsAShareOfTheLightAndKeepsIt) {
   const Seen sharp = render(cam, cam.sky(), cam.at(30.3, 17.6));
   const Seen glared = render(cam, cam.sky(), cam.at(30.3, 17.6), 0.3);
   EXPECT_NEAR(glared.total, sharp.total, 0.01 * sharp.total);
-  EXPECT_GT(glared.max_i - glared.min_i, 8);  // 8 a = 12 pixels each way
+  // Out to where the halo is under a thousandth of the faintest star's
+  // light on a pixel (here the star itself): ~3 pixels each way.
+  EXPECT_GE(glared.max_i - glared.min_i, 5);
 }
 
 TEST(StarPass, StarsAtTheImagesEdgeAndBehindObjects) {
