@@ -54,21 +54,33 @@ std::string choices_text() {
 
 // One field of Owner, of type T (double, int, std::uint32_t, a string, a
 // Palette of two colours or a Choice).  fallback: the default,
-// nullopt when the field is required.  lo, hi: the allowed range (for
-// numbers).
+// nullopt when the field is required (a string's default is a
+// string_view: a std::string cannot live in a constant).  lo, hi: the
+// allowed range (for numbers).
+template <class T>
+struct FieldDefault {
+  using type = T;
+};
+template <>
+struct FieldDefault<std::string> {
+  using type = std::string_view;
+};
+template <class T>
+using FieldDefaultOf = typename FieldDefault<T>::type;
+
 template <class Owner, class T>
 struct Field {
   using Value = T;
   std::string_view name;
   T Owner::*member;
-  std::optional<T> fallback;
+  std::optional<FieldDefaultOf<T>> fallback;
   std::optional<Bound> lo = std::nullopt, hi = std::nullopt;
   std::string_view doc = {};
   std::string_view unit = {};  // "degrees", "M", ...: for messages and the docs
 };
 
 template <class Owner, class T>
-constexpr Field<Owner, T> field(std::string_view name, T Owner::*member, std::optional<T> fallback,
+constexpr Field<Owner, T> field(std::string_view name, T Owner::*member, std::optional<FieldDefaultOf<T>> fallback,
                                 std::optional<Bound> lo, std::optional<Bound> hi, std::string_view doc,
                                 std::string_view unit = {}) {
   return {name, member, fallback, lo, hi, doc, unit};

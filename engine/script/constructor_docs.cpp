@@ -21,7 +21,7 @@ template <class T>
 std::string default_text(const T& v) {
   if constexpr (std::is_same_v<T, Palette>)
     return fmt::format("{{{{{:g}, {:g}, {:g}}}, {{{:g}, {:g}, {:g}}}}}", v.a[0], v.a[1], v.a[2], v.b[0], v.b[1], v.b[2]);
-  else if constexpr (std::is_same_v<T, std::string>)
+  else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, std::string_view>)
     return fmt::format("\"{}\"", v);
   else if constexpr (Choice<T>)
     return fmt::format("\"{}\"", choice_name(v));

@@ -45,7 +45,7 @@ void read_fields(lua::TableReader& t, S& out) {
     T v;
     if constexpr (std::is_same_v<T, std::string>) {
       v = f.fallback ? t.string_or(f.name, *f.fallback) : t.string(f.name);
-      if (!f.fallback && v.empty()) throw lua::FieldError(fmt::format("{}: field '{}' must not be empty", t.context(), f.name));
+      if (v.empty()) throw lua::FieldError(fmt::format("{}: field '{}' must not be empty", t.context(), f.name));
     } else if constexpr (std::is_same_v<T, Palette>) {
       auto list = t.optional_table(f.name);
       if (list)

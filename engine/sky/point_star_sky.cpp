@@ -16,6 +16,10 @@ namespace lc {
 
 namespace {
 
+// Whether the background is an image the shot names (not one of the two
+// words).
+bool is_image(const std::string& background) { return background != "generated" && background != "none"; }
+
 // The generated field's glow is smooth: this width shows it whole.
 constexpr int glow_width = 2048;
 
@@ -73,6 +77,11 @@ std::string kstars_catalogue_path() {
   return set && *set ? std::string(set) : std::string(kstars_catalogue_file);
 }
 
+std::vector<std::string> PointStarSky::assets(const Params& p) {
+  if (is_image(p.background)) return {p.background};
+  return {};
+}
+
 void PointStarSky::Params::validate() const {
   if (catalogue == StarCatalogue::kstars) {
     const std::string file = kstars_catalogue_path();
@@ -109,7 +118,10 @@ PointStars PointStarSky::stars(const Params& p, ShotResources& res) {
 
 PointStarSky::PointStarSky(const Params& p, ShotResources& res)
     : rotate_(p.rotate), scale_(static_cast<float>(std::exp2(p.brightness))), stars_(stars(p, res)) {
-  if (p.background == StarBackground::generated) background_ = res.sky_glow(p.seed, glow_width);
+  if (p.background == "generated")
+    background_ = res.sky_glow(p.seed, glow_width);
+  else if (is_image(p.background))
+    background_ = res.texture(p.background);
 }
 
 Color PointStarSky::color(double theta, double phi) const {

@@ -30,8 +30,6 @@ class ShotResources;
 
 enum class StarCatalogue { generated, kstars };
 constexpr std::array<std::string_view, 2> choice_names(StarCatalogue) { return {"generated", "kstars"}; }
-enum class StarBackground { generated, none };
-constexpr std::array<std::string_view, 2> choice_names(StarBackground) { return {"generated", "none"}; }
 
 // Where KStars' catalogue is read from: Debian's kstars-data installs it
 // here; the environment variable LIGHTCONE_STAR_CATALOGUE names another
@@ -58,7 +56,7 @@ class PointStarSky {
     StarCatalogue catalogue = StarCatalogue::generated;
     double faintest = 8.0;
     std::uint32_t seed = 1;
-    StarBackground background = StarBackground::generated;
+    std::string background = "generated";
     double rotate = 0.0, brightness = 0.0, glare = 0.1, glare_size = 0.002;
     static constexpr auto fields = std::tuple{
         field("catalogue", &Params::catalogue, std::optional<StarCatalogue>{StarCatalogue::generated}, std::nullopt,
@@ -70,10 +68,10 @@ class PointStarSky {
               "the faintest stars drawn", "magnitudes (V)"),
         field("seed", &Params::seed, std::optional<std::uint32_t>{1}, at_least(0), at_most(2147483647),
               "the generated field's seed (its stars and its band's glow)"),
-        field("background", &Params::background, std::optional<StarBackground>{StarBackground::generated},
-              std::nullopt, std::nullopt,
-              "the diffuse light behind the stars: generated (the glow of the generated field's Milky-Way-like band, "
-              "for `seed`) or none"),
+        field("background", &Params::background, std::optional<std::string_view>{"generated"}, std::nullopt,
+              std::nullopt,
+              "the diffuse light behind the stars: \"generated\" (the glow of the generated field's Milky-Way-like "
+              "band, for `seed`), \"none\", or an equirectangular image (a file, as lc.sky_image's)"),
         field("rotate", &Params::rotate, std::optional<double>{0.0}, std::nullopt, std::nullopt,
               "added to the longitude of the stars and the background", "degrees"),
         field("brightness", &Params::brightness, std::optional<double>{0.0}, at_least(-64.0), at_most(64.0),
@@ -89,8 +87,9 @@ class PointStarSky {
     // it.  Throws std::invalid_argument.
     void validate() const;
   };
-  // It reads no shot files (the KStars catalogue is the system's).
-  static std::vector<std::string> assets(const Params&) { return {}; }
+  // The image a frame with this sky reads, if its background is one (the
+  // KStars catalogue is the system's, not the shot's).
+  static std::vector<std::string> assets(const Params& p);
 
   PointStarSky(const Params& p, ShotResources& res);
   // The stars alone, as the stage after the pixels needs them (without the

@@ -113,6 +113,8 @@ expect_error bad_catalogue "starfield: the catalogue does not read: $WORK/bad_st
   env LIGHTCONE_STAR_CATALOGUE="$WORK/bad_stars.dat" "$LIGHTCONE" render no_catalogue.lua --out out
 grep -qF "no_catalogue.lua" "$WORK/bad_catalogue.err" || fail "bad catalogue: no shot named: $(cat "$WORK/bad_catalogue.err")"
 [ ! -e out/no_catalogue.0000.exr ] || fail "a frame was written from a bad catalogue"
+shot no_background "$good_kerr sky = lc.starfield{background = 'nope.png'},"
+expect_error no_background "sky image 'nope.png' not found" -- "$LIGHTCONE" render no_background.lua --out out
 shot bad_choice "$good_kerr sky = lc.starfield{catalogue = 'hipparcos'},"
 expect_error bad_choice "bad_choice.lua:5: starfield: field 'catalogue'" -- "$LIGHTCONE" render bad_choice.lua --out out
 shot nan "$good_kerr camera = lc.camera{fov = 0/0},"

@@ -28,7 +28,7 @@ TEST(PointStarStage, AStarsLightHoldsStillThroughASlowPan) {
   fs.spacetime = Minkowski{};
   fs.observer.position = {0, 0, 40, 0};
   PointStarSky::Params sky;
-  sky.background = StarBackground::none;
+  sky.background = "none";
   fs.sky = sky;
   RenderSettings rs{W, H, 2, false};
   ShotResources res;
