@@ -40,13 +40,6 @@ if ! have_all; then
   have_all || skip "still missing after apt-get: one of ${need[*]}"
 fi
 
-# slurmd (Slurm 22.05) initialises its cgroup plugin whatever the
-# configuration and stops without a cgroup filesystem: a chroot whose /sys
-# is bound without its submounts (a fresh-root check's, say)
-# has none.  Every booted Debian 12 has one.
-mountpoint -q /sys/fs/cgroup ||
-  skip "slurmd needs the cgroup filesystem at /sys/fs/cgroup, which is not mounted here (a chroot?)"
-
 # --- Bring the cluster up --------------------------------------------------
 S="$WORK/slurm"  # config, state, spool, logs, pid files
 # munged's socket, pid, seed and log (owned by munge).  Not under $WORK:
@@ -56,6 +49,7 @@ mkdir -p "$S/state" "$S/spool"
 chown munge:munge "$M"
 chmod 755 "$M"  # munged wants the socket's directory open to all (execute)
 DAEMONS=()  # "name pid" of each daemon this test started
+MOUNTED=()  # what this test mounted, innermost last
 JOBS_SUBMITTED=0
 
 teardown() {
@@ -89,11 +83,31 @@ teardown() {
     fi
   done
   rm -rf "$M"
+  for ((i = ${#MOUNTED[@]} - 1; i >= 0; i--)); do umount "${MOUNTED[$i]}" || echo "teardown: could not unmount ${MOUNTED[$i]}" >&2; done
   exit "$rc"
 }
 trap teardown EXIT
 trap 'exit 130' INT
 trap 'exit 143' TERM
+
+# slurmd (Slurm 22.05) initialises its cgroup plugin whatever the
+# configuration and stops without a cgroup filesystem.  Every booted
+# Debian 12 has one; a chroot whose /sys is bound without its submounts (a
+# fresh-root check's, say) has none.  There the test mounts the least
+# slurmd accepts (cgroup v1: a tmpfs holding the named hierarchy
+# name=systemd, which takes no controllers) and unmounts it at teardown.
+if ! mountpoint -q /sys/fs/cgroup; then
+  [ -d /sys/fs/cgroup ] || skip "slurmd needs the cgroup filesystem, and this system has no /sys/fs/cgroup"
+  mount -t tmpfs -o mode=755 lightcone-test-cgroup /sys/fs/cgroup ||
+    skip "slurmd needs the cgroup filesystem at /sys/fs/cgroup, which is not mounted here and cannot be"
+  MOUNTED+=(/sys/fs/cgroup)
+  mkdir -p /sys/fs/cgroup/systemd
+  mount -t cgroup -o none,name=systemd lightcone-test-cgroup /sys/fs/cgroup/systemd ||
+    skip "slurmd needs the cgroup filesystem at /sys/fs/cgroup, which is not mounted here and cannot be"
+  MOUNTED+=(/sys/fs/cgroup/systemd)
+  echo "slurm: no cgroup filesystem here: mounted a tmpfs and the name=systemd hierarchy at /sys/fs/cgroup for this test"
+fi
+
 
 # start_daemon NAME PIDFILE CMD...: CMD daemonises and writes PIDFILE.
 start_daemon() {
