@@ -27,11 +27,16 @@ void StoreSink::store(const CompletedFrame& cf) {
     return;
   }
   const FrameFacts& facts = survey_.frames.at(cf.frame);
-  // The stage after the pixels: a sky's point stars.
-  FrameImage image{cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}};
+  // The stage after the pixels: a sky's point stars, drawn on a copy (the
+  // frame as the rays made it is the queue's); a frame without them is
+  // written as it is (the files do not hold sky points).
+  const FrameImage* written = &cf.image;
+  FrameImage with_stars;
   if (const auto stars = cf.image.sky.empty() ? std::nullopt : sky_point_stars(facts.sky, resources_)) {
     const auto start = std::chrono::steady_clock::now();
-    draw_point_stars(*stars, Camera(facts.camera, image.width, image.height), cf.image.sky, image);
+    with_stars = {cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}};
+    draw_point_stars(*stars, Camera(facts.camera, with_stars.width, with_stars.height), cf.image.sky, with_stars);
+    written = &with_stars;
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
     std::lock_guard lock(star_mutex_);
     star_seconds_ += took.count();
@@ -44,7 +49,7 @@ void StoreSink::store(const CompletedFrame& cf) {
                                   {"lightcone/spacetime", facts.spacetime},
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};
-  store_.write_frame(cf.frame, image, metadata, frame_settings(rs_), facts.inputs, facts.parts, cf.stats.rays,
+  store_.write_frame(cf.frame, *written, metadata, frame_settings(rs_), facts.inputs, facts.parts, cf.stats.rays,
                      display_);
 }
 
