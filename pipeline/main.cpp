@@ -15,6 +15,7 @@
 
 #include "bench_command.hpp"
 #include "contact_sheet_command.hpp"
+#include "cost_command.hpp"
 #include "encode_command.hpp"
 #include "farm_bench_command.hpp"
 #include "geodesic_command.hpp"
@@ -137,6 +138,12 @@ int main(int argc, char** argv) {
   inspect_cmd->add_option("shot", inspect.shot, "Shot script")->required()->check(CLI::ExistingFile);
   inspect_cmd->add_option("--frames", inspect.frames, "Frames A, A:B or A:B:STEP (inclusive, numbered from 0)");
 
+  lc::CostCommand cost;
+  auto* cost_cmd = app.add_subcommand(
+      "cost", "What the frames of render directories cost, from their journals: core-seconds, samples traced and reused");
+  cost_cmd->add_option("dirs", cost.dirs, "Render output directories (a render's --out)")->required();
+  cost_cmd->add_option("--csv", cost.csv, "Also write one CSV row per frame to this file");
+
   lc::TraceCommand trace;
   auto* fields_cmd = app.add_subcommand(
       "fields", "Print every scene constructor lc.<name>{...} with its fields, defaults and ranges (Markdown)");
@@ -237,6 +244,7 @@ int main(int argc, char** argv) {
     if (*render_cmd) return lc::run_render(render);
     if (*farm_bench_cmd) return lc::run_farm_bench(farm_bench);
     if (*inspect_cmd) return lc::run_inspect(inspect);
+    if (*cost_cmd) return lc::run_cost(cost);
     if (*fields_cmd) {
       fmt::print("{}", lc::constructor_tables());
       return 0;

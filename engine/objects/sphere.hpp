@@ -103,7 +103,7 @@ class Sphere : public SphereBody {
   // How far from the origin (coordinates) anything of it ever is.
   double reach(double) const {
     double r = 0.0;
-    for (int k = 0; k < 3; ++k) r = std::max({r, std::abs(life_lo[k]) + 2.0 * radius, std::abs(life_hi[k]) + 2.0 * radius});
+    for (int k = 0; k < 3; ++k) r = std::max({r, std::abs(life_lo[k]) + tube_radius(), std::abs(life_hi[k]) + tube_radius()});
     return r;
   }
 
@@ -162,7 +162,7 @@ class Sphere : public SphereBody {
   void check_worldline_lasts(const Vec4& observer) const {
     double d2 = 0.0;
     for (int k = 0; k < 3; ++k) {
-      const double lo = life_lo[k] - 2.0 * radius, hi = life_hi[k] + 2.0 * radius;
+      const double lo = life_lo[k] - tube_radius(), hi = life_hi[k] + tube_radius();
       const double out = std::max({lo - observer[k + 1], observer[k + 1] - hi, 0.0});
       d2 += out * out;
     }

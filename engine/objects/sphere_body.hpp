@@ -27,6 +27,16 @@ struct SphereBody {
   // Spatial box the centre stays in at all times.
   Vec3 life_lo{}, life_hi{};
 
+  // How far, in coordinates, any point of the sphere may be from the centre
+  // at the point's own coordinate time: the spacetime tube's radius.  A
+  // surface point is R from the centre event simultaneous with it in the
+  // sphere's rest frame; in these charts a coordinate length is at most the
+  // proper length (the dihole's U >= 1, Kerr–Schild's f l l >= 0), and
+  // that event is at most v R gamma of coordinate time away, in which the
+  // centre moves v of it: 2R holds for speeds up to ~0.65 c
+  // (docs/architecture.md, "Local objects").
+  double tube_radius() const { return 2.0 * radius; }
+
   SphereFrame at(double t) const {
     if (worldline) {
       const WorldlineEvent ev = worldline->at_coordinate_time(t);

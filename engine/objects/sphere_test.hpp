@@ -158,7 +158,7 @@ enum class SphereReach {
   double chord1 = 0.0, b[4];  // the chord's L1 length: no square root, and >= its length
   for (int k = 0; k < 4; ++k) b[k] = step.component(k, l1);
   for (int k = 0; k < 3; ++k) chord1 += std::abs(b[k + 1] - a[k + 1]);
-  const double far = 2.0 * sphere.radius + 0.5 * chord1;
+  const double far = sphere.tube_radius() + 0.5 * chord1;
   for (int k = 0; k < 3; ++k) {
     rlo[k] = std::min(a[k + 1], b[k + 1]);
     rhi[k] = std::max(a[k + 1], b[k + 1]);
@@ -181,7 +181,7 @@ enum class SphereReach {
 // grow_by_reach grows such a box of centres in place (the tube sphere_entry
 // clips the step to).
 inline void grow_by_reach(const StepHull& h, const SphereBody& sphere, Vec3& lo, Vec3& hi) {
-  const double grow = 2.0 * sphere.radius + h.margin;
+  const double grow = sphere.tube_radius() + h.margin;
   for (int k = 0; k < 3; ++k) {
     lo[k] -= grow;
     hi[k] += grow;

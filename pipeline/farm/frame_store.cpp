@@ -1,5 +1,6 @@
 #include "farm/frame_store.hpp"
 
+#include <chrono>
 #include <algorithm>
 #include <stdexcept>
 
@@ -104,7 +105,7 @@ void FrameStore::note_inputs(const std::map<std::string, std::string>& files) {
 
 void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata,
                              const FrameSettings& settings, const std::string& inputs, const InputParts& parts,
-                             long rays, const DisplayTransform& display) {
+                             FrameCost cost, const DisplayTransform& display) {
   with_space_hint(dir_, [&] {
     write_frame_files(frame_path(dir_, shot_, frame, "exr"), frame_path(dir_, shot_, frame, "png"), image, metadata,
                       display);
@@ -114,7 +115,8 @@ void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMeta
   jf.settings = settings;
   jf.inputs = inputs;
   jf.parts = parts;
-  jf.rays = rays;
+  cost.finished = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  jf.cost = cost;
   const auto exr = size_of(frame_path(dir_, shot_, frame, "exr"));
   const auto png = size_of(frame_path(dir_, shot_, frame, "png"));
   if (!exr || !png)

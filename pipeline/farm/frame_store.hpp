@@ -57,9 +57,10 @@ class FrameStore {
   // durable, then appends its journal line.  Throws std::runtime_error
   // naming the file (a full disk, a vanished directory).  Thread-safe for
   // different frames (the journal appends are serialised).
-  // The PNG shows the image through `display`.
+  // The PNG shows the image through `display`; the line records `cost`,
+  // stamped with the time it is written.
   void write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata, const FrameSettings& settings,
-                   const std::string& inputs, const InputParts& parts, long rays, const DisplayTransform& display);
+                   const std::string& inputs, const InputParts& parts, FrameCost cost, const DisplayTransform& display);
 
   // Writes DIR/preview/<shot>.<NNNN>.png atomically from a frame of which
   // only `rendered` rows are filled: every other row is copied from the

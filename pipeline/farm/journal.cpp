@@ -70,7 +70,7 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
   if (x == std::string::npos) return std::nullopt;
   if (!parse_number(*frame, jf.frame) || !parse_number(size->substr(0, x), jf.settings.width) ||
       !parse_number(size->substr(x + 1), jf.settings.height) || !parse_number(*ss, jf.settings.supersample) ||
-      !parse_number(*exr, jf.exr_bytes) || !parse_number(*png, jf.png_bytes) || !parse_number(*rays, jf.rays))
+      !parse_number(*exr, jf.exr_bytes) || !parse_number(*png, jf.png_bytes) || !parse_number(*rays, jf.cost.rays))
     return std::nullopt;
   if (*layers != "0" && *layers != "1") return std::nullopt;
   jf.settings.layers = *layers == "1";
@@ -90,6 +90,14 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
       jf.parts.sky = *sky;
     }
   }
+  // Written since the journal records what a frame cost (all four, or none).
+  if (const std::string* reused = get("reused")) {
+    const std::string *core = get("core_seconds"), *stars = get("star_seconds"), *finished = get("finished");
+    if (!core || !stars || !finished || !parse_number(*reused, jf.cost.reused) ||
+        !parse_number(*core, jf.cost.core_seconds) || !parse_number(*stars, jf.cost.star_seconds) ||
+        !parse_number(*finished, jf.cost.finished))
+      return std::nullopt;
+  }
   return jf;
 }
 
@@ -106,10 +114,14 @@ std::string journal_frame_line(const JournalFrame& f) {
   // The parts go only where known (a sky only with a script, as parse_frame reads them).
   const std::string parts = f.parts.script.empty() ? ""
                             : " script=" + f.parts.script + (f.parts.sky.empty() ? "" : " sky=" + f.parts.sky);
-  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={} inputs={}{} exr={} png={} rays={}",
+  const FrameCost& c = f.cost;
+  const std::string cost = c.recorded() ? fmt::format(" reused={} core_seconds={:.3f} star_seconds={:.3f} finished={}",
+                                                      c.reused, c.core_seconds, c.star_seconds, c.finished)
+                                        : "";
+  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={} inputs={}{} exr={} png={} rays={}{}",
                                 f.frame, f.settings.width, f.settings.height, f.settings.supersample,
                                 f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", f.inputs, parts,
-                                f.exr_bytes, f.png_bytes, f.rays));
+                                f.exr_bytes, f.png_bytes, c.rays, cost));
 }
 
 std::string journal_input_line(const std::string& hash, const std::string& path) {

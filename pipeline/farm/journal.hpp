@@ -9,8 +9,10 @@
 //   input hash=<16 hex> path=<file>                         (an input file's content as of a run)
 //   frame=<n> size=<W>x<H> supersample=<N> layers=<0|1> sampling=<adaptive|full> inputs=<16 hex>
 //     script=<16 hex> [sky=<16 hex>] exr=<bytes> png=<bytes> rays=<n>
+//     reused=<n> core_seconds=<s> star_seconds=<s> finished=<unix seconds>
 // A later frame line for the same frame supersedes an earlier one.  Lines
-// of older journals lack sampling (full), script and sky.
+// of older journals lack sampling (full), script and sky, and what the
+// frame cost beyond its rays.
 
 #include <cstdint>
 #include <filesystem>
@@ -40,13 +42,25 @@ struct InputParts {
   bool operator==(const InputParts&) const = default;
 };
 
+// What a frame cost, as its journal line records it (docs/cli.md,
+// `lightcone cost`).
+struct FrameCost {
+  long rays = 0;              // samples traced
+  long reused = -1;           // samples kept from earlier frames instead (-1: not recorded)
+  double core_seconds = -1;   // time of the threads that rendered its working sets, summed, scene evaluation
+                              // included (-1: not recorded)
+  double star_seconds = 0.0;  // the writer's point-star stage
+  std::int64_t finished = 0;  // when it was stored, Unix seconds (0: not recorded)
+  bool recorded() const { return reused >= 0 && core_seconds >= 0.0; }
+};
+
 struct JournalFrame {
   int frame = 0;
   FrameSettings settings;
   std::string inputs;  // 16 hex digits: the frame's input hash
   InputParts parts;
   std::uintmax_t exr_bytes = 0, png_bytes = 0;
-  long rays = 0;
+  FrameCost cost;
 };
 
 struct JournalContents {

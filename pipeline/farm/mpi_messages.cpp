@@ -30,6 +30,7 @@ T get(std::span<const char> b, std::size_t& at) {
 struct ResultHeader {
   std::int32_t frame, stripe, pass, sky;  // sky: 1 when the rows' sky points follow their pixels
   std::int64_t rays, steps, gave_up, reused;
+  double seconds;
 };
 
 }  // namespace
@@ -92,7 +93,7 @@ Bytes pack_result(const WorkItem& item, const RenderStats& stats, const FrameIma
   Bytes b;
   b.reserve(sizeof(ResultHeader) + bytes);
   put(b, ResultHeader{item.frame, item.stripe, static_cast<std::int32_t>(item.pass), sky ? 1 : 0, stats.rays,
-                      stats.steps, stats.gave_up, stats.reused});
+                      stats.steps, stats.gave_up, stats.reused, stats.seconds});
   auto append = [&](const auto* p, std::size_t n) {
     const char* c = reinterpret_cast<const char*>(p);
     b.insert(b.end(), c, c + n * sizeof(*p));
@@ -131,7 +132,7 @@ RenderStats unpack_result(std::span<const char> b, FrameImage& canvas, const std
     for (auto& layer : canvas.layers) take(layer.values.data() + w * j, w);
     if (h.sky) take(canvas.sky.data() + w * j, w);
   }
-  return {h.rays, h.steps, h.gave_up, h.reused};
+  return {h.rays, h.steps, h.gave_up, h.reused, h.seconds};
 }
 
 }  // namespace lc::farm

@@ -32,12 +32,14 @@ void StoreSink::store(const CompletedFrame& cf) {
   // written as it is (the files do not hold sky points).
   const FrameImage* written = &cf.image;
   FrameImage with_stars;
+  FrameCost cost{.rays = cf.stats.rays, .reused = cf.stats.reused, .core_seconds = cf.stats.seconds};
   if (const auto stars = cf.image.sky.empty() ? std::nullopt : sky_point_stars(facts.sky, resources_)) {
     const auto start = std::chrono::steady_clock::now();
     with_stars = {cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}};
     draw_point_stars(*stars, Camera(facts.camera, with_stars.width, with_stars.height), cf.image.sky, with_stars);
     written = &with_stars;
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+    cost.star_seconds = took.count();
     std::lock_guard lock(star_mutex_);
     star_seconds_ += took.count();
   }
@@ -49,7 +51,7 @@ void StoreSink::store(const CompletedFrame& cf) {
                                   {"lightcone/spacetime", facts.spacetime},
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};
-  store_.write_frame(cf.frame, *written, metadata, frame_settings(rs_), facts.inputs, facts.parts, cf.stats.rays,
+  store_.write_frame(cf.frame, *written, metadata, frame_settings(rs_), facts.inputs, facts.parts, cost,
                      display_);
 }
 

@@ -15,6 +15,7 @@
 namespace lc::farm {
 
 RenderStats SceneStripeRenderer::render(const WorkItem& item, FrameImage& canvas) {
+  const auto start = std::chrono::steady_clock::now();
   const auto scene = scenes_.get(item.frame);
   const std::vector<int> rows = layout_.rows(item.stripe);
   {
@@ -23,7 +24,9 @@ RenderStats SceneStripeRenderer::render(const WorkItem& item, FrameImage& canvas
     std::lock_guard lock(prepare_mutex_);
     prepare_frame(*scene, canvas);
   }
-  return render_rows(*scene, rs_, rows, canvas, memo_.get());
+  RenderStats stats = render_rows(*scene, rs_, rows, canvas, memo_.get());
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
 }
 
 PausingStripeRenderer::PausingStripeRenderer(StripeRenderer& inner, long sets, std::string who,

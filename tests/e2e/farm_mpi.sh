@@ -37,6 +37,20 @@ mpi 3 "$LIGHTCONE" render "$SHOT" --out m3 --layers --stripes 5 --preview 2 2>m3
 grep -q "3 ranks (a master and 2 workers)" m3.log || fail "not a 3-rank farm: $(cat m3.log)"
 same_frames ref m3
 [ "$(ls m3/preview/farm_orbit.*.png | wc -l)" -eq 10 ] || fail "previews: $(ls m3/preview)"
+# What each frame cost comes back from the workers into the journal:
+# `lightcone cost` reads it (the rays as the journal counts them, time spent).
+"$LIGHTCONE" cost m3 ref --csv cost.csv >cost.log 2>&1 || fail "lightcone cost: $(cat cost.log)"
+grep -q "farm_orbit (m3): 10 frames in the journal" cost.log || fail "cost summary: $(cat cost.log)"
+grep -q "^all: 20 frames" cost.log || fail "cost total: $(cat cost.log)"
+python3 - cost.csv m3/farm_orbit.journal <<'PY' || fail "cost CSV does not match the journal: $(cat cost.csv)"
+import csv, re, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["frame"] and r["shot"] == "farm_orbit"]
+assert len(rows) == 20, len(rows)
+journal = {int(m.group(1)): int(m.group(2)) for m in re.finditer(r"frame=(\d+) .* rays=(\d+)", open(sys.argv[2]).read())}
+m3 = rows[:10]
+assert {int(r["frame"]): int(r["rays"]) for r in m3} == journal, (m3, journal)
+assert all(float(r["core_seconds"]) > 0 and int(r["finished"]) > 1.7e9 for r in rows), rows
+PY
 # The master sleeps while it waits: far less than a core (measured on a job
 # of a few seconds; on the tiny one above its start-up would dominate).
 mpi 3 "$LIGHTCONE" render "$SHOT" --out mcpu --size 192x120 --supersample 2 --full-supersample 2>mcpu.log \

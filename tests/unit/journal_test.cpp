@@ -23,7 +23,7 @@ JournalFrame frame(int n) {
   f.inputs = "0123456789abcdef";
   f.exr_bytes = 1000 + n;
   f.png_bytes = 200 + n;
-  f.rays = 6144;
+  f.cost = {.rays = 6144, .reused = 100 + n, .core_seconds = 1.25 * n, .star_seconds = 0.125, .finished = 1764000000 + n};
   return f;
 }
 
@@ -49,7 +49,11 @@ TEST(Journal, LinesRoundTrip) {
   EXPECT_EQ(f.inputs, "0123456789abcdef");
   EXPECT_EQ(f.exr_bytes, 1002u);
   EXPECT_EQ(f.png_bytes, 202u);
-  EXPECT_EQ(f.rays, 6144);
+  EXPECT_EQ(f.cost.rays, 6144);
+  EXPECT_EQ(f.cost.reused, 102);
+  EXPECT_EQ(f.cost.core_seconds, 2.5);
+  EXPECT_EQ(f.cost.star_seconds, 0.125);
+  EXPECT_EQ(f.cost.finished, 1764000002);
   EXPECT_EQ(j.inputs.at("/shots/a b.lua"), "00000000000000aa");  // paths may hold spaces
   EXPECT_EQ(j.bad_lines, 0);
   EXPECT_FALSE(j.torn_tail);
@@ -251,6 +255,20 @@ TEST(Journal, WithoutAJournalNothingIsStale) {
 TEST(Journal, MissingFileReadsEmpty) {
   test::ScratchDir dir;
   EXPECT_TRUE(read_journal(dir / "none.journal").frames.empty());
+}
+
+// What a frame cost: round-trips; a line without it (older journals) still
+// counts, with the cost marked unrecorded.
+TEST(Journal, CostRoundTripsAndOlderLinesLackIt) {
+  JournalFrame old = frame(7);
+  old.cost = {.rays = 5};
+  const std::string text = journal_text(2) + journal_frame_line(old) + "\n";
+  const JournalContents j = parse_journal(text, "j");
+  EXPECT_TRUE(j.frames.at(1).cost.recorded());
+  EXPECT_EQ(j.frames.at(1).cost.finished, 1764000001);
+  EXPECT_FALSE(j.frames.at(7).cost.recorded());
+  EXPECT_EQ(j.frames.at(7).cost.rays, 5);
+  EXPECT_EQ(journal_frame_line(old).find("reused="), std::string::npos);
 }
 
 }  // namespace
