@@ -26,7 +26,7 @@ struct RenderSettings {
 struct RenderStats {
   long rays = 0, steps = 0, gave_up = 0;  // rays traced
   long reused = 0;                        // samples taken from a SampleMemo instead
-  double seconds = 0.0;                   // thread time spent on them (core-seconds), where measured
+  double seconds = 0.0;                   // CPU time spent on them (core-seconds), where measured
   RenderStats& operator+=(const RenderStats& o) {
     rays += o.rays;
     steps += o.steps;

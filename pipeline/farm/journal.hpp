@@ -47,8 +47,8 @@ struct InputParts {
 struct FrameCost {
   long rays = 0;              // samples traced
   long reused = -1;           // samples kept from earlier frames instead (-1: not recorded)
-  double core_seconds = -1;   // time of the threads that rendered its working sets, summed, scene evaluation
-                              // included (-1: not recorded)
+  double core_seconds = -1;   // CPU time of the threads that rendered its working sets, summed, scene
+                              // evaluation included (-1: not recorded)
   double star_seconds = 0.0;  // the writer's point-star stage
   std::int64_t finished = 0;  // when it was stored, Unix seconds (0: not recorded)
   bool recorded() const { return reused >= 0 && core_seconds >= 0.0; }
