@@ -97,6 +97,7 @@ class Sphere : public SphereBody {
       }
     }
     bounds(-1e300, 1e300, life_lo, life_hi);
+    top_speed = worldline ? worldline->top_coordinate_speed() : 0.0;
     if (worldline) check_worldline_lasts(observer);
   }
 
@@ -108,20 +109,25 @@ class Sphere : public SphereBody {
   }
 
   // The first entry into it within the test's step, if any and before the
-  // earliest hit found so far.  A ray that comes near where its centre ever
-  // is depends on the frame's time: no other frame may reuse it (near one
-  // at rest too, though only to rounding: the test works in absolute
-  // coordinate time, so shifted in time its samples round differently, and
-  // a grazing hit could flip).
+  // earliest hit found so far.  A step that comes near where its centre
+  // ever is narrows the ray's reuse window to the time the centre needs to
+  // reach the step's tube: a frame shifted by dt in time finds the centre
+  // within top_speed |dt| of where it is in this one.  A step that may
+  // enter the tube closes it (for one at rest too, though only for
+  // rounding: the test works in absolute coordinate time, so shifted in
+  // time a grazing hit could flip).
   template <class S>
   std::optional<double> first_hit(const S& st, StepTest& t, std::size_t index) const {
-    const detail::SphereReach reach = detail::sphere_near_step(*this, t.step());
-    if (reach == detail::SphereReach::never) return std::nullopt;
-    const bool timeless_yet = !t.depends_on_time();
-    if (reach == detail::SphereReach::not_now && !timeless_yet) return std::nullopt;
-    if (timeless_yet && detail::hull_near_centres(t.hull(), *this, life_lo, life_hi)) t.mark_time_dependent();
-    if (reach == detail::SphereReach::not_now) return std::nullopt;
-    const auto l = detail::sphere_entry(st, *this, t.step(), t.hull(), t.warm_start(index));
+    const detail::SphereNear near = detail::sphere_near_step(*this, t.step());
+    if (near.reach == detail::SphereReach::never) return std::nullopt;
+    if (t.reusable()) {
+      const double clear = detail::step_clearance(t.step(), t.hull(), *this, near.lo, near.hi);
+      t.limit_reuse_window(clear <= 0.0         ? 0.0
+                           : top_speed > 0.0 ? clear / top_speed
+                                             : std::numeric_limits<double>::infinity());
+    }
+    if (near.reach == detail::SphereReach::not_now) return std::nullopt;
+    const auto l = detail::sphere_entry(st, *this, t.step(), t.hull(), near.lo, near.hi, t.warm_start(index));
     if (l && *l < t.best()) return l;
     return std::nullopt;
   }

@@ -26,6 +26,8 @@ struct SphereBody {
   Tetrad rest_frame{};
   // Spatial box the centre stays in at all times.
   Vec3 life_lo{}, life_hi{};
+  // The fastest its centre moves, |dx/dt| in coordinates (0 at rest).
+  double top_speed = 0.0;
 
   // How far, in coordinates, any point of the sphere may be from the centre
   // at the point's own coordinate time: the spacetime tube's radius.  A

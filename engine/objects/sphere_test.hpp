@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <type_traits>
 
@@ -146,12 +147,17 @@ enum class SphereReach {
   maybe,    // sphere_entry must look
 };
 
+struct SphereNear {
+  SphereReach reach;
+  Vec3 lo, hi;  // unless never: the centre's box over the step's time range
+};
+
 // The cheap first half of sphere_entry, for every step of every ray.  First
 // against the box the centre never leaves, grown by 2R and half the chord
 // (a step strays from its chord by less than that), then against the
 // centre's box over the step's time range (a table lookup); neither
 // evaluates the step's dense output inside.
-[[gnu::always_inline]] inline SphereReach sphere_near_step(const SphereBody& sphere, const RayStep& step) {
+[[gnu::always_inline]] inline SphereNear sphere_near_step(const SphereBody& sphere, const RayStep& step) {
   const RayState& a = step.start();
   const double l1 = step.t0 + step.h;
   Vec3 rlo, rhi, clo, chi;
@@ -165,21 +171,65 @@ enum class SphereReach {
     clo[k] = sphere.life_lo[k] - far;
     chi[k] = sphere.life_hi[k] + far;
   }
-  if (!boxes_overlap(rlo, rhi, clo, chi)) return SphereReach::never;
-  sphere.bounds(a[0], b[0], clo, chi);
+  SphereNear out{SphereReach::never, {}, {}};
+  if (!boxes_overlap(rlo, rhi, clo, chi)) return out;
+  sphere.bounds(a[0], b[0], out.lo, out.hi);
   for (int k = 0; k < 3; ++k) {
-    clo[k] -= far;
-    chi[k] += far;
+    clo[k] = out.lo[k] - far;
+    chi[k] = out.hi[k] + far;
   }
-  return boxes_overlap(rlo, rhi, clo, chi) ? SphereReach::maybe : SphereReach::not_now;
+  out.reach = boxes_overlap(rlo, rhi, clo, chi) ? SphereReach::maybe : SphereReach::not_now;
+  return out;
 }
 
-// Whether the step (its hull) comes within 2R of the box [lo, hi] of
-// centres: the test both for "may meet the sphere now" (the centre's box
-// over the step's time range) and for "may depend on the sphere's motion"
-// (the box it never leaves).
-// grow_by_reach grows such a box of centres in place (the tube sphere_entry
-// clips the step to).
+// The distance from the segment a + s (b - a), s in [0, 1], to the box
+// [lo, hi].  Its square is convex and quadratic between the s where the
+// segment crosses a face's plane, so it is minimised piece by piece.
+inline double segment_box_distance(const Vec3& a, const Vec3& b, const Vec3& lo, const Vec3& hi) {
+  double cuts[8] = {0.0, 1.0};
+  int n = 2;
+  for (int k = 0; k < 3; ++k) {
+    const double d = b[k] - a[k];
+    if (d == 0.0) continue;
+    for (const double face : {lo[k], hi[k]}) {
+      const double s = (face - a[k]) / d;
+      if (s > 0.0 && s < 1.0) cuts[n++] = s;
+    }
+  }
+  std::sort(cuts, cuts + n);
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i + 1 < n; ++i) {
+    // On [s0, s1] each axis is below, inside or above the box throughout:
+    // the squared distance is A s^2 + B s + C there.
+    const double s0 = cuts[i], s1 = cuts[i + 1], mid = 0.5 * (s0 + s1);
+    double A = 0.0, B = 0.0, C = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = b[k] - a[k], p = a[k] + mid * d;
+      const double face = p < lo[k] ? lo[k] : p > hi[k] ? hi[k] : p;
+      if (face == p) continue;
+      const double e = a[k] - face;  // offset from the face at s = 0
+      A += d * d;
+      B += 2.0 * d * e;
+      C += e * e;
+    }
+    const double s = A > 0.0 ? std::clamp(-B / (2.0 * A), s0, s1) : (B > 0.0 ? s0 : s1);
+    best = std::min(best, std::max(0.0, (A * s + B) * s + C));
+  }
+  return std::sqrt(best);
+}
+
+// How far (coordinates) the step stays outside the tube around the box
+// [lo, hi] of centres: <= 0 where it may enter it.  The step is its chord,
+// strayed from by at most the hull's margin.
+inline double step_clearance(const RayStep& step, const StepHull& h, const SphereBody& sphere, const Vec3& lo,
+                             const Vec3& hi) {
+  const RayState& a = step.start();
+  return segment_box_distance({a[1], a[2], a[3]}, {h.end[1], h.end[2], h.end[3]}, lo, hi) - sphere.tube_radius() -
+         h.margin;
+}
+
+// grow_by_reach grows a box of centres in place by the tube's radius and
+// the step's bulge (the tube sphere_entry clips the step to).
 inline void grow_by_reach(const StepHull& h, const SphereBody& sphere, Vec3& lo, Vec3& hi) {
   const double grow = sphere.tube_radius() + h.margin;
   for (int k = 0; k < 3; ++k) {
@@ -188,26 +238,20 @@ inline void grow_by_reach(const StepHull& h, const SphereBody& sphere, Vec3& lo,
   }
 }
 
-inline bool hull_near_centres(const StepHull& h, const SphereBody& sphere, Vec3 lo, Vec3 hi) {
-  grow_by_reach(h, sphere, lo, hi);
-  return boxes_overlap(h.lo, h.hi, lo, hi);
-}
-
 // First entry of the ray into the sphere within a step that sphere_near_step
 // let through, if any: the affine parameter of the crossing.  The spacetime
-// tube (the centre's box over the step's time range, grown by 2R and the
-// step's bulge) rejects most such steps before any sampling.
+// tube (the centre's box [centre_lo, centre_hi] over the step's time range,
+// grown by 2R and the step's bulge) rejects most such steps before any
+// sampling.
 // t_near carries the last simultaneity answer along the ray (NaN: none yet),
 // so the searches of consecutive steps start close to theirs.
 template <class S>
 [[gnu::noinline]] std::optional<double> sphere_entry(const S& st, const SphereBody& sphere, const RayStep& step,
-                                                     const StepHull& hull, double& t_near) {
+                                                     const StepHull& hull, Vec3 clo, Vec3 chi, double& t_near) {
   const double l0 = step.t0, l1 = step.t0 + step.h;
   const RayState& a = step.start();
   const RayState& b = hull.end;
   const double chord2 = hull.chord2, quarter = hull.quarter, margin = hull.margin;
-  Vec3 clo, chi;
-  sphere.bounds(a[0], b[0], clo, chi);
   grow_by_reach(hull, sphere, clo, chi);
   if (!boxes_overlap(hull.lo, hull.hi, clo, chi)) return std::nullopt;
 

@@ -4,7 +4,9 @@
 // found in it so far, the step's hull (made on first use), the ray's
 // per-object warm starts, and where it crosses the equatorial plane.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -68,9 +70,10 @@ inline ObjectWarmStarts no_warm_starts() {
 
 class StepTest {
  public:
-  // `depends_on_time`: the ray's flag that no other frame may reuse it.
-  StepTest(const RayStep& step, bool& depends_on_time, ObjectWarmStarts& warm)
-      : step_(step), best_(step.t0 + step.h + 1.0), depends_on_time_(depends_on_time), warm_(warm) {
+  // `reuse_window`: the ray's RayHit::reuse_window, narrowed by the objects
+  // the step comes near.
+  StepTest(const RayStep& step, float& reuse_window, ObjectWarmStarts& warm)
+      : step_(step), best_(step.t0 + step.h + 1.0), reuse_window_(reuse_window), warm_(warm) {
     z0_ = step.start()[3];
     z1_ = step.component(3, step.t0 + step.h);
   }
@@ -86,8 +89,15 @@ class StepTest {
     if (!hull_) hull_ = step_hull(step_);
     return *hull_;
   }
-  bool depends_on_time() const { return depends_on_time_; }
-  void mark_time_dependent() { depends_on_time_ = true; }
+  // Whether another frame may still reuse the ray; narrowing the window to
+  // `w` (coordinate time) or less, rounded down.
+  bool reusable() const { return reuse_window_ > 0.0f; }
+  void limit_reuse_window(double w) {
+    if (!(w < reuse_window_)) return;
+    float f = static_cast<float>(std::max(w, 0.0));
+    if (f > w) f = std::nextafter(f, 0.0f);
+    reuse_window_ = f;
+  }
   // The warm start of the object at `index` among the scene's objects.
   double& warm_start(std::size_t index) {
     scratch_ = std::numeric_limits<double>::quiet_NaN();
@@ -106,7 +116,7 @@ class StepTest {
  private:
   const RayStep& step_;
   double best_;
-  bool& depends_on_time_;
+  float& reuse_window_;
   ObjectWarmStarts& warm_;
   double scratch_ = 0.0;
   std::optional<StepHull> hull_;

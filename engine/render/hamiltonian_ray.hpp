@@ -60,7 +60,11 @@ template <class S, class OnStep>
 class HamiltonianRay {
  public:
   HamiltonianRay(const SceneIn<S>& sc, const Vec3& n, OnStep& on_step)
-      : sc_(sc), on_step_(on_step), p0_(backward_ray_momentum(sc.metric, sc.frame, n)) {}
+      : sc_(sc), on_step_(on_step), p0_(backward_ray_momentum(sc.metric, sc.frame, n)) {
+    // No other frame can reuse a ray of a frame without a still key: the
+    // objects need not work out for how long one could.
+    if (sc.still_key.empty()) out_.reuse_window = 0.0f;
+  }
 
   const Vec4& momentum() const { return p0_; }
   // What run_rays starts the ray with.
@@ -86,7 +90,7 @@ class HamiltonianRay {
   bool visit(const RayStep& step, RayResult& res) {
     const S& st = sc_.spacetime;
     on_step_(step.start(), step.t0);
-    StepTest t(step, out_.depends_on_time, warm_);
+    StepTest t(step, out_.reuse_window, warm_);
     std::size_t winner = no_object;
     for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
       if (const auto l = o.first_hit(st, t, index)) {

@@ -3,6 +3,7 @@
 // values of docs/layers.md.
 
 #include <array>
+#include <limits>
 
 #include "core/color.hpp"
 #include "core/hit_kind.hpp"
@@ -28,11 +29,14 @@ struct RayHit {
   // horizon and rays that gave up.
   double g = 0.0;
   int order = 0;  // equatorial-plane crossings before the end
-  // The ray came near an object whose answer may depend on the frame's
-  // time: no other frame may reuse it (render/sample_memo.hpp).  (Here it
-  // fills padding: RaySample's size shows in the Kerr lanes' speed,
+  // How far (coordinate time, either way) the frame's time may move with
+  // this sample unchanged, for frames that differ only in time
+  // (render/sample_memo.hpp): infinite when the ray never came near where
+  // a moving object ever is, else as long as every object it came near
+  // stays clear of it; <= 0: no other frame may reuse it.  (Here it fills
+  // padding: RayHit's size shows in the Kerr lanes' speed,
   // docs/performance.md, change 25.)
-  bool depends_on_time = false;
+  float reuse_window = std::numeric_limits<float>::infinity();
   long steps = 0;
   StopReason reason = StopReason::gave_up;
   // Trace-coordinate state (x^mu, p_mu) where the ray ended, and its affine

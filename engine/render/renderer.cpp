@@ -112,7 +112,7 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
   std::vector<FrameSample> centres(rs.layers ? W : 0);  // pixel i's centre ray, where the layers need one
   for (int j : rows) {
     std::optional<SampleMemo::Row> kept;
-    if (memo) kept = memo->row(j, sc.still_key);
+    if (memo) kept = memo->row(j, sc.still_key, sc.observer_time);
     // Fills the samples at grid indices `where` into the grid: kept ones
     // from the memo, the others traced (and kept for later frames).
     auto trace_row = [&]() {
@@ -135,7 +135,7 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
         const std::size_t g = tracing[n];
         grid[g] = frame_sample(traced[n]);
         if (kept) {
-          kept->put(g, grid[g], !traced[n].depends_on_time);
+          kept->put(g, grid[g], traced[n].reuse_window);
           if (sky_points && g % NN == first_index(g / NN)) kept->put_sky(g / NN, grid[g].sky, W);
         }
       }
@@ -203,7 +203,7 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
     count(traced);
     for (std::size_t n = 0; n < tracing.size(); ++n) {
       centres[tracing[n]] = frame_sample(traced[n]);
-      if (kept) kept->put(W * NN + tracing[n], centres[tracing[n]], !traced[n].depends_on_time);
+      if (kept) kept->put(W * NN + tracing[n], centres[tracing[n]], traced[n].reuse_window);
     }
 
     for (std::size_t i = 0; i < W; ++i) {

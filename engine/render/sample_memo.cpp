@@ -8,11 +8,11 @@ SampleMemo::SampleMemo(const RenderSettings& rs)
   for (int j = 0; j < rs.height; ++j) rows_.push_back(std::make_unique<Slot>());
 }
 
-std::optional<SampleMemo::Row> SampleMemo::row(int j, const std::string& key) {
+std::optional<SampleMemo::Row> SampleMemo::row(int j, const std::string& key, double time) {
   if (key.empty() || j < 0 || static_cast<std::size_t>(j) >= rows_.size()) return std::nullopt;
   Slot& slot = *rows_[static_cast<std::size_t>(j)];
   if (!slot.mutex.try_lock()) return std::nullopt;
-  Row row(slot);
+  Row row(slot, time);
   if (slot.key != key) {
     // Another scene: nothing of the last one's samples applies.  Memory
     // comes with a row's first use, so a process holds only its rows.

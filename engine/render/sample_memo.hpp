@@ -4,17 +4,21 @@
 // time (equal SceneIn::still_key) see the same thing along every ray that
 // stays clear of moving objects' paths: the same ray, traced the same way,
 // with its time shifted.  Such samples are kept per row, and a later frame
-// of the same key takes them instead of tracing them again; a sample whose
-// ray came near a moving object (RaySample::depends_on_time) is always
-// traced.  Holds and a static observer watching a moving sphere
-// (docs/performance.md, change 25) cost only the rays that can change.
+// of the same key takes them instead of tracing them again while its time
+// is within the sample's reuse window (RayHit::reuse_window: for as long as
+// every moving object it came near stays clear of it; a ray that entered
+// an object's tube is always traced).  Holds and a static observer
+// watching a moving sphere (docs/performance.md, changes 25 and 34) cost
+// only the rays that can change.
 //
 // Kept per (row, sample index) for one RenderSettings: sample g of a row is
 // pixel g / (N N)'s grid sample g % (N N), and W N N + i the centre ray of
 // pixel i that the layers take.  Thread-safe: one thread holds a row at a
 // time.
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -29,12 +33,13 @@ namespace lc {
 
 class SampleMemo {
   // What a frame uses of a sample (render/layers.hpp's FrameSample: its
-  // colour, layer values and hit kind), and whether one is kept.
+  // colour and layer values, the first of which is its hit kind), and the
+  // frame times it holds for (none when from > to).
+  static_assert(layers[0].name == "hit.kind");
   struct Kept {
     Color color{};
     LayerValues layers{};
-    std::uint8_t kind = 0;  // HitKind
-    bool kept = false;
+    float from = 1.0f, to = 0.0f;
   };
   struct Slot {
     std::mutex mutex;
@@ -50,13 +55,16 @@ class SampleMemo {
   // One row's samples while a thread renders it.
   class Row {
    public:
-    // Whether sample g was kept from an earlier frame.
-    bool has(std::size_t g) const { return slot_->samples[g].kept; }
+    // Whether sample g was kept from an earlier frame, for this one's time.
+    bool has(std::size_t g) const {
+      const Kept& k = slot_->samples[g];
+      return k.from <= time_ && time_ <= k.to;
+    }
     // Kept sample g (has(g)); its sky point is kept only where put_sky
     // put it.
     FrameSample get(std::size_t g) const {
       const Kept& k = slot_->samples[g];
-      return {k.color, k.layers, static_cast<HitKind>(k.kind), {}};
+      return {k.color, k.layers, static_cast<HitKind>(static_cast<int>(k.layers[0])), {}};
     }
     // The sky point of pixel i's ray for point stars, kept with its sample.
     SkyPoint sky(std::size_t i) const { return i < slot_->sky.size() ? slot_->sky[i] : SkyPoint{}; }
@@ -64,24 +72,39 @@ class SampleMemo {
       slot_->sky.resize(width);
       slot_->sky[i] = p;
     }
-    // Sample g of this frame, kept for later frames unless its ray came near
-    // a moving object (`keep` false: RaySample::depends_on_time).
-    void put(std::size_t g, const FrameSample& s, bool keep) {
-      slot_->samples[g] = {s.color, s.layers, static_cast<std::uint8_t>(s.kind), keep};
+    // Sample g of this frame, kept for frames within `window` of its time
+    // (RayHit::reuse_window; <= 0: not kept).  The window is stored in
+    // floats, rounded inwards.
+    void put(std::size_t g, const FrameSample& s, float window) {
+      Kept k{s.color, s.layers, 1.0f, 0.0f};
+      if (window > 0.0f) {
+        k.from = inwards(time_ - static_cast<double>(window), +1);
+        k.to = inwards(time_ + static_cast<double>(window), -1);
+      }
+      slot_->samples[g] = k;
     }
 
    private:
     friend class SampleMemo;
-    Row(Slot& slot) : lock_(slot.mutex, std::adopt_lock), slot_(&slot) {}
+    Row(Slot& slot, double time) : lock_(slot.mutex, std::adopt_lock), slot_(&slot), time_(time) {}
+    // x as a float, rounded towards +inf (dir > 0) or -inf.
+    static float inwards(double x, int dir) {
+      float f = static_cast<float>(x);
+      if (dir > 0 && f < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+      if (dir < 0 && f > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+      return f;
+    }
     std::unique_lock<std::mutex> lock_;
     Slot* slot_;
+    double time_;  // the frame's observer time
   };
 
-  // Row j for a frame whose scene has still_key `key`: the samples kept
-  // from frames of the same key (none, if the row last held another key).
-  // nullopt when nothing can be kept (an empty key: a spacetime that is not
-  // stationary) or another thread holds the row (the caller traces all).
-  std::optional<Row> row(int j, const std::string& key);
+  // Row j for a frame whose scene has still_key `key` and observer time
+  // `time`: the samples kept from frames of the same key (none, if the row
+  // last held another key).  nullopt when nothing can be kept (an empty
+  // key: a spacetime that is not stationary) or another thread holds the
+  // row (the caller traces all).
+  std::optional<Row> row(int j, const std::string& key, double time);
 
   // Samples per row: W N N grid samples and W centre rays.
   std::size_t row_size() const { return row_size_; }

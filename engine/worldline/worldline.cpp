@@ -107,6 +107,30 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
         }
       },
       w.spacetime_);
+  // The top speed of the Hermite interpolant: per step and axis, dx/dt is a
+  // quadratic in the step's fraction q, largest in size at an end or at its
+  // vertex.
+  double top2 = 0.0;
+  for (std::size_t k = 0; k + 1 < n_t; ++k) {
+    const TimeSample& a = w.by_time_[k];
+    const TimeSample& b = w.by_time_[k + 1];
+    double speed2 = 0.0;
+    for (int m = 1; m < 4; ++m) {
+      // dx/dt(q) = 6 (q^2 - q) (x_a - x_b) / dt + (3q^2 - 4q + 1) v_a + (3q^2 - 2q) v_b
+      const double secant = (a.x[m] - b.x[m]) / w.dt_;
+      const double c2 = 6.0 * secant + 3.0 * a.dxdt[m] + 3.0 * b.dxdt[m];
+      const double c1 = -6.0 * secant - 4.0 * a.dxdt[m] - 2.0 * b.dxdt[m];
+      const double c0 = a.dxdt[m];
+      double top = std::max(std::abs(c0), std::abs(c2 + c1 + c0));
+      if (c2 != 0.0) {
+        const double q = -c1 / (2.0 * c2);
+        if (q > 0.0 && q < 1.0) top = std::max(top, std::abs((c2 * q + c1) * q + c0));
+      }
+      speed2 += top * top;
+    }
+    top2 = std::max(top2, speed2);
+  }
+  w.top_speed_ = std::sqrt(top2);
   for (std::size_t c = 0; c * kChunk < n_t; ++c) {
     std::array<Vec3, 2> b = {Vec3{1e300, 1e300, 1e300}, Vec3{-1e300, -1e300, -1e300}};
     for (std::size_t i = c * kChunk; i <= std::min(n_t - 1, (c + 1) * kChunk); ++i)

@@ -49,6 +49,11 @@ class Worldline {
   // interval [t0, t1] (any order): the tube the object's centre stays in.
   void bounds(double t0, double t1, Vec3& lo, Vec3& hi) const;
 
+  // The fastest the centre moves in coordinates, |dx/dt|, at any time (the
+  // interpolant's, not only the samples'; before the start and after the
+  // end it stands still).
+  double top_coordinate_speed() const { return top_speed_; }
+
   const Spacetime& spacetime() const { return spacetime_; }
   // Memory held by the samples and tables (for ShotResources' budget).
   std::size_t bytes() const {
@@ -87,6 +92,7 @@ class Worldline {
   };
   std::vector<TimeSample> by_time_;
   double dt_ = 0.0;
+  double top_speed_ = 0.0;
   // Per chunk of kChunk coordinate-time samples: spatial bounds, for the
   // spacetime tube.
   static constexpr std::size_t kChunk = 16;

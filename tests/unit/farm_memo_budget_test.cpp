@@ -11,9 +11,10 @@ namespace {
 
 TEST(FarmMemoBudget, TheFilmFitsAndAnAbsurdFrameIsRefused) {
   const RenderSettings film{1280, 720, 2, false};
-  // 40 bytes a sample: colour, the six layers, the hit kind and a flag;
-  // and 32 a pixel for its sky point (point stars).
-  EXPECT_EQ(SampleMemo::bytes_for(film), 1280u * 720u * (5u * 40u + 32u));  // ~214 MB
+  // 44 bytes a sample: colour, the six layers (the first is the hit kind)
+  // and the frame times it holds for; and 32 a pixel for its sky point
+  // (point stars).
+  EXPECT_EQ(SampleMemo::bytes_for(film), 1280u * 720u * (5u * 44u + 32u));  // ~232 MB
   EXPECT_FALSE(memo_refusal(film, 1).has_value());
   const RenderSettings huge{16384, 16384, 16, false};  // ~2.2 TB of samples
   const auto why = memo_refusal(huge, 1);

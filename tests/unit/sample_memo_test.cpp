@@ -69,6 +69,23 @@ TEST(SampleMemo, AFrameFromKeptSamplesIsTheFrameTracedAfresh) {
   EXPECT_EQ(reused.stats.rays + reused.stats.reused, fresh.stats.rays);
 }
 
+// A ray that passed near the sphere's path but clear of the sphere is kept
+// for as long as the sphere cannot reach it: a frame a moment later reuses
+// more than one much later, and is still the frame traced afresh.
+TEST(SampleMemo, RaysNearThePathAreReusedWhileTheSphereCannotReachThem) {
+  const RenderSettings rs{48, 27, 2, false};
+  ShotResources res;
+  SampleMemo soon_memo(rs), late_memo(rs);
+  render(dihole_at(100), rs, res, &soon_memo);
+  render(dihole_at(100), rs, res, &late_memo);
+  const Rendered soon = render(dihole_at(100.25), rs, res, &soon_memo);
+  const Rendered late = render(dihole_at(130), rs, res, &late_memo);
+  EXPECT_EQ(soon.image.rgb, render(dihole_at(100.25), rs, res, nullptr).image.rgb);
+  EXPECT_EQ(late.image.rgb, render(dihole_at(130), rs, res, nullptr).image.rgb);
+  EXPECT_GT(soon.stats.reused, late.stats.reused);
+  EXPECT_GT(soon.stats.rays, 0);  // those that enter the sphere's tube are traced again
+}
+
 TEST(SampleMemo, AnotherSceneReusesNothing) {
   const RenderSettings rs{32, 18, 2, false};
   ShotResources res;
@@ -91,7 +108,8 @@ TEST(SampleMemo, AnotherSceneReusesNothing) {
 
 TEST(SampleMemo, RaysNearASphereAtRestAreTracedAgain) {
   // The sphere test works in absolute coordinate time, so a later frame's
-  // samples near a sphere at rest may round differently: they are traced.
+  // samples that enter the tube round a sphere at rest may round
+  // differently: they are traced.
   const RenderSettings rs{32, 18, 2, false};
   ShotResources res;
   SampleMemo memo(rs);
