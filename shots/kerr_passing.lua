@@ -25,12 +25,26 @@ local orbit = lc.worldline{
 }
 local tau_start, tau_end = 0, 176  -- symmetric about the periapsis: in from r = 40, out to r ~ 40
 local fov = 90                     -- wide: the hole fills much of the sky near periapsis
--- After the passage the hole is behind the observer's original line of
--- sight (the orbit turns by ~260 deg): the camera pitches round by 105 deg
+-- The camera looks along the fall until the passage: the hole ahead, then
+-- sweeping below as the disk rushes past.  From frame 780 it pitches down
 -- inside the transported frame (a pan relative to the gyroscope frame, so
--- the precession still shows) to watch the hole recede.
+-- the precession still shows) to keep the hole in view while the orbit
+-- turns it round behind the observer: the keys put the edge of the shadow
+-- ~10 deg inside the view at periapsis (its radius is ~50 deg at r = 5.3)
+-- and the hole in the centre once it has shrunk (from frame ~1440), 245
+-- deg round by the end.  They come from where the hole is seen in the
+-- observer's frame (the outgoing principal null direction, aberration
+-- included), frame by frame, from `lightcone inspect` with pitch 0
+-- (docs/showcase.md, "How the flyby keeps the hole in view").
 local frames = 1700
-local pitch = lc.keyframes{{950, 0}, {1400, 105, ease = "smoothstep"}}
+local pitch = lc.keyframes{
+  {780, 0}, {810, -1.9}, {840, -10.2}, {870, -29.5}, {900, -60.9}, {930, -98.0}, {960, -127.2},
+  {990, -145.4}, {1020, -160.5}, {1050, -172.9}, {1080, -183.3}, {1110, -191.9}, {1140, -199.2},
+  {1170, -205.4}, {1200, -210.7}, {1230, -215.3}, {1260, -219.3}, {1290, -222.9}, {1320, -226.1},
+  {1350, -228.9}, {1380, -231.5}, {1410, -233.7}, {1440, -235.8}, {1470, -237.4}, {1500, -238.7},
+  {1530, -239.9}, {1560, -241.1}, {1590, -242.1}, {1620, -243.1}, {1650, -244.0}, {1680, -244.8},
+  {1699, -245.4},
+}
 local inner, outer = 6, 16         -- the disk of the first sequence
 
 return {
