@@ -19,7 +19,7 @@ packages=(
   build-essential cmake pkg-config
   luajit libluajit-5.1-dev libgsl-dev libopenmpi-dev openmpi-bin
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
-  libopenimageio-dev openimageio-tools libcli11-dev libfmt-dev libgtest-dev
+  libopenimageio-dev openimageio-tools libcli11-dev libfmt-dev libgtest-dev libcairo2-dev
 )
 # The end-to-end tests also read results back with tools a minimal Debian
 # lacks: python3 (PNG chunks, MP4 atoms, JSON) and procps (pgrep); the

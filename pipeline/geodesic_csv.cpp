@@ -1,6 +1,10 @@
 #include "geodesic_csv.hpp"
 
+#include <charconv>
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -46,6 +50,65 @@ void append_geodesic_csv(std::string& out, const Spacetime& spacetime, const Geo
         }
       },
       spacetime);
+}
+
+namespace {
+
+std::vector<std::string> split_commas(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, ',')) out.push_back(cell);
+  if (!line.empty() && line.back() == ',') out.emplace_back();
+  return out;
+}
+
+}  // namespace
+
+std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::invalid_argument(fmt::format("{}: cannot be read", file.string()));
+  std::string line;
+  if (!std::getline(in, line)) throw std::invalid_argument(fmt::format("{}: empty (expected a `lightcone geodesic` CSV)", file.string()));
+  const std::vector<std::string> header = split_commas(line);
+  auto column = [&](const std::string& name) -> std::optional<std::size_t> {
+    for (std::size_t k = 0; k < header.size(); ++k)
+      if (header[k] == name) return k;
+    return std::nullopt;
+  };
+  const std::optional<std::size_t> ray = column("ray");
+  std::array<std::size_t, 4> x{};
+  for (int m = 0; m < 4; ++m) {
+    const auto k = column(fmt::format("x{}", m));
+    if (!k)
+      throw std::invalid_argument(fmt::format("{}:1: no column x{} (expected the header of a `lightcone geodesic` CSV, "
+                                              "[ray,]lambda,x0,x1,x2,x3,...)",
+                                              file.string(), m));
+    x[static_cast<std::size_t>(m)] = *k;
+  }
+  std::vector<CsvCurve> curves;
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = split_commas(line);
+    if (cells.size() != header.size())
+      throw std::invalid_argument(fmt::format("{}:{}: {} columns, the header has {}", file.string(), number,
+                                              cells.size(), header.size()));
+    auto number_at = [&](std::size_t k) {
+      double v = 0.0;
+      const std::string& c = cells[k];
+      const auto [end, ec] = std::from_chars(c.data(), c.data() + c.size(), v);
+      if (ec != std::errc() || end != c.data() + c.size() || !std::isfinite(v))
+        throw std::invalid_argument(
+            fmt::format("{}:{}: column {} is '{}', not a finite number", file.string(), number, header[k], c));
+      return v;
+    };
+    const int id = ray ? static_cast<int>(number_at(*ray)) : 1;
+    if (curves.empty() || curves.back().ray != id) curves.push_back({id, {}});
+    curves.back().events.push_back({number_at(x[0]), number_at(x[1]), number_at(x[2]), number_at(x[3])});
+  }
+  if (curves.empty()) throw std::invalid_argument(fmt::format("{}: a header but no rows", file.string()));
+  return curves;
 }
 
 }  // namespace lc

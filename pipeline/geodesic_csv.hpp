@@ -5,8 +5,11 @@
 // Columns: [ray,]lambda,x0..x3,u0..u3[,e00..e33] (e<leg><component>); the
 // ray column (1-based) only for bundles.
 
+#include <array>
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "geodesic/geodesic_solver.hpp"
 
@@ -17,5 +20,18 @@ std::string geodesic_csv_header(bool with_tetrad, bool bundle);
 // Appends one row per sample; `ray` is written as the first column when set.
 void append_geodesic_csv(std::string& out, const Spacetime& st, const GeodesicPath& path, bool with_tetrad,
                          std::optional<int> ray);
+
+// A curve read back from such a CSV: its events x0..x3, in file order.
+struct CsvCurve {
+  int ray = 1;  // the ray column's value (1 without one)
+  std::vector<std::array<double, 4>> events;
+};
+
+// Reads a CSV written by `lightcone geodesic`: one curve per run of rows
+// with the same ray (the whole file without a ray column).  Throws
+// std::invalid_argument naming the file, and the line where a row is at
+// fault (a missing column, a number that is not one, a row of another
+// length), or the file when it cannot be read or holds no rows.
+std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file);
 
 }  // namespace lc

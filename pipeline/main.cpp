@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "encode_command.hpp"
 #include "farm_bench_command.hpp"
 #include "geodesic_command.hpp"
+#include "plot_command.hpp"
 #include "inspect_command.hpp"
 #include "lua/table_reader.hpp"
 #include "render/layers.hpp"
@@ -101,6 +103,25 @@ int main(int argc, char** argv) {
       "geodesic", "Trace one null or timelike geodesic described by a Lua spec and write its samples as CSV");
   geodesic->add_option("spec", geo.spec, "Geodesic spec script (docs/geodesic.md)")->required()->check(CLI::ExistingFile);
   geodesic->add_option("-o,--output", geo.output, "CSV file to write (default: standard output)");
+
+  lc::PlotCommand plot;
+  auto* plot_cmd = app.add_subcommand("plot", "Draw the curves of a `lightcone geodesic` CSV as a figure (SVG or PNG)");
+  plot_cmd->add_option("csv", plot.csv, "CSV written by lightcone geodesic")->required()->check(CLI::ExistingFile);
+  plot_cmd->add_option("-o,--output", plot.output, "Figure to write: FILE.svg or FILE.png")->required();
+  plot_cmd->add_option("--coordinates", plot.coordinates,
+                       "What the CSV's x1..x3 are: bl (Boyer-Lindquist r, theta, phi: a Kerr spec; the default) or "
+                       "cartesian (x, y, z: dihole, Minkowski)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, lc::PlotCoordinates>{
+          {"bl", lc::PlotCoordinates::bl}, {"cartesian", lc::PlotCoordinates::cartesian}}));
+  plot_cmd->add_option("--view", plot.view, "The plane drawn: xz (side view, the default), xy (from above) or yz")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, lc::PlotView>{
+          {"xz", lc::PlotView::xz}, {"xy", lc::PlotView::xy}, {"yz", lc::PlotView::yz}}));
+  plot_cmd->add_option("--size", plot.size, "Figure size WxH in pixels (default 800x600)");
+  plot_cmd->add_option("--extent", plot.extent, "Half the width shown, in M (default: every point fits)");
+  plot_cmd->add_option("--disk", plot.disk,
+                       "INNER:OUTER: draw an equatorial disk and end each ray where it first meets it, solid from its top "
+                       "side, dashed from its bottom side");
+  plot_cmd->add_option("--horizon", plot.horizon, "Radius of the black disc drawn for the hole (default: none)");
 
   lc::RenderCommand render;
   auto* render_cmd = app.add_subcommand(
@@ -241,6 +262,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*geodesic) return lc::run_geodesic(geo);
+    if (*plot_cmd) return lc::run_plot(plot);
     if (*render_cmd) return lc::run_render(render);
     if (*farm_bench_cmd) return lc::run_farm_bench(farm_bench);
     if (*inspect_cmd) return lc::run_inspect(inspect);

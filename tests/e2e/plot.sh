@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# `lightcone plot`: a geodesic CSV drawn as SVG and PNG of the size asked
+# for, whose curves are the CSV's points (one ray checked point by point),
+# cut where they meet the disk and dashed from its bottom side; bad input is
+# refused naming the flag or the line, leaving no file.
+source "$(dirname "$0")/lib.sh"
+e2e_begin "$@"
+
+# The paper's Figure 2 setup with fewer, shorter rays.
+sed -e 's/for k = -14, 14 do/for k = -8, 8, 4 do/' -e 's/samples = 441/samples = 121/' \
+  "$SRC/shots/geodesics/disk_arches.lua" >arches.lua
+"$LIGHTCONE" geodesic arches.lua -o arches.csv 2>geo.log || fail "geodesic: $(cat geo.log)"
+"$LIGHTCONE" plot arches.csv -o arches.svg --disk 6:16 --horizon 2 --extent 24 --size 640x480 2>svg.log \
+  || fail "plot svg: $(cat svg.log)"
+grep -q "plot: 5 curves, [1-5] end on the disk" svg.log || fail "plot summary: $(cat svg.log)"
+"$LIGHTCONE" plot arches.csv -o arches.png --size 320x240 2>png.log || fail "plot png: $(cat png.log)"
+
+python3 - arches.csv arches.svg arches.png <<'PY' || fail "the figures do not show the CSV"
+import csv, math, re, struct, sys, xml.etree.ElementTree as ET
+rows = list(csv.DictReader(open(sys.argv[1])))
+# The PNG: a real PNG of the size asked for.
+png = open(sys.argv[3], "rb").read()
+assert png[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+w, h = struct.unpack(">II", png[16:24])
+assert (w, h) == (320, 240), (w, h)
+# The SVG: well-formed, 640x480 pixels.
+root = ET.parse(sys.argv[2]).getroot()
+assert root.get("width") in ("640", "640px") and root.get("height") in ("480", "480px"), root.attrib
+paths = [p for p in root.iter("{http://www.w3.org/2000/svg}path") if "stroke-width:1.5" in (p.get("style") or "")]
+def points(d):
+    nums = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", d)]
+    return list(zip(nums[0::2], nums[1::2]))
+# Each ray's side view (x, z), pseudo-Cartesian from Boyer-Lindquist.
+rays = {}
+for r in rows:
+    rr, th, ph = float(r["x1"]), float(r["x2"]), float(r["x3"])
+    rays.setdefault(r["ray"], []).append((rr * math.sin(th) * math.cos(ph), rr * math.cos(th)))
+# Ray 1 (looking 8 degrees below the hole) is drawn up to where it meets
+# the disk (z = 0, between the two samples either side): its vertices are
+# its CSV rows under one scale and shift.  (Cairo merges runs of collinear
+# segments, so a vertex may stand for several rows, which then lie on its
+# segments.)
+ray = rays["1"]
+cut = next(i for i in range(1, len(ray)) if (ray[i - 1][1] > 0) != (ray[i][1] > 0) and 6 <= abs(ray[i][0]) <= 16)
+(x0, z0), (x1, z1) = ray[cut - 1], ray[cut]
+crossing = (x0 + z0 / (z0 - z1) * (x1 - x0), 0.0)
+want = ray[:cut] + [crossing]
+def seg_dist(p, a, b):
+    ux, uy = b[0] - a[0], b[1] - a[1]
+    t = max(0.0, min(1.0, ((p[0] - a[0]) * ux + (p[1] - a[1]) * uy) / max(ux * ux + uy * uy, 1e-300)))
+    return math.hypot(a[0] + t * ux - p[0], a[1] + t * uy - p[1])
+match = None
+for p in paths:
+    pts = points(p.get("d"))
+    (ax, ay), (bx, by) = pts[0], pts[-1]
+    if want[-1][0] == want[0][0]:
+        continue
+    sx = (bx - ax) / (want[-1][0] - want[0][0])
+    sy = -sx  # equal scales, y pointing down
+    mapped = [(ax + sx * (x - want[0][0]), ay + sy * (z - want[0][1])) for x, z in want]
+    if math.hypot(mapped[-1][0] - bx, mapped[-1][1] - by) > 0.02:
+        continue
+    # Every vertex is a row, in order ...
+    j, ok = 0, True
+    for v in pts:
+        while j < len(mapped) and math.hypot(mapped[j][0] - v[0], mapped[j][1] - v[1]) > 0.02:
+            j += 1
+        ok = ok and j < len(mapped)
+    # ... and every row lies on the drawn line.
+    ok = ok and all(min(seg_dist(m, pts[k], pts[k + 1]) for k in range(len(pts) - 1)) < 0.02 for m in mapped)
+    if ok:
+        match = (p, pts, sx)
+assert match, "no SVG path is ray 1's points"
+p, pts, sx = match
+# It came from the disk's bottom side: dashed.
+assert "stroke-dasharray" in p.get("style"), p.get("style")
+print("ray 1:", cut, "rows drawn,", len(pts), "vertices, scale", sx, "px/M")
+PY
+
+# Bad input: named, non-zero, no file left.
+expect_fail() {  # expect_fail WHAT PATTERN ARGS...
+  local what=$1 pattern=$2
+  shift 2
+  if "$LIGHTCONE" plot "$@" >bad.log 2>&1; then fail "$what: accepted"; fi
+  grep -q -- "$pattern" bad.log || fail "$what: $(cat bad.log)"
+}
+expect_fail "a PDF" "-o arches.pdf: a figure is written as SVG or PNG" arches.csv -o arches.pdf
+expect_fail "a bad disk" "--disk 16:6: expected INNER:OUTER" arches.csv -o x.svg --disk 16:6
+printf 'ray,lambda,x0,x1,x2,x3\n1,0,0,10,1.5,0\n1,1,0,nan?,1.5,0\n' >broken.csv
+expect_fail "a broken row" "broken.csv:3: column x1 is 'nan?'" broken.csv -o x.svg
+printf 'a,b\n1,2\n' >other.csv
+expect_fail "another CSV" "other.csv:1: no column x0" other.csv -o x.svg
+[ ! -e x.svg ] && [ ! -e arches.pdf ] || fail "a refused plot left a file"
+ls | grep -q tmp && fail "temporary files left behind"
+e2e_end
