@@ -121,10 +121,15 @@ class Sphere : public SphereBody {
     const detail::SphereNear near = detail::sphere_near_step(*this, t.step());
     if (near.reach == detail::SphereReach::never) return std::nullopt;
     if (t.reusable()) {
-      const double clear = detail::step_clearance(t.step(), t.hull(), *this, near.lo, near.hi);
-      t.limit_reuse_window(clear <= 0.0         ? 0.0
-                           : top_speed > 0.0 ? clear / top_speed
-                                             : std::numeric_limits<double>::infinity());
+      // The hull's box first (a lower bound, no square roots past one):
+      // only where it would narrow the window does the chord's distance
+      // sharpen it.
+      auto window = [&](double clear) {
+        return clear <= 0.0 ? 0.0 : top_speed > 0.0 ? clear / top_speed : std::numeric_limits<double>::infinity();
+      };
+      const double box = detail::hull_box_clearance(t.hull(), *this, near.lo, near.hi);
+      if (window(box) < t.reuse_window())
+        t.limit_reuse_window(window(detail::step_clearance(t.step(), t.hull(), *this, near.lo, near.hi)));
     }
     if (near.reach == detail::SphereReach::not_now) return std::nullopt;
     const auto l = detail::sphere_entry(st, *this, t.step(), t.hull(), near.lo, near.hi, t.warm_start(index));

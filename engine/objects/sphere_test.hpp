@@ -218,9 +218,19 @@ inline double segment_box_distance(const Vec3& a, const Vec3& b, const Vec3& lo,
   return std::sqrt(best);
 }
 
-// How far (coordinates) the step stays outside the tube around the box
-// [lo, hi] of centres: <= 0 where it may enter it.  The step is its chord,
-// strayed from by at most the hull's margin.
+// How far (coordinates) the step's hull box stays outside the tube around
+// the box [lo, hi] of centres, at least: <= 0 where it may enter it.
+inline double hull_box_clearance(const StepHull& h, const SphereBody& sphere, const Vec3& lo, const Vec3& hi) {
+  double gap2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double gap = std::max({lo[k] - h.hi[k], h.lo[k] - hi[k], 0.0});
+    gap2 += gap * gap;
+  }
+  return std::sqrt(gap2) - sphere.tube_radius() - h.margin;
+}
+
+// The same, sharper: the step as its chord, strayed from by at most the
+// hull's margin.
 inline double step_clearance(const RayStep& step, const StepHull& h, const SphereBody& sphere, const Vec3& lo,
                              const Vec3& hi) {
   const RayState& a = step.start();

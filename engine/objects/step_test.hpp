@@ -92,6 +92,7 @@ class StepTest {
   // Whether another frame may still reuse the ray; narrowing the window to
   // `w` (coordinate time) or less, rounded down.
   bool reusable() const { return reuse_window_ > 0.0f; }
+  double reuse_window() const { return reuse_window_; }
   void limit_reuse_window(double w) {
     if (!(w < reuse_window_)) return;
     float f = static_cast<float>(std::max(w, 0.0));
