@@ -71,9 +71,11 @@ inline ObjectWarmStarts no_warm_starts() {
 class StepTest {
  public:
   // `reuse_window`: the ray's RayHit::reuse_window, narrowed by the objects
-  // the step comes near.
-  StepTest(const RayStep& step, float& reuse_window, ObjectWarmStarts& warm)
-      : step_(step), best_(step.t0 + step.h + 1.0), reuse_window_(reuse_window), warm_(warm) {
+  // the step comes near, worked out only if `track_windows` (else closed by
+  // any that comes near a moving object's path).
+  StepTest(const RayStep& step, float& reuse_window, bool track_windows, ObjectWarmStarts& warm)
+      : step_(step), best_(step.t0 + step.h + 1.0), reuse_window_(reuse_window), track_windows_(track_windows),
+        warm_(warm) {
     z0_ = step.start()[3];
     z1_ = step.component(3, step.t0 + step.h);
   }
@@ -92,6 +94,7 @@ class StepTest {
   // Whether another frame may still reuse the ray; narrowing the window to
   // `w` (coordinate time) or less, rounded down.
   bool reusable() const { return reuse_window_ > 0.0f; }
+  bool tracks_windows() const { return track_windows_; }
   double reuse_window() const { return reuse_window_; }
   void limit_reuse_window(double w) {
     if (!(w < reuse_window_)) return;
@@ -118,6 +121,7 @@ class StepTest {
   const RayStep& step_;
   double best_;
   float& reuse_window_;
+  bool track_windows_;
   ObjectWarmStarts& warm_;
   double scratch_ = 0.0;
   std::optional<StepHull> hull_;

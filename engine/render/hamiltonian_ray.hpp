@@ -61,12 +61,15 @@ class HamiltonianRay {
  public:
   HamiltonianRay(const SceneIn<S>& sc, const Vec3& n, OnStep& on_step)
       : sc_(sc), on_step_(on_step), p0_(backward_ray_momentum(sc.metric, sc.frame, n)) {
-    // No other frame can reuse a ray of a frame without a still key: the
-    // objects need not work out for how long one could.
+    // No other frame can reuse a ray of a frame without a still key.
     if (sc.still_key.empty()) out_.reuse_window = 0.0f;
   }
 
   const Vec4& momentum() const { return p0_; }
+  // Whether the objects work out for how long another frame could reuse
+  // the ray (RayHit::reuse_window); if not, a ray that comes near a moving
+  // object's path gets 0 at once and the others stay unlimited.
+  void track_reuse_windows(bool track) { track_windows_ = track && track_windows_; }
   // What run_rays starts the ray with.
   RayState start() const {
     const Vec4& x0 = sc_.observer;
@@ -90,7 +93,7 @@ class HamiltonianRay {
   bool visit(const RayStep& step, RayResult& res) {
     const S& st = sc_.spacetime;
     on_step_(step.start(), step.t0);
-    StepTest t(step, out_.reuse_window, warm_);
+    StepTest t(step, out_.reuse_window, track_windows_, warm_);
     std::size_t winner = no_object;
     for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
       if (const auto l = o.first_hit(st, t, index)) {
@@ -196,6 +199,7 @@ class HamiltonianRay {
   Vec4 p0_;
   RayHit out_;
   int crossings_ = 0;
+  bool track_windows_ = true;
   static constexpr std::size_t no_object = static_cast<std::size_t>(-1);
   ObjectWarmStarts warm_ = no_warm_starts();  // per object (the first few), carried along the ray
 };

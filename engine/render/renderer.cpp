@@ -7,6 +7,7 @@
 #include "render/trace.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -113,6 +114,10 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
   for (int j : rows) {
     std::optional<SampleMemo::Row> kept;
     if (memo) kept = memo->row(j, sc.still_key, sc.observer_time);
+    // Rays work out how long they stay valid near a moving object only
+    // where a later frame is likely to use it (RayHit::reuse_window; 0 on
+    // entry: not worked out, trace_rays).
+    const float window = kept && kept->continues() ? std::numeric_limits<float>::infinity() : 0.0f;
     // Fills the samples at grid indices `where` into the grid: kept ones
     // from the memo, the others traced (and kept for later frames).
     auto trace_row = [&]() {
@@ -128,7 +133,8 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
           dirs.push_back(dir(g / NN, j, g % NN));
         }
       }
-      traced.resize(dirs.size());
+      traced.assign(dirs.size(), RaySample{});
+      for (RaySample& s : traced) s.reuse_window = window;
       trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
       count(traced);
       for (std::size_t n = 0; n < tracing.size(); ++n) {
@@ -198,7 +204,8 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
           dirs.push_back(sc.camera.direction(static_cast<double>(i) + 0.5, j + 0.5));
         }
       }
-    traced.resize(dirs.size());
+    traced.assign(dirs.size(), RaySample{});
+    for (RaySample& s : traced) s.reuse_window = window;
     trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
     count(traced);
     for (std::size_t n = 0; n < tracing.size(); ++n) {

@@ -12,7 +12,7 @@ std::optional<SampleMemo::Row> SampleMemo::row(int j, const std::string& key, do
   if (key.empty() || j < 0 || static_cast<std::size_t>(j) >= rows_.size()) return std::nullopt;
   Slot& slot = *rows_[static_cast<std::size_t>(j)];
   if (!slot.mutex.try_lock()) return std::nullopt;
-  Row row(slot, time);
+  Row row(slot, time, slot.key == key);
   if (slot.key != key) {
     // Another scene: nothing of the last one's samples applies.  Memory
     // comes with a row's first use, so a process holds only its rows.

@@ -55,6 +55,11 @@ class SampleMemo {
   // One row's samples while a thread renders it.
   class Row {
    public:
+    // Whether the row held samples of this frame's key before it: the frame
+    // continues a still stretch, so the next may well share its key (a
+    // frame that starts one, or a pan's, whose key no other frame has,
+    // need not work out its rays' reuse windows).
+    bool continues() const { return continues_; }
     // Whether sample g was kept from an earlier frame, for this one's time.
     bool has(std::size_t g) const {
       const Kept& k = slot_->samples[g];
@@ -86,7 +91,8 @@ class SampleMemo {
 
    private:
     friend class SampleMemo;
-    Row(Slot& slot, double time) : lock_(slot.mutex, std::adopt_lock), slot_(&slot), time_(time) {}
+    Row(Slot& slot, double time, bool continues)
+        : lock_(slot.mutex, std::adopt_lock), slot_(&slot), time_(time), continues_(continues) {}
     // x as a float, rounded towards +inf (dir > 0) or -inf.
     static float inwards(double x, int dir) {
       float f = static_cast<float>(x);
@@ -97,6 +103,7 @@ class SampleMemo {
     std::unique_lock<std::mutex> lock_;
     Slot* slot_;
     double time_;  // the frame's observer time
+    bool continues_;
   };
 
   // Row j for a frame whose scene has still_key `key` and observer time

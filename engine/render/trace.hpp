@@ -34,7 +34,9 @@ bool takes_mino_path(const SceneIn<S>& sc) {
 namespace detail {
 
 // The rays of local directions `dirs` (on the observer's legs) into `out`,
-// W at a time; on_step records paths (NoPath: none).
+// W at a time; on_step records paths (NoPath: none).  An out[k] whose
+// reuse_window is 0 on entry asks its ray not to work out its window
+// (HamiltonianRay::track_reuse_windows).
 template <int W, class S, class OnStep>
 void trace_rays(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out, OnStep& on_step) {
   // path: the formulation; args: what each ray is made from besides the
@@ -43,7 +45,11 @@ void trace_rays(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RayS
     using Ray = typename std::decay_t<decltype(path)>::Ray;
     run_rays<W>(
         path, sc.rays.control, sc.rays.max_steps, dirs.size(),
-        [&](std::size_t k, std::optional<Ray>& slot) { slot.emplace(sc, args..., dirs[k], on_step); },
+        [&](std::size_t k, std::optional<Ray>& slot) {
+          slot.emplace(sc, args..., dirs[k], on_step);
+          if constexpr (requires(Ray& r) { r.track_reuse_windows(true); })
+            slot->track_reuse_windows(out[k].reuse_window > 0.0f);
+        },
         [&](std::size_t k, Ray& ray, const RayResult& res) {
           out[k].sky = SkyPoint{};
           static_cast<RayHit&>(out[k]) = ray.finish(res, out[k].sky);
