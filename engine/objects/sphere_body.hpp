@@ -32,11 +32,13 @@ struct SphereBody {
   // How far, in coordinates, any point of the sphere may be from the centre
   // at the point's own coordinate time: the spacetime tube's radius.  A
   // surface point is R from the centre event simultaneous with it in the
-  // sphere's rest frame; in these charts a coordinate length is at most the
-  // proper length (the dihole's U >= 1, Kerr–Schild's f l l >= 0), and
-  // that event is at most v R gamma of coordinate time away, in which the
-  // centre moves v of it: 2R holds for speeds up to ~0.65 c
-  // (docs/architecture.md, "Local objects").
+  // sphere's rest frame, at most R gamma / U of coordinates away (the
+  // dihole's spatial metric is U^2 delta, U >= 1; Kerr–Schild's lengths
+  // are no shorter than flat ones), and that event's time differs from the
+  // point's by so little that the centre moves beta^2 of that meanwhile:
+  // R gamma (1 + beta^2) / U in all.  2R holds that with room (the paper's
+  // dihole sphere: 1.4 R at most, at 0.77 c between the holes where
+  // U = 1.8); docs/architecture.md, "Local objects".
   double tube_radius() const { return 2.0 * radius; }
 
   SphereFrame at(double t) const {

@@ -84,6 +84,30 @@ TEST(Worldline, SpacetimeTubeBoundsThePath) {
   EXPECT_GT(lo[0], 4.5);
 }
 
+// The top coordinate speed bounds the centre's speed between table samples
+// too (the reuse window divides by it), and is the exact one.  In the
+// isotropic dihole (ds^2 = -dt^2/U^2 + U^2 dx^2) a body released at rest
+// where U = U0 moves at beta = sqrt(1 - U0^2/U^2) past static observers
+// (energy conservation), so at dx/dt = beta / U^2, largest where
+// U^2 = 1.5 U0^2: 1 / (1.5 sqrt(3) U0^2).  Along the oscillation U runs
+// from U0 = 1 + 0.8/sqrt(26) at (5, 0, 0) to 1.8 at the origin, past that.
+TEST(Worldline, TopCoordinateSpeedBoundsTheMotion) {
+  const Worldline w = Worldline::integrate(dihole_oscillation());
+  double seen = 0.0;
+  Vec4 x, u, x_prev;
+  w.centre_at_coordinate_time(0.0, x_prev, u);
+  const double dt = 1e-3;
+  for (double t = dt; t < 110.594; t += dt) {
+    w.centre_at_coordinate_time(t, x, u);
+    seen = std::max(seen, std::hypot(x[1] - x_prev[1], x[2] - x_prev[2], x[3] - x_prev[3]) / dt);
+    x_prev = x;
+  }
+  EXPECT_LE(seen, w.top_coordinate_speed());
+  EXPECT_GT(seen, 0.999 * w.top_coordinate_speed());
+  const double U0 = 1.0 + 0.8 / std::sqrt(26.0);
+  EXPECT_NEAR(w.top_coordinate_speed(), 1.0 / (1.5 * std::sqrt(3.0) * U0 * U0), 1e-4);
+}
+
 TEST(Worldline, RefusesACaptureBeforeItsEnd) {
   WorldlineSpec w;
   w.spacetime = Kerr(1.0, 0.0);
