@@ -174,7 +174,7 @@ expect_error typo_flag "lightcone: error: render: unknown option --fram (did you
   "$LIGHTCONE" render ok.lua --fram 0 --out out
 expect_error typo_flag2 "lightcone: error: contact-sheet: unknown option --colums (did you mean --columns?)" -- \
   "$LIGHTCONE" contact-sheet out -o sheet.png --colums 3
-expect_error no_command "lightcone: error: no command given; the commands are geodesic, render" -- "$LIGHTCONE"
+expect_error no_command "lightcone: error: no command given; the commands are geodesic, plot, render" -- "$LIGHTCONE"
 expect_error required "lightcone: error: --output is required" -- "$LIGHTCONE" encode out
 expect_error not_a_number "lightcone: error: Could not convert: --crf = abc" -- "$LIGHTCONE" encode out -o x.mp4 --crf abc
 grep -q "Run 'lightcone encode --help' for the options." not_a_number.err || fail "no help hint: $(cat not_a_number.err)"
