@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "command_output.hpp"
+#include "core/constants.hpp"
 #include "durable_file.hpp"
 #include "image_size.hpp"
 
@@ -102,7 +102,7 @@ void draw(cairo_t* cr, const FigureFrame& f, const std::vector<FigureLine>& line
       cairo_move_to(cr, f.left + f.side / 2 - te.width / 2, f.top + f.side + 40);
     } else {
       cairo_move_to(cr, f.left - 44, f.top + f.side / 2 + te.width / 2);
-      cairo_rotate(cr, -M_PI / 2);
+      cairo_rotate(cr, -pi / 2);
     }
     cairo_show_text(cr, name.c_str());
     cairo_restore(cr);
@@ -117,8 +117,8 @@ void draw(cairo_t* cr, const FigureFrame& f, const std::vector<FigureLine>& line
     if (cmd.view == PlotView::xy) {
       const auto [cx, cy] = f.to_pixel({0.0, 0.0});
       cairo_new_path(cr);
-      cairo_arc(cr, cx, cy, disk->outer * scale, 0, 2 * M_PI);
-      cairo_arc_negative(cr, cx, cy, disk->inner * scale, 2 * M_PI, 0);
+      cairo_arc(cr, cx, cy, disk->outer * scale, 0, two_pi);
+      cairo_arc_negative(cr, cx, cy, disk->inner * scale, two_pi, 0);
       cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
       cairo_fill(cr);
     } else {
@@ -135,7 +135,7 @@ void draw(cairo_t* cr, const FigureFrame& f, const std::vector<FigureLine>& line
     const auto [cx, cy] = f.to_pixel({0.0, 0.0});
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_new_path(cr);
-    cairo_arc(cr, cx, cy, cmd.horizon * scale, 0, 2 * M_PI);
+    cairo_arc(cr, cx, cy, cmd.horizon * scale, 0, two_pi);
     cairo_fill(cr);
   }
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);

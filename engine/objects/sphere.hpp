@@ -120,8 +120,9 @@ class Sphere : public SphereBody {
   std::optional<double> first_hit(const S& st, StepTest& t, std::size_t index) const {
     const detail::SphereNear near = detail::sphere_near_step(*this, t.step());
     if (near.reach == detail::SphereReach::never) return std::nullopt;
-    if (t.reusable() && !t.tracks_windows()) t.limit_reuse_window(0.0);
-    if (t.reusable()) {
+    if (t.reusable() && !t.tracks_windows()) {
+      t.limit_reuse_window(0.0);
+    } else if (t.reusable()) {
       // The hull's box first (a lower bound, no square roots past one):
       // only where it would narrow the window does the chord's distance
       // sharpen it.

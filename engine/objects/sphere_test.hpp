@@ -250,7 +250,7 @@ inline void grow_by_reach(const StepHull& h, const SphereBody& sphere, Vec3& lo,
 
 // First entry of the ray into the sphere within a step that sphere_near_step
 // let through, if any: the affine parameter of the crossing.  The spacetime
-// tube (the centre's box [centre_lo, centre_hi] over the step's time range,
+// tube (the centre's box [clo, chi] over the step's time range,
 // grown by 2R and the step's bulge) rejects most such steps before any
 // sampling.
 // t_near carries the last simultaneity answer along the ray (NaN: none yet),

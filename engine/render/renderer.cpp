@@ -7,9 +7,9 @@
 #include "render/trace.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <thread>
 #include <vector>
@@ -118,6 +118,12 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
     // where a later frame is likely to use it (RayHit::reuse_window; 0 on
     // entry: not worked out, trace_rays).
     const float window = kept && kept->continues() ? std::numeric_limits<float>::infinity() : 0.0f;
+    // Room for n traced samples, each told whether to work out its window
+    // (trace_batch fills in the rest).
+    auto make_room = [&](std::size_t n) {
+      traced.resize(n);
+      for (RaySample& s : traced) s.reuse_window = window;
+    };
     // Fills the samples at grid indices `where` into the grid: kept ones
     // from the memo, the others traced (and kept for later frames).
     auto trace_row = [&]() {
@@ -133,8 +139,7 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
           dirs.push_back(dir(g / NN, j, g % NN));
         }
       }
-      traced.assign(dirs.size(), RaySample{});
-      for (RaySample& s : traced) s.reuse_window = window;
+      make_room(dirs.size());
       trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
       count(traced);
       for (std::size_t n = 0; n < tracing.size(); ++n) {
@@ -204,8 +209,7 @@ RenderStats render_rows_of(const SceneIn<S>& sc, const RenderSettings& rs, std::
           dirs.push_back(sc.camera.direction(static_cast<double>(i) + 0.5, j + 0.5));
         }
       }
-    traced.assign(dirs.size(), RaySample{});
-    for (RaySample& s : traced) s.reuse_window = window;
+    make_room(dirs.size());
     trace_batch(sc, std::span<const Vec3>(dirs), std::span<RaySample>(traced));
     count(traced);
     for (std::size_t n = 0; n < tracing.size(); ++n) {
