@@ -51,6 +51,14 @@ m3 = rows[:10]
 assert {int(r["frame"]): int(r["rays"]) for r in m3} == journal, (m3, journal)
 assert all(float(r["core_seconds"]) > 0 and int(r["finished"]) > 1.7e9 for r in rows), rows
 PY
+# What is not a render directory is named; a CSV must be called one.
+"$LIGHTCONE" cost nowhere >bad.log 2>&1 && fail "cost of a missing directory: accepted"
+grep -q "nowhere: not a directory" bad.log || fail "cost, missing directory: $(cat bad.log)"
+mkdir -p plain
+"$LIGHTCONE" cost plain >bad.log 2>&1 && fail "cost of a directory without a journal: accepted"
+grep -q "plain: no journal" bad.log || fail "cost, no journal: $(cat bad.log)"
+"$LIGHTCONE" cost m3 --csv cost.txt >bad.log 2>&1 && fail "cost --csv cost.txt: accepted"
+grep -q "cost.txt" bad.log && [ ! -e cost.txt ] || fail "cost --csv cost.txt: $(cat bad.log)"
 # The master sleeps while it waits: far less than a core (measured on a job
 # of a few seconds; on the tiny one above its start-up would dominate).
 mpi 3 "$LIGHTCONE" render "$SHOT" --out mcpu --size 192x120 --supersample 2 --full-supersample 2>mcpu.log \

@@ -90,6 +90,12 @@ printf 'ray,lambda,x0,x1,x2,x3\n1,0,0,10,1.5,0\n1,1,0,nan?,1.5,0\n' >broken.csv
 expect_fail "a broken row" "broken.csv:3: column x1 is 'nan?'" broken.csv -o x.svg
 printf 'a,b\n1,2\n' >other.csv
 expect_fail "another CSV" "other.csv:1: no column x0" other.csv -o x.svg
+head -1 arches.csv >empty.csv
+expect_fail "a header alone" "empty.csv: a header but no rows" empty.csv -o x.svg
+expect_fail "a tiny figure" "--size 10x10: a figure is 200x150" arches.csv -o x.svg --size 10x10
+expect_fail "a negative extent" "--extent -1: must be a positive number" arches.csv -o x.svg --extent -1
+expect_fail "a negative horizon" "--horizon -2: must be a radius" arches.csv -o x.svg --horizon -2
+expect_fail "an unknown view" "--view" arches.csv -o x.svg --view side
 [ ! -e x.svg ] && [ ! -e arches.pdf ] || fail "a refused plot left a file"
 ls | grep -q tmp && fail "temporary files left behind"
 e2e_end
