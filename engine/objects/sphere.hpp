@@ -96,6 +96,9 @@ class Sphere : public SphereBody {
         throw std::invalid_argument(fmt::format("sphere at rest: {}", e.what()));
       }
     }
+    // At rest the centre does not move: the stretch alone, exact but for
+    // rounding.
+    tube = worldline ? worldline->coordinate_extent(radius) : (1.0 + 1e-9) * rest_space_span(rest_frame).stretch * radius;
     bounds(-1e300, 1e300, life_lo, life_hi);
     top_speed = worldline ? worldline->top_coordinate_speed() : 0.0;
     if (worldline) check_worldline_lasts(observer);
@@ -170,8 +173,8 @@ class Sphere : public SphereBody {
   // observer at t from no earlier than t minus the Euclidean coordinate
   // distance, since in these charts (Kerr–Schild g = eta + f l l with f >= 0,
   // the dihole's isotropic U^2 >= 1) light is no faster than 1 in
-  // coordinates; the sphere's coordinate extent is within its proper radius,
-  // so its centre's box grown by 2R holds it.
+  // coordinates; the centre's box grown by the tube's radius holds the
+  // sphere.
   void check_worldline_lasts(const Vec4& observer) const {
     double d2 = 0.0;
     for (int k = 0; k < 3; ++k) {

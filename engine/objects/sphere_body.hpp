@@ -30,16 +30,14 @@ struct SphereBody {
   double top_speed = 0.0;
 
   // How far, in coordinates, any point of the sphere may be from the centre
-  // at the point's own coordinate time: the spacetime tube's radius.  A
-  // surface point is R from the centre event simultaneous with it in the
-  // sphere's rest frame, at most R gamma / U of coordinates away (the
-  // dihole's spatial metric is U^2 delta, U >= 1; Kerr–Schild's lengths
-  // are no shorter than flat ones), and that event's time differs from the
-  // point's by so little that the centre moves beta^2 of that meanwhile:
-  // R gamma (1 + beta^2) / U in all.  2R holds that with room (the paper's
-  // dihole sphere: 1.4 R at most, at 0.77 c between the holes where
-  // U = 1.8); docs/architecture.md, "Local objects".
-  double tube_radius() const { return 2.0 * radius; }
+  // at the point's own coordinate time: the spacetime tube's radius.  Set
+  // with the placement (Worldline::coordinate_extent; at rest, the rest
+  // space's stretch).  About R / U for the paper's dihole sphere (the
+  // dihole's spatial metric is U^2 delta, U >= 1, and a moving sphere's
+  // Lorentz contraction offsets the tilt of its rest space);
+  // docs/architecture.md, "Local objects".
+  double tube = 0.0;
+  double tube_radius() const { return tube; }
 
   SphereFrame at(double t) const {
     if (worldline) {

@@ -153,7 +153,7 @@ struct SphereNear {
 };
 
 // The cheap first half of sphere_entry, for every step of every ray.  First
-// against the box the centre never leaves, grown by 2R and half the chord
+// against the box the centre never leaves, grown by the tube's radius and half the chord
 // (a step strays from its chord by less than that), then against the
 // centre's box over the step's time range (a table lookup); neither
 // evaluates the step's dense output inside.
@@ -251,7 +251,7 @@ inline void grow_by_reach(const StepHull& h, const SphereBody& sphere, Vec3& lo,
 // First entry of the ray into the sphere within a step that sphere_near_step
 // let through, if any: the affine parameter of the crossing.  The spacetime
 // tube (the centre's box [clo, chi] over the step's time range,
-// grown by 2R and the step's bulge) rejects most such steps before any
+// grown by the tube's radius and the step's bulge) rejects most such steps before any
 // sampling.
 // t_near carries the last simultaneity answer along the ray (NaN: none yet),
 // so the searches of consecutive steps start close to theirs.

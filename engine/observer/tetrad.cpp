@@ -1,5 +1,6 @@
 #include "observer/tetrad.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lc {
@@ -38,6 +39,36 @@ Tetrad boost(const Tetrad& rest, const Vec3& v) {
     t.e[j + 1] = e;
   }
   return t;
+}
+
+RestSpaceSpan rest_space_span(const Tetrad& f) {
+  const Vec4& u = f.e[0];
+  double m[3][3], tilt2 = 0.0;  // m[i][j]: coordinate i of leg j, slid along u to u's time
+  for (int j = 0; j < 3; ++j) {
+    const Vec4& e = f.e[j + 1];
+    for (int i = 0; i < 3; ++i) m[i][j] = e[i + 1] - e[0] / u[0] * u[i + 1];
+    tilt2 += e[0] * e[0];
+  }
+  double a[3][3];  // m^T m, symmetric and positive semi-definite
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) a[i][j] = m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
+  const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+  double top;
+  if (off == 0.0) {
+    top = std::max({a[0][0], a[1][1], a[2][2]});
+  } else {
+    const double q = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
+    const double p = std::sqrt(((a[0][0] - q) * (a[0][0] - q) + (a[1][1] - q) * (a[1][1] - q) +
+                                (a[2][2] - q) * (a[2][2] - q) + 2.0 * off) / 6.0);
+    double b[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) b[i][j] = (a[i][j] - (i == j ? q : 0.0)) / p;
+    const double det = b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1]) -
+                       b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0]) +
+                       b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0]);
+    top = q + 2.0 * p * std::cos(std::acos(std::clamp(0.5 * det, -1.0, 1.0)) / 3.0);
+  }
+  return {std::sqrt(std::max(top, 0.0)), std::sqrt(tilt2)};
 }
 
 Vec3 relative_velocity(const Mat4& g, const Tetrad& f, const Vec4& u) {

@@ -35,6 +35,20 @@ Tetrad orthonormalize(const Mat4& g, const std::array<Vec4, 4>& basis, const cha
 // 3-velocity in units of c along rest's spatial legs.
 Tetrad boost(const Tetrad& rest, const Vec3& v);
 
+// How f's rest space (the span of its legs e1..e3) lies in coordinates, per
+// unit of proper length: `stretch`, the longest spatial coordinate length
+// of a unit rest-space vector once slid along e0 to e0's own coordinate
+// time (the vector d - (d^t / e0^t) e0: where a point of f's rest space
+// lies relative to where f's origin is at that point's time, for an origin
+// moving along e0); `tilt`, the largest |d^t| of a unit rest-space vector
+// (how far in coordinate time the rest space leans).  Exact: the largest
+// singular value of the 3x3 map, by the closed form for a symmetric 3x3
+// eigenvalue (O. K. Smith, Comm. ACM 4 (1961) 168).
+struct RestSpaceSpan {
+  double stretch, tilt;
+};
+RestSpaceSpan rest_space_span(const Tetrad& f);
+
 // Components of the 3-velocity of u relative to frame f (|v| < 1).
 Vec3 relative_velocity(const Mat4& g, const Tetrad& f, const Vec4& u);
 

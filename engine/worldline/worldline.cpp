@@ -80,6 +80,7 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
   const std::size_t n_t = 2 * (w.samples_.size() - 1) + 1;
   w.dt_ = (w.end_time() - w.start_time()) / static_cast<double>(n_t - 1);
   w.by_time_.resize(n_t);
+  w.spans_.reserve(n_t);
   std::visit(
       [&](const auto& st) {
         auto acceleration = [&](const Vec4& x, const Vec4& u) { return transport_rate(christoffel(st, x), u, u); };
@@ -104,6 +105,9 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
             ts.dxdt[m] = ts.u[m] / ts.u[0];
             ts.dudt[m] = acc[m] / ts.u[0];
           }
+          w.spans_.push_back(
+              rest_space_span(orthonormalize(st.metric(ts.x), {ts.u, Vec4{0, 1, 0, 0}, Vec4{0, 0, 1, 0}, Vec4{0, 0, 0, 1}},
+                                             "worldline")));
         }
       },
       w.spacetime_);
@@ -133,12 +137,16 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
   w.top_speed_ = std::sqrt(top2);
   for (std::size_t c = 0; c * kChunk < n_t; ++c) {
     std::array<Vec3, 2> b = {Vec3{1e300, 1e300, 1e300}, Vec3{-1e300, -1e300, -1e300}};
-    for (std::size_t i = c * kChunk; i <= std::min(n_t - 1, (c + 1) * kChunk); ++i)
+    double top_acceleration = 0.0;
+    for (std::size_t i = c * kChunk; i <= std::min(n_t - 1, (c + 1) * kChunk); ++i) {
       for (int k = 0; k < 3; ++k) {
         b[0][k] = std::min(b[0][k], w.by_time_[i].x[k + 1]);
         b[1][k] = std::max(b[1][k], w.by_time_[i].x[k + 1]);
       }
+      if (i + 1 < n_t) top_acceleration = std::max(top_acceleration, w.step_acceleration(i));
+    }
     w.chunk_bounds_.push_back(b);
+    w.chunk_acceleration_.push_back(top_acceleration);
   }
   return w;
 }
@@ -220,6 +228,38 @@ double Worldline::proper_time_at(double t) const {
     if (settled) break;
   }
   return (static_cast<double>(i) + s) * dtau_;
+}
+
+double Worldline::step_acceleration(std::size_t k) const {
+  // d2x/dt2 of a cubic Hermite step is linear in its fraction q, so its size
+  // is largest at an end: dt^2 x'' = (12q - 6)(x_a - x_b) + dt ((6q - 4) v_a + (6q - 2) v_b).
+  const TimeSample& a = by_time_[k];
+  const TimeSample& b = by_time_[k + 1];
+  double at0 = 0.0, at1 = 0.0;
+  for (int m = 1; m < 4; ++m) {
+    const double jump = (a.x[m] - b.x[m]) / (dt_ * dt_);
+    const double q0 = -6.0 * jump + (-4.0 * a.dxdt[m] - 2.0 * b.dxdt[m]) / dt_;
+    const double q1 = 6.0 * jump + (2.0 * a.dxdt[m] + 4.0 * b.dxdt[m]) / dt_;
+    at0 += q0 * q0;
+    at1 += q1 * q1;
+  }
+  return std::sqrt(std::max(at0, at1));
+}
+
+double Worldline::coordinate_extent(double radius) const {
+  double release2 = 0.0;
+  for (int m = 1; m < 4; ++m) release2 += by_time_.front().dxdt[m] * by_time_.front().dxdt[m];
+  double top = 0.0;
+  for (std::size_t k = 0; k < by_time_.size(); ++k) {
+    const double t = by_time_[k].x[0], lag = spans_[k].tilt * radius;
+    double acceleration = 0.0;
+    for (std::size_t c = time_index(t - lag) / kChunk; c <= time_index(t + lag) / kChunk; ++c)
+      acceleration = std::max(acceleration, chunk_acceleration_[c]);
+    double off = spans_[k].stretch * radius + 0.5 * acceleration * lag * lag;
+    if (t - lag < start_time()) off += std::sqrt(release2) * lag;
+    top = std::max(top, off);
+  }
+  return 1.05 * top;
 }
 
 std::size_t Worldline::time_index(double t) const {

@@ -54,11 +54,26 @@ class Worldline {
   // end it stands still).
   double top_coordinate_speed() const { return top_speed_; }
 
+  // How far, in coordinates, a point of a sphere of proper radius `radius`
+  // riding this worldline may be from the centre at the point's own
+  // coordinate time: the spacetime tube's radius (objects/sphere_body.hpp).
+  // The sphere is the ball of its rest space through the centre event
+  // (objects/sphere_test.hpp); a point of it d away from the centre event
+  // C(t_c) lies, in coordinates, d slid along u from where the centre is at
+  // the point's time t_c + d^t, off by the centre's change of velocity over
+  // d^t: at most stretch R + A (tilt R)^2 / 2 with A the interpolant's top
+  // coordinate acceleration within tilt R of t_c (rest_space_span; before
+  // the release the centre stands still, which adds its release speed times
+  // tilt R).  The largest over the table's samples, 5% more for how the
+  // rest space turns between samples.
+  double coordinate_extent(double radius) const;
+
   const Spacetime& spacetime() const { return spacetime_; }
   // Memory held by the samples and tables (for ShotResources' budget).
   std::size_t bytes() const {
     return samples_.capacity() * sizeof(Sample) + by_time_.capacity() * sizeof(TimeSample) +
-           chunk_bounds_.capacity() * sizeof(chunk_bounds_[0]);
+           spans_.capacity() * sizeof(RestSpaceSpan) + chunk_bounds_.capacity() * sizeof(chunk_bounds_[0]) +
+           chunk_acceleration_.capacity() * sizeof(double);
   }
 
   // Events where the distance from the origin (Boyer–Lindquist r for Kerr,
@@ -75,6 +90,8 @@ class Worldline {
   std::size_t sample_index_at(double t) const;
   // Index of the coordinate-time table step holding t, clamped to the table.
   std::size_t time_index(double t) const;
+  // The top |d2x/dt2| of the coordinate-time interpolant on its step k.
+  double step_acceleration(std::size_t k) const;
 
   struct Sample {
     Vec4 x, u;
@@ -91,12 +108,15 @@ class Worldline {
     Vec4 x, dxdt, u, dudt;
   };
   std::vector<TimeSample> by_time_;
+  std::vector<RestSpaceSpan> spans_;  // per coordinate-time sample: how its rest space lies
   double dt_ = 0.0;
   double top_speed_ = 0.0;
   // Per chunk of kChunk coordinate-time samples: spatial bounds, for the
   // spacetime tube.
   static constexpr std::size_t kChunk = 16;
   std::vector<std::array<Vec3, 2>> chunk_bounds_;
+  // ... and the interpolant's top coordinate acceleration |d2x/dt2|.
+  std::vector<double> chunk_acceleration_;
 };
 
 }  // namespace lc
