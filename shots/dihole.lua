@@ -46,6 +46,17 @@ local function observer_at(t)
   return z_axis
 end
 
+-- Camera roll (degrees) at story time t.  Seen from the z axis the swing
+-- would run up and down the frame's short side, and at its turning points
+-- the sphere (pushed outwards by the holes' lensing) would leave the frame;
+-- so the second pan also rolls the camera a quarter turn, and from the z axis
+-- the swing runs along the long side, +x on the left as seen from the y axis.
+local function roll_at(t)
+  if t < 2 * T then return 0 end
+  if t < 3 * T then return -90 * lc.ease.smoothstep((t - 2 * T) / T) end
+  return -90
+end
+
 return {
   name = "dihole",
   frames = tl.frames,
@@ -54,12 +65,13 @@ return {
   height = 720,
   supersample = 2,
   frame = function(i)
-    local scene = {camera = lc.camera{fov = fov}, sky = lc.starfield{}}
+    local scene = {sky = lc.starfield{}}
     local _, _, u = tl:at(i)
     local segment = tl:at(i)
     if segment == "oscillate" then
       local t = 5 * T * u                      -- story time: five periods over the segment
       local p = observer_at(t)
+      scene.camera = lc.camera{fov = fov, roll = roll_at(t)}
       scene.spacetime = hole
       scene.time = t + delay
       scene.observer = lc.static_observer{x = p.x, y = p.y, z = p.z}
@@ -68,7 +80,9 @@ return {
       local grow = lc.ease.smoothstep(tl:progress("grow", i))
       local shrink = lc.ease.smoothstep(tl:progress("shrink", i))
       local mass = m * grow * (1 - shrink)
-      local p = i < tl:start("oscillate") and y_axis or z_axis
+      local before = i < tl:start("oscillate")
+      local p = before and y_axis or z_axis
+      scene.camera = lc.camera{fov = fov, roll = before and 0 or roll_at(5 * T)}
       scene.spacetime = lc.dihole{m1 = mass, m2 = mass, d = d}
       scene.observer = lc.static_observer{x = p.x, y = p.y, z = p.z}
       scene.objects = {lc.sphere{radius = radius, position = start}}
