@@ -393,6 +393,16 @@ double extent(const Scene& scene, double cx, double cy, double dx, double dy, do
   return edges[0] + edges[1];
 }
 
+// A scene of one sphere of radius `radius` released from (5, 0, 0) at
+// `velocity` in `spacetime`, seen from far off: for the sphere's own tests.
+Scene falling_sphere_scene(const Spacetime& spacetime, const Vec3& velocity, double radius, ShotResources& res) {
+  SceneSpec fs;
+  fs.spacetime = spacetime;
+  fs.observer.position = {200, 0, 80, 0};
+  fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, velocity, 200, radius));
+  return build_scene(fs, 8, 8, res);
+}
+
 TEST(Render, SphereSimultaneityIsSolvedNearAMovingSphere) {
   // The sphere of the paper's dihole sequence swings through the holes at
   // up to ~0.8 c.  A point X on its surface, on the slice simultaneous with
@@ -400,12 +410,8 @@ TEST(Render, SphereSimultaneityIsSolvedNearAMovingSphere) {
   // lead back to that C from X's own time: to 1e-6 M, far below a pixel
   // (~0.02 M at the sphere in the film).  (A wrong-signed Newton step once
   // doubled the error at each iteration instead.)
-  SceneSpec fs;
-  fs.spacetime = Dihole(0.4, 0.4, 1.0);
-  fs.observer.position = {200, 0, 80, 0};
-  fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 200, 1.0));
   ShotResources res;
-  const Scene scene = build_scene(fs, 8, 8, res);
+  const Scene scene = falling_sphere_scene(Dihole(0.4, 0.4, 1.0), {0, 0, 0}, 1.0, res);
   const auto& sc = std::get<SceneIn<Dihole>>(scene);
   const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects).front();
   double worst = 0.0;
@@ -458,12 +464,8 @@ double farthest_surface_point(const S& st, const Sphere& sphere, double t0, doub
 
 TEST(Render, SphereTubeHoldsTheSphere) {
   {
-    SceneSpec fs;
-    fs.spacetime = Dihole(0.4, 0.4, 1.0);
-    fs.observer.position = {200, 0, 80, 0};
-    fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 200, 1.0));
     ShotResources res;
-    const Scene scene = build_scene(fs, 8, 8, res);
+    const Scene scene = falling_sphere_scene(Dihole(0.4, 0.4, 1.0), {0, 0, 0}, 1.0, res);
     const auto& sc = std::get<SceneIn<Dihole>>(scene);
     const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects).front();
     const double seen = farthest_surface_point(sc.spacetime, sphere, -3.0, 230.0);
@@ -472,12 +474,8 @@ TEST(Render, SphereTubeHoldsTheSphere) {
     EXPECT_LT(sphere.tube_radius(), 1.1);
   }
   {
-    SceneSpec fs;
-    fs.spacetime = Minkowski{};
-    fs.observer.position = {200, 0, 80, 0};
-    fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {-0.6, 0, 0}, 200, 2.0));
     ShotResources res;
-    const Scene scene = build_scene(fs, 8, 8, res);
+    const Scene scene = falling_sphere_scene(Minkowski{}, {-0.6, 0, 0}, 2.0, res);
     const auto& sc = std::get<SceneIn<Minkowski>>(scene);
     const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects).front();
     // Once moving, the contracted sphere reaches R across its motion (to
