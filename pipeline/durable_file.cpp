@@ -2,12 +2,18 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
+#include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
 namespace lc {
@@ -32,21 +38,90 @@ void sync_and_close(int fd, const fs::path& blame) {
   if (rc != 0) fail("sync", blame, err);
 }
 
+// Where a path names an open descriptor of this process ("/dev/fd/3",
+// "/proc/self/fd/1"): its number, else -1.  (/dev/stdout and /dev/stderr
+// are links to these, followed before this is asked.)
+int descriptor_named(const fs::path& p) {
+  for (std::string_view dir : {"/dev/fd/", "/proc/self/fd/"}) {
+    const std::string s = p.string();
+    if (s.rfind(dir, 0) != 0) continue;
+    const std::string_view n = std::string_view(s).substr(dir.size());
+    int v = 0;
+    const auto [end, ec] = std::from_chars(n.data(), n.data() + n.size(), v);
+    if (ec == std::errc() && end == n.data() + n.size() && !n.empty()) return v;
+  }
+  return -1;
+}
+
+// Input: the path a user named.  Output: the path its links end at (each
+// link read relative to its own directory), and, if the way there names an
+// open descriptor, that descriptor.  Throws on a loop of links.
+std::pair<fs::path, int> follow_links(const fs::path& named) {
+  fs::path p = named;
+  for (int hop = 0; hop < 40; ++hop) {
+    if (const int fd = descriptor_named(p); fd >= 0) return {p, fd};
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(p, ec))) return {p, -1};
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec) fail("follow the link", named, ec.value());
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  fail("follow the links of", named, ELOOP);
+}
+
+// "<dir>/<name>.tmp-<pid>" for every pid.  Input: a temporary's directory and
+// the name before ".tmp-".  Removes those whose process is gone (a live one
+// removes its own; one on another machine sharing the disk is alive there,
+// so only names of this machine's dead pids are removed).
+void remove_stale_temporaries(const fs::path& dir, const std::string& name) {
+  std::error_code ec;
+  const std::string prefix = name + std::string(kTempMark);
+  for (fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string file = it->path().filename().string();
+    if (file.rfind(prefix, 0) != 0 || !is_temporary_name(file)) continue;
+    const long pid = std::strtol(file.c_str() + prefix.size(), nullptr, 10);
+    if (pid > 0 && pid <= std::numeric_limits<pid_t>::max() && ::kill(static_cast<pid_t>(pid), 0) != 0 &&
+        errno == ESRCH) {
+      std::error_code ignored;
+      fs::remove(it->path(), ignored);
+    }
+  }
+}
+
 }  // namespace
 
-DurableFile::DurableFile(fs::path final_path) : final_(std::move(final_path)) {
+DurableFile::DurableFile(fs::path final_path, StaleTemporaries stale) : final_(std::move(final_path)) {
+  std::tie(target_, descriptor_) = follow_links(final_);
   std::error_code ec;
-  if (fs::is_directory(final_, ec))
-    throw std::runtime_error(fmt::format("cannot write {}: it is a directory", final_.string()));
-  temp_ = final_;
-  temp_ += fmt::format("{}{}", kTempMark, ::getpid());
+  const fs::file_status st = descriptor_ >= 0 ? fs::file_status(fs::file_type::character) : fs::status(target_, ec);
+  const fs::file_type type = st.type();
+  if (type == fs::file_type::directory || type == fs::file_type::block || type == fs::file_type::socket) {
+    const char* what = type == fs::file_type::directory ? "a directory"
+                       : type == fs::file_type::block   ? "a block device, which lightcone does not write to"
+                                                        : "a socket, which lightcone does not write to";
+    throw std::runtime_error(fmt::format("cannot write {}: it is {}{}", final_.string(), what,
+                                         target_ == final_ ? "" : fmt::format(" ({})", target_.string())));
+  }
+  stream_ = type == fs::file_type::character || type == fs::file_type::fifo;
+  if (stream_) {
+    // Not beside a device: /dev is no place for temporaries, and a FIFO's
+    // directory may not be writable.
+    const fs::path dir = fs::temp_directory_path(ec);
+    const std::string name = "lightcone-" + final_.filename().string();
+    if (stale == StaleTemporaries::remove) remove_stale_temporaries(dir, name);
+    temp_ = dir / fmt::format("{}{}{}", name, kTempMark, ::getpid());
+  } else {
+    if (stale == StaleTemporaries::remove) remove_stale_temporaries(target_.parent_path(), target_.filename().string());
+    temp_ = target_;
+    temp_ += fmt::format("{}{}", kTempMark, ::getpid());
+  }
 }
 
 DurableFile::~DurableFile() {
   // A destructor must not throw: clean-up is best effort.
   if (fd_ >= 0) ::close(fd_);
   std::error_code ec;
-  if (!committed_) fs::remove(temp_, ec);
+  if (!committed_ || stream_) fs::remove(temp_, ec);
 }
 
 void DurableFile::write(std::string_view bytes) {
@@ -88,8 +163,56 @@ void DurableFile::rename_into_place() {
     fd_ = -1;
     if (rc != 0) fail("write", final_, errno);
   }
-  if (std::rename(temp_.c_str(), final_.c_str()) != 0) fail("rename onto", final_, errno);
+  if (std::rename(temp_.c_str(), target_.c_str()) != 0) fail("rename onto", final_, errno);
   committed_ = true;
+}
+
+void DurableFile::copy_into_stream() {
+  // Assumes the temporary is written.  Opens the target without truncating
+  // or creating (a device or FIFO exists; truncating a descriptor a shell
+  // opened for `>>` would lose what it holds) and copies the bytes in.
+  if (fd_ >= 0) {
+    const int rc = ::close(fd_);
+    fd_ = -1;
+    if (rc != 0) fail("write", final_, errno);
+  }
+  const int in = ::open(temp_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (in < 0) fail("read back the temporary of", final_, errno);
+  const int out = descriptor_ >= 0 ? ::fcntl(descriptor_, F_DUPFD_CLOEXEC, 0)
+                                   : ::open(target_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+  if (out < 0) {
+    const int err = errno;
+    ::close(in);
+    fail("write", final_, err);
+  }
+  std::vector<char> buffer(1 << 20);
+  int err = 0;
+  for (;;) {
+    const ssize_t n = ::read(in, buffer.data(), buffer.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n < 0) err = errno;
+      break;
+    }
+    for (ssize_t done = 0; done < n && err == 0;) {
+      const ssize_t w = ::write(out, buffer.data() + done, static_cast<std::size_t>(n - done));
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) err = w < 0 ? errno : EIO;
+      else done += w;
+    }
+    if (err != 0) break;
+  }
+  ::close(in);
+  if (::close(out) != 0 && err == 0) err = errno;
+  if (err != 0) fail("write", final_, err);
+  committed_ = true;
+  std::error_code ignored;
+  fs::remove(temp_, ignored);
+}
+
+void DurableFile::put_in_place() {
+  if (stream_) copy_into_stream();
+  else rename_into_place();
 }
 
 void DurableFile::commit() { commit_together({this}); }
@@ -99,12 +222,13 @@ void commit_together(std::initializer_list<DurableFile*> files) {
   // first rename, so a failed sync leaves every final name as it was.
   for (DurableFile* f : files) {
     if (f->committed_) throw std::logic_error("DurableFile committed twice: " + f->final_.string());
-    f->sync_temp();
+    if (!f->stream_) f->sync_temp();  // (a device or FIFO is not synced: it keeps nothing)
   }
   std::vector<fs::path> dirs;
   for (DurableFile* f : files) {
-    f->rename_into_place();
-    const fs::path dir = f->final_.parent_path();
+    f->put_in_place();
+    if (f->stream_) continue;
+    const fs::path dir = f->target_.parent_path();
     if (std::find(dirs.begin(), dirs.end(), dir) == dirs.end()) dirs.push_back(dir);
   }
   for (const fs::path& dir : dirs) sync_directory(dir);

@@ -12,8 +12,20 @@
 // directory.  A DurableFile destroyed uncommitted (an error, an interrupt
 // unwinding the stack) removes its temporary and leaves the final name as it
 // was.  Only a process killed outright leaves a temporary; its name says so
-// (is_temporary_name) for whoever cleans up.  Errors are std::runtime_error
+// (is_temporary_name); the next DurableFile of the same final name removes
+// it, once the process that made it is gone.  Errors are std::runtime_error
 // naming the final path and the OS reason.
+//
+// What the final name may be (docs/cli.md, "Output files"):
+// - absent or a regular file: replaced as above;
+// - a symbolic link: followed (any depth), the file it ends at is replaced
+//   and the link kept, as a shell's `>` would write through it;
+// - a character device (/dev/null, a terminal) or a FIFO, or an open
+//   descriptor (/dev/stdout, /dev/fd/N, /proc/self/fd/N): written in place,
+//   never replaced; the bytes go to a temporary in the system's temporary
+//   directory first (libraries that write by path may seek) and are copied
+//   in at commit(), with an error on any short write;
+// - a directory, a block device or a socket: refused before any work.
 
 #include <filesystem>
 #include <initializer_list>
@@ -21,17 +33,27 @@
 
 namespace lc {
 
+// Whether a DurableFile looks for temporaries of its name that killed
+// processes left: every output does, except where the caller cleans a whole
+// folder of them once (the frame store, at the start of a render), which
+// keeps a frame's write from listing a folder of thousands of frames.
+enum class StaleTemporaries { remove, cleaned_by_caller };
+
 class DurableFile {
  public:
   // Input: the final path.  Reserves "<final>.tmp-<pid>" (the pid keeps two
-  // processes writing the same name apart); nothing is created yet.  Throws
-  // when `final_path` is a directory, which the rename would otherwise
-  // refuse only after all the work.
-  explicit DurableFile(std::filesystem::path final_path);
+  // processes writing the same name apart; for a device, FIFO or descriptor
+  // "lightcone-<name>.tmp-<pid>" in the temporary directory) and removes
+  // temporaries of the same name left by processes that are gone; nothing is
+  // created yet.  Throws when `final_path` cannot be a file (a directory, a
+  // block device, a socket, a link loop), which would otherwise be found
+  // only after all the work.
+  explicit DurableFile(std::filesystem::path final_path, StaleTemporaries stale = StaleTemporaries::remove);
   ~DurableFile();
   DurableFile(const DurableFile&) = delete;
   DurableFile& operator=(const DurableFile&) = delete;
 
+  // The path as given (what messages name).
   const std::filesystem::path& final_path() const { return final_; }
   // Where a library that writes by path should write (it creates the file).
   const std::filesystem::path& temp_path() const { return temp_; }
@@ -53,9 +75,15 @@ class DurableFile {
  private:
   void sync_temp() const;
   void rename_into_place();
+  void copy_into_stream();
+  void put_in_place();
 
-  std::filesystem::path final_, temp_;
-  int fd_ = -1;  // open while write() is in use
+  std::filesystem::path final_;  // as given
+  std::filesystem::path target_;  // where the bytes end: final_ with its links followed
+  std::filesystem::path temp_;
+  bool stream_ = false;  // target_ is written in place (a device, FIFO or descriptor)
+  int descriptor_ = -1;  // for /dev/fd/N and the like: N, written through a copy of it
+  int fd_ = -1;          // open while write() is in use
   bool committed_ = false;
 };
 

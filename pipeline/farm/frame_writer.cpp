@@ -35,14 +35,15 @@ void write_verified(const DurableFile& file, FrameFormat format, const FrameImag
 
 void write_frame_files(const std::filesystem::path& exr, const std::filesystem::path& png, const FrameImage& image,
                        const ImageMetadata& metadata, const DisplayTransform& display) {
-  DurableFile exr_file(exr), png_file(png);
+  // The frame store clears its folders of temporaries when a render starts.
+  DurableFile exr_file(exr, StaleTemporaries::cleaned_by_caller), png_file(png, StaleTemporaries::cleaned_by_caller);
   write_verified(exr_file, FrameFormat::exr, image, metadata);
   write_verified(png_file, FrameFormat::png, display.identity() ? image : display.applied(image));
   commit_together({&exr_file, &png_file});
 }
 
 void write_png_file(const std::filesystem::path& png, const FrameImage& image, const DisplayTransform& display) {
-  DurableFile file(png);
+  DurableFile file(png, StaleTemporaries::cleaned_by_caller);
   write_verified(file, FrameFormat::png, display.identity() ? image : display.applied(image));
   file.commit();
 }

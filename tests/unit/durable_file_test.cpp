@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,17 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <fcntl.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/un.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <thread>
 
 #include "interrupt.hpp"
 #include "scratch_dir.hpp"
@@ -149,6 +161,169 @@ TEST(DurableFile, SyncDirectoryNamesWhatItCannotSync) {
   EXPECT_NO_THROW(lc::sync_directory(""));  // a relative output path's directory: the current one
   EXPECT_EQ(error_of([&] { lc::sync_directory(dir / "gone"); }),
             "cannot open " + (dir / "gone").string() + " to sync it: No such file or directory");
+}
+
+// A character device node at `p` with the numbers of /dev/null (1, 3) or
+// /dev/full (1, 7), made in the scratch folder so that a regression replaces
+// that node and not the system's; false where nodes cannot be made (not root).
+bool make_char_device(const fs::path& p, unsigned minor) {
+  return ::mknod(p.c_str(), S_IFCHR | 0666, makedev(1, minor)) == 0;
+}
+
+bool is_char_device(const fs::path& p) {
+  struct stat st {};
+  return ::lstat(p.c_str(), &st) == 0 && S_ISCHR(st.st_mode);
+}
+
+TEST(DurableFile, ADeviceIsWrittenInPlaceNeverReplaced) {
+  ScratchDir dir;
+  const fs::path null = dir / "null";
+  if (!make_char_device(null, 3)) GTEST_SKIP() << "cannot make a device node here (not root)";
+  {
+    DurableFile out(null);
+    EXPECT_NE(out.temp_path().parent_path(), dir.path());  // no temporary beside a device
+    out.write("discarded");
+    out.commit();
+    EXPECT_FALSE(fs::exists(out.temp_path()));
+  }
+  EXPECT_TRUE(is_char_device(null));
+  EXPECT_EQ(dir.names(), Names{"null"});
+  // A library writing by path goes to the temporary, copied in at commit.
+  {
+    DurableFile out(null);
+    std::ofstream(out.temp_path(), std::ios::binary) << "picture";
+    out.commit();
+    EXPECT_FALSE(fs::exists(out.temp_path()));
+  }
+  EXPECT_TRUE(is_char_device(null));
+}
+
+TEST(DurableFile, AFullDeviceIsAnErrorNamingIt) {
+  ScratchDir dir;
+  const fs::path full = dir / "full";
+  if (!make_char_device(full, 7)) GTEST_SKIP() << "cannot make a device node here (not root)";
+  fs::path temp;
+  {
+    DurableFile out(full);
+    temp = out.temp_path();
+    out.write("no room");
+    EXPECT_EQ(error_of([&] { out.commit(); }), "cannot write " + full.string() + ": No space left on device");
+  }
+  EXPECT_TRUE(is_char_device(full));
+  EXPECT_FALSE(fs::exists(temp));
+}
+
+TEST(DurableFile, AFifoIsWrittenInPlace) {
+  ScratchDir dir;
+  const fs::path fifo = dir / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  std::string got;
+  std::thread reader([&] { got = contents(fifo); });
+  {
+    DurableFile out(fifo);
+    out.write("through ");
+    out.write("the pipe");
+    out.commit();
+  }
+  reader.join();
+  EXPECT_EQ(got, "through the pipe");
+  struct stat st {};
+  ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+}
+
+TEST(DurableFile, AnOpenDescriptorIsWrittenThroughNotReopened) {
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  for (const std::string& name : {"/dev/fd/", "/proc/self/fd/"}) {
+    DurableFile out(name + std::to_string(ends[1]));
+    out.write("via " + name);
+    out.commit();
+    char buf[64] = {};
+    const ssize_t n = ::read(ends[0], buf, sizeof buf);
+    EXPECT_EQ(std::string(buf, n > 0 ? n : 0), "via " + name);
+  }
+  ::close(ends[0]);
+  ::close(ends[1]);
+}
+
+TEST(DurableFile, ALinkIsFollowedAndKept) {
+  ScratchDir dir;
+  fs::create_directories(dir / "real");
+  std::ofstream(dir / "real" / "out.csv") << "old";
+  fs::create_symlink("real/out.csv", dir / "link.csv");
+  fs::create_symlink("link.csv", dir / "link2.csv");  // a link to a link
+  {
+    DurableFile out(dir / "link2.csv");
+    EXPECT_EQ(out.temp_path().parent_path(), dir / "real");  // beside the file the links end at
+    out.write("new");
+    out.commit();
+  }
+  EXPECT_TRUE(fs::is_symlink(dir / "link.csv"));
+  EXPECT_TRUE(fs::is_symlink(dir / "link2.csv"));
+  EXPECT_EQ(contents(dir / "real" / "out.csv"), "new");
+  // A dangling link: the file it names is made.
+  fs::create_symlink("real/made.csv", dir / "dangling.csv");
+  {
+    DurableFile out(dir / "dangling.csv");
+    out.write("made");
+    out.commit();
+  }
+  EXPECT_TRUE(fs::is_symlink(dir / "dangling.csv"));
+  EXPECT_EQ(contents(dir / "real" / "made.csv"), "made");
+}
+
+TEST(DurableFile, WhatCannotBeAFileIsRefusedBeforeAnyWork) {
+  ScratchDir dir;
+  fs::create_symlink("loop2", dir / "loop1");
+  fs::create_symlink("loop1", dir / "loop2");
+  EXPECT_EQ(error_of([&] { DurableFile out(dir / "loop1"); }),
+            "cannot follow the links of " + (dir / "loop1").string() + ": Too many levels of symbolic links");
+  const fs::path socket_path = dir / "sock";
+  const int s = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  sockaddr_un addr{};
+  addr.sun_family = AF_UNIX;
+  std::strncpy(addr.sun_path, socket_path.c_str(), sizeof addr.sun_path - 1);
+  ASSERT_EQ(::bind(s, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0) << std::strerror(errno);
+  EXPECT_EQ(error_of([&] { DurableFile out(socket_path); }),
+            "cannot write " + socket_path.string() + ": it is a socket, which lightcone does not write to");
+  ::close(s);
+  fs::create_symlink("sock", dir / "to_sock");
+  EXPECT_EQ(error_of([&] { DurableFile out(dir / "to_sock"); }),
+            "cannot write " + (dir / "to_sock").string() + ": it is a socket, which lightcone does not write to (" +
+                (dir / "sock").string() + ")");
+  if (::mknod((dir / "block").c_str(), S_IFBLK | 0600, makedev(7, 250)) == 0)
+    EXPECT_EQ(error_of([&] { DurableFile out(dir / "block"); }),
+              "cannot write " + (dir / "block").string() + ": it is a block device, which lightcone does not write to");
+}
+
+Names sorted(Names n) {
+  std::sort(n.begin(), n.end());
+  return n;
+}
+
+// The pid of a process that has ended (a child, waited for).
+pid_t a_dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ::waitpid(child, nullptr, 0);
+  return child;
+}
+
+TEST(DurableFile, TemporariesOfProcessesThatAreGoneAreRemoved) {
+  ScratchDir dir;
+  const std::string dead = "video.mp4.tmp-" + std::to_string(a_dead_pid());
+  const std::string alive = "video.mp4.tmp-" + std::to_string(::getppid());
+  const std::string other = "other.mp4.tmp-" + std::to_string(a_dead_pid());
+  for (const auto& n : {dead, alive, other}) std::ofstream(dir / n) << "left";
+  {
+    DurableFile out(dir / "video.mp4");
+    EXPECT_EQ(dir.names(), sorted({other, alive}));  // only its own name's, only the dead one's
+  }
+  // The frame store clears its folder itself: its writes do not look.
+  std::ofstream(dir / dead) << "left";
+  { DurableFile out(dir / "video.mp4", lc::StaleTemporaries::cleaned_by_caller); }
+  EXPECT_EQ(dir.names(), sorted({other, dead, alive}));
 }
 
 TEST(DurableFile, TemporaryNamesAreTheFinalNameAndAPid) {
