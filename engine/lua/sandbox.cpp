@@ -222,6 +222,27 @@ std::string format_mib(std::size_t bytes) {
   return fmt::format("{:g} MiB", static_cast<double>(bytes) / double(1u << 20));
 }
 
+// The lowest address the calling thread's C stack may reach before a
+// sandbox stops going deeper: its bottom plus kStackReserve (0: unknown, no
+// check).  Looked up once per thread and kept (a thread's stack does not
+// move): pthread_getattr_np reads /proc/self/maps for the main thread,
+// which cost more than the rest of making a sandbox, and a shot makes one
+// for every frame.
+std::uintptr_t this_threads_stack_floor() {
+  thread_local const std::uintptr_t floor = [] {
+    std::uintptr_t out = 0;
+    pthread_attr_t attr;
+    if (pthread_getattr_np(pthread_self(), &attr) == 0) {
+      void* low = nullptr;
+      std::size_t size = 0;
+      if (pthread_attr_getstack(&attr, &low, &size) == 0) out = reinterpret_cast<std::uintptr_t>(low) + kStackReserve;
+      pthread_attr_destroy(&attr);
+    }
+    return out;
+  }();
+  return floor;
+}
+
 }  // namespace
 
 // Everything one sandboxed state needs. It is the allocator's user data, so
@@ -240,11 +261,6 @@ struct Sandbox::Impl {
   bool timed_out = false;  // the evaluation hit its deadline; the hook fires on every instruction
   int nested_calls = 0;    // detail::NestedCall levels held
 
-  // The C stack of the thread last seen running the state: NestedCall and
-  // the hook refuse to go deeper than stack_floor (0: unknown, no check).
-  pthread_t stack_thread{};
-  bool stack_known = false;
-  std::uintptr_t stack_floor = 0;
   std::vector<std::filesystem::path> require_roots;  // require_dirs, canonical
   std::vector<std::string> loading;  // the chain of modules being required
   std::vector<std::string> loading_files;  // their paths, for locating errors
@@ -353,24 +369,9 @@ struct Sandbox::Impl {
   }
 
   // Whether the calling thread's C stack has more than kStackReserve left
-  // (`left`: how much it has). Its bounds are looked up once per thread:
-  // pthread_getattr_np reads /proc for the main thread.
+  // (`left`: how much it has); NestedCall refuses to go deeper.
   bool stack_has_room(std::size_t& left) {
-    const pthread_t self = pthread_self();
-    if (!stack_known || !pthread_equal(self, stack_thread)) {
-      stack_thread = self;
-      stack_known = true;
-      stack_floor = 0;
-      pthread_attr_t attr;
-      if (pthread_getattr_np(self, &attr) == 0) {
-        void* low = nullptr;
-        std::size_t size = 0;
-        if (pthread_attr_getstack(&attr, &low, &size) == 0) {
-          stack_floor = reinterpret_cast<std::uintptr_t>(low) + kStackReserve;
-        }
-        pthread_attr_destroy(&attr);
-      }
-    }
+    const std::uintptr_t stack_floor = this_threads_stack_floor();
     const auto here = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
     const std::uintptr_t low = stack_floor - kStackReserve;
     left = stack_floor == 0 || here < low ? 0 : here - low;

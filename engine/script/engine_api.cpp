@@ -69,21 +69,32 @@ void validate_observer(lua::TableReader& t) { read_observer(t, nullptr); }
 // oscillation).  Integrates the worldline (once per call).
 int l_apocentres(lua_State* L) {
   return lua::protect(L, [](lua_State* L) {
-    const Worldline w = [&] {
+    auto* memo = static_cast<EngineMemo*>(lua_touserdata(L, lua_upvalueindex(1)));
+    const WorldlineSpec spec = [&] {
       lua::TableReader t(L, 1, "apocentres");
-      return Worldline::integrate(read_worldline(t));
+      return read_worldline(t);
     }();
-    const std::vector<WorldlineEvent> events = w.apocentres();
+    auto compute = [&] {
+      const Worldline w = Worldline::integrate(spec);
+      std::vector<EngineMemo::Apocentre> out;
+      for (const WorldlineEvent& e : w.apocentres()) {
+        double t_unused, r, phi_unused;
+        std::visit([&](const auto& st) { scene_polar(st, e.x, t_unused, r, phi_unused); }, w.spacetime());
+        out.push_back({w.scene_time(e.x), e.tau, r});
+      }
+      return out;
+    };
+    std::vector<EngineMemo::Apocentre> uncached;
+    const std::vector<EngineMemo::Apocentre>& events =
+        memo ? memo->apocentres(spec.key(), compute) : (uncached = compute());
     lua_createtable(L, static_cast<int>(events.size()), 0);
     for (std::size_t i = 0; i < events.size(); ++i) {
       lua_createtable(L, 0, 3);
-      lua_pushnumber(L, w.scene_time(events[i].x));
+      lua_pushnumber(L, events[i].t);
       lua_setfield(L, -2, "t");
       lua_pushnumber(L, events[i].tau);
       lua_setfield(L, -2, "tau");
-      double t_unused, r, phi_unused;
-      std::visit([&](const auto& st) { scene_polar(st, events[i].x, t_unused, r, phi_unused); }, w.spacetime());
-      lua_pushnumber(L, r);
+      lua_pushnumber(L, events[i].r);
       lua_setfield(L, -2, "r");
       lua_rawseti(L, -2, static_cast<int>(i + 1));
     }
@@ -93,7 +104,7 @@ int l_apocentres(lua_State* L) {
 
 }  // namespace
 
-void install_engine_api(lua::Sandbox& sandbox) {
+void install_engine_api(lua::Sandbox& sandbox, EngineMemo* memo) {
   lua_State* L = sandbox.state();
   lua_newtable(L);
   auto add = [&](std::string_view kind, Validator validate) {
@@ -110,7 +121,8 @@ void install_engine_api(lua::Sandbox& sandbox) {
   ObjectRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_object); });
   add("worldline", validate_worldline);
   add("light", validate_light);
-  lua_pushcfunction(L, l_apocentres);
+  lua_pushlightuserdata(L, memo);
+  lua_pushcclosure(L, l_apocentres, 1);
   lua_setfield(L, -2, "apocentres");
   lua_setglobal(L, "__lightcone");
 }

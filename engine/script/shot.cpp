@@ -1,5 +1,7 @@
 #include "script/shot.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "lua/table_reader.hpp"
@@ -9,11 +11,15 @@
 
 namespace lc {
 
-Shot::Shot(const std::filesystem::path& file, lua::SandboxLimits limits)
-    : file_(file), sandbox_(require_dirs_for(file), std::move(limits)) {
-  install_engine_api(sandbox_);
-  sandbox_.run_file(file_, 1);
-  lua_State* L = sandbox_.state();
+Shot::Shot(const std::filesystem::path& file, lua::SandboxLimits limits) : file_(file), limits_(std::move(limits)) {
+  unused_.emplace(load(info_));
+}
+
+Shot::Loaded Shot::load(ShotInfo& info) {
+  Loaded out{lua::Sandbox(require_dirs_for(file_), limits_)};
+  install_engine_api(out.sandbox, &memo_);
+  out.sandbox.run_file(file_, 1);
+  lua_State* L = out.sandbox.state();
   if (!lua_istable(L, -1))
     throw lua::FieldError(fmt::format("{}: the script must return a shot table, got {}", file_.string(),
                                       luaL_typename(L, -1)));
@@ -22,30 +28,37 @@ Shot::Shot(const std::filesystem::path& file, lua::SandboxLimits limits)
     // Known before the other fields are read: a misspelt 'frames' must not
     // be taken for a misspelling of 'frame'.
     t.mark_known({"frame", "description"});
-    info_ = read_shot_info(t);
+    info = read_shot_info(t);
     t.push_field("frame");
     if (!lua_isfunction(L, -1))
       throw lua::FieldError(fmt::format("{}: field 'frame' must be a function(i) returning the scene of frame i, got {}",
                                         file_.string(), luaL_typename(L, -1)));
-    frame_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+    out.frame_ref = luaL_ref(L, LUA_REGISTRYINDEX);
     t.finish();
   }
   lua_pop(L, 1);
+  note_loaded_files(out.sandbox);
+  return out;
 }
 
-Shot::~Shot() {
-  if (lua_State* L = sandbox_.state()) luaL_unref(L, LUA_REGISTRYINDEX, frame_ref_);
+void Shot::note_loaded_files(const lua::Sandbox& sandbox) {
+  for (const auto& p : sandbox.loaded_files())
+    if (std::find(loaded_files_.begin(), loaded_files_.end(), p) == loaded_files_.end()) loaded_files_.push_back(p);
 }
 
 SceneSpec Shot::frame(int i) {
-  lua_State* L = sandbox_.state();
   const std::string ctx = fmt::format("{}: frame {}", file_.string(), i);
   if (i < 0 || i >= info_.frames)
     throw lua::FieldError(fmt::format("{}: no such frame (the shot has frames 0 to {})", ctx, info_.frames - 1));
-  lua_rawgeti(L, LUA_REGISTRYINDEX, frame_ref_);
+  ShotInfo unused_info;
+  Loaded fresh = unused_ ? std::move(*unused_) : load(unused_info);
+  unused_.reset();
+  lua_State* L = fresh.sandbox.state();
+  lua_rawgeti(L, LUA_REGISTRYINDEX, fresh.frame_ref);
   lua_pushinteger(L, i);
   try {
-    sandbox_.call(1, 1);
+    fresh.sandbox.call(1, 1);
+    note_loaded_files(fresh.sandbox);  // modules required inside frame()
   } catch (const lua::ScriptError& e) {
     // The script's line alone does not say which of its frames failed.
     throw lua::ScriptError(fmt::format("{}: {}", ctx, e.what()));
@@ -66,7 +79,7 @@ SceneSpec Shot::frame(int i) {
   }
 }
 
-std::vector<std::filesystem::path> Shot::loaded_files() const { return sandbox_.loaded_files(); }
+std::vector<std::filesystem::path> Shot::loaded_files() const { return loaded_files_; }
 
 std::vector<std::filesystem::path> Shot::asset_dirs() const {
   std::filesystem::path own = file_.parent_path();

@@ -1,15 +1,23 @@
 #pragma once
-// A shot script, loaded once into its own sandbox: the frame-independent
-// settings, and frame(i) -> SceneSpec by calling the script's frame
-// function.  Not thread-safe (one Lua state); every thread or rank that
-// needs scenes loads its own Shot — scripts are deterministic, so all agree.
+// A shot script: the frame-independent settings, and frame(i) -> SceneSpec
+// by calling the script's frame function.
+//
+// A frame's scene depends on the shot's files and i alone: each frame(i)
+// runs the script afresh in a sandbox of its own, so nothing a script keeps
+// in a global, an upvalue or a table survives from one frame to the next,
+// and a frame renders the same alone, resumed, in any order and on any rank
+// (docs/shots.md, "Frames are independent").  The sandbox that read the
+// settings serves the first frame asked for.  Not thread-safe; every thread
+// or rank that needs scenes may share one under a lock or load its own.
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "lua/sandbox.hpp"
 #include "scene/scene_spec.hpp"
+#include "script/engine_api.hpp"
 
 namespace lc {
 
@@ -18,7 +26,6 @@ class Shot {
   // Runs the script (sandboxed) and reads the shot table it returns.  Throws
   // lua::ScriptError / lua::FieldError naming the file and line or field.
   explicit Shot(const std::filesystem::path& file, lua::SandboxLimits limits = {});
-  ~Shot();
 
   const ShotInfo& info() const { return info_; }
   const std::filesystem::path& file() const { return file_; }
@@ -27,17 +34,30 @@ class Shot {
   // the frame and the field.
   SceneSpec frame(int i);
 
-  // The script and every module it required (for hashing a shot's inputs).
+  // The script and every module it required, in any frame evaluated so far
+  // (for hashing a shot's inputs).
   std::vector<std::filesystem::path> loaded_files() const;
   // Where the shot's assets (sky images) are looked for: its own folder,
   // then the project's shots/ folder.
   std::vector<std::filesystem::path> asset_dirs() const;
 
  private:
+  // A sandbox that has run the script, and its frame function.
+  struct Loaded {
+    lua::Sandbox sandbox;
+    int frame_ref = LUA_NOREF;  // registry reference to the frame function
+  };
+  // Runs the script in a new sandbox and reads the shot table it returns
+  // into `info`; throws as the constructor does.
+  Loaded load(ShotInfo& info);
+  void note_loaded_files(const lua::Sandbox& sandbox);
+
   std::filesystem::path file_;
-  lua::Sandbox sandbox_;
+  lua::SandboxLimits limits_;
+  EngineMemo memo_;  // before the sandboxes, which point at it
   ShotInfo info_;
-  int frame_ref_;  // registry reference to the frame function
+  std::optional<Loaded> unused_;  // the constructor's sandbox, until a frame uses it
+  std::vector<std::filesystem::path> loaded_files_;
 };
 
 }  // namespace lc

@@ -8,8 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "lua/table_reader.hpp"
+#include "scene/scene_json.hpp"
 #include "scratch_dir.hpp"
 #include "test_errors.hpp"
 
@@ -53,6 +55,68 @@ TEST(Shot, ErrorsInsideFrameNameTheFrame) {
                 .rfind(f + ": frame 3: " + f + ":4: disk: field 'inner' must be at least 0 M, got -1", 0),
             0u);
   EXPECT_NO_THROW(shot.frame(0));  // the state is fine after errors
+}
+
+// The scene of frame i depended on which frames had been evaluated before it
+// in the same Lua state: a shot that counted its calls in a global rendered
+// differently with --frames 3:5, after a resume and on every MPI rank (issue
+// 25, defect 2).  Now every frame runs the script afresh: state kept in a
+// global, an upvalue, a table or the library is gone by the next frame.
+TEST(Shot, AFramesSceneDependsOnlyOnTheShotAndI) {
+  ScratchDir dir;
+  const fs::path file = write_shot(dir, "stateful.lua", R"(local lc = require 'lightcone'
+local calls = 0          -- an upvalue
+local seen = {}          -- a table
+return {name = 'stateful', frames = 10, width = 8, height = 8,
+  frame = function(i)
+    counter = (counter or 0) + 1      -- a global
+    calls = calls + 1
+    seen[#seen + 1] = i
+    first = first or i                -- "the first frame rendered"
+    math.kept = (math.kept or 0) + 1  -- a library table
+    local yaw = counter * 5 + calls + #seen + (i - first) + math.kept
+    return {spacetime = lc.kerr{mass = 1, spin = 0.9},
+            observer = lc.static_observer{r = 30, theta = 80, phi = 0},
+            camera = lc.camera{fov = 40, yaw = yaw}}
+  end}
+)");
+  auto json_of = [](lc::Shot& shot, int i) { return lc::to_json(shot.frame(i), i); };
+  lc::Shot in_order(file);
+  std::vector<std::string> ordered;
+  for (int i = 0; i < 10; ++i) ordered.push_back(json_of(in_order, i));
+  for (int i : {7, 3, 3, 9, 0, 5}) {
+    lc::Shot alone(file);  // as --frames i:i, a resume from i, or an MPI rank given i first
+    EXPECT_EQ(json_of(alone, i), ordered[i]) << "frame " << i;
+    EXPECT_EQ(json_of(in_order, i), ordered[i]) << "frame " << i << " again";
+  }
+  EXPECT_NE(ordered[0].find("\"yaw\": 8"), std::string::npos) << ordered[0];  // 5 + 1 + 1 + 0 + 1 (frame 0)
+}
+
+// A module required inside frame() is one of the shot's inputs, whichever
+// frame required it.
+TEST(Shot, ModulesRequiredByAnyFrameAreItsInputs) {
+  ScratchDir dir;
+  std::ofstream(dir / "late.lua") << "return {fov = 33}\n";
+  const fs::path file = write_shot(dir, "modules.lua", std::string(R"(local lc = require 'lightcone'
+return {name = 'modules', frames = 4, width = 8, height = 8,
+  frame = function(i)
+    local fov = 40
+    if i == 2 then fov = require('late').fov end
+    return {spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 30, theta = 80, phi = 0},
+            camera = lc.camera{fov = fov}}
+  end}
+)"));
+  lc::Shot shot(file);
+  auto has_late = [&] {
+    for (const auto& p : shot.loaded_files())
+      if (p.filename() == "late.lua") return true;
+    return false;
+  };
+  shot.frame(0);
+  EXPECT_FALSE(has_late());
+  shot.frame(2);
+  shot.frame(3);  // a later frame in a fresh sandbox does not forget it
+  EXPECT_TRUE(has_late());
 }
 
 // A misspelt frames suggested 'frame', a field of every shot.
