@@ -82,6 +82,11 @@ std::vector<std::string> PointStarSky::assets(const Params& p) {
   return {};
 }
 
+std::vector<std::string> PointStarSky::system_files(const Params& p) {
+  if (p.catalogue == StarCatalogue::kstars) return {kstars_catalogue_path()};
+  return {};
+}
+
 void PointStarSky::Params::validate() const {
   if (catalogue == StarCatalogue::kstars) {
     const std::string file = kstars_catalogue_path();

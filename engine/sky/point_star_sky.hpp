@@ -90,6 +90,8 @@ class PointStarSky {
   // The image a frame with this sky reads, if its background is one (the
   // KStars catalogue is the system's, not the shot's).
   static std::vector<std::string> assets(const Params& p);
+  // The KStars catalogue, when the stars are read from it.
+  static std::vector<std::string> system_files(const Params& p);
 
   PointStarSky(const Params& p, ShotResources& res);
   // The stars alone, as the stage after the pixels needs them (without the

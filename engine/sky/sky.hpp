@@ -30,7 +30,9 @@ class ShotResources;
 // declared fields, assets(params) (the files it reads, for a shot's input
 // hash), a constructor from the parameters and the shot's resources, and
 // the colour for a direction (theta from +z, phi = atan2(y, x)); a sky with
-// stars as points also has point_stars() (sky/point_star_sky.hpp).
+// stars as points also has point_stars() (sky/point_star_sky.hpp), and one
+// that reads a file of the system's (not the shot's: a star catalogue) has
+// a static system_files(params) naming it by absolute path.
 template <class K>
 concept SkyModel = requires(const K& k, const typename K::Params& p, ShotResources& res, double a) {
   requires std::same_as<std::remove_cv_t<decltype(K::name)>, std::string_view>;
@@ -73,6 +75,18 @@ inline std::vector<std::string> sky_assets(const SkySpec& spec) {
         return out;
       },
       spec);
+}
+
+// The files of the system's that a sky reads (absolute paths), for a shot's
+// input hash beside its own assets: the frames change when these change.
+inline std::vector<std::string> sky_system_files(const SkySpec& spec) {
+  std::vector<std::string> out;
+  SkyRegistry::for_each([&](auto* kind) {
+    using K = std::remove_pointer_t<decltype(kind)>;
+    if constexpr (requires(const typename K::Params& p) { K::system_files(p); })
+      if (const auto* p = std::get_if<typename K::Params>(&spec)) out = K::system_files(*p);
+  });
+  return out;
 }
 
 // The point stars of the sky `spec` (without building the rest of it: the

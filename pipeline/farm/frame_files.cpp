@@ -38,7 +38,7 @@ std::vector<int> check_frames_current(const std::filesystem::path& dir, const st
     reasons.push_back(fmt::format("{} rendered from an earlier version of the shot (its script or modules)",
                                   frames_were(stale.earlier_script)));
   if (!stale.earlier_sky.empty())
-    reasons.push_back(fmt::format("{} rendered with an earlier version of the sky image", frames_were(stale.earlier_sky)));
+    reasons.push_back(fmt::format("{} rendered with an earlier version of the sky's image or star catalogue", frames_were(stale.earlier_sky)));
   if (!stale.unrecorded.empty())
     reasons.push_back(fmt::format("{} not recorded in {}.journal as finished (a render stopped while writing, or the "
                                   "files were put there by hand)",

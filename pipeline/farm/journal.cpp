@@ -86,7 +86,10 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
     if (script->size() != 16) return std::nullopt;
     jf.parts.script = *script;
     if (const std::string* sky = get("sky")) {
-      if (sky->size() != 16) return std::nullopt;
+      // One hash a file ("+" between them): sizes 16, 33, 50, ...
+      if (sky->size() % 17 != 16) return std::nullopt;
+      for (std::size_t k = 16; k < sky->size(); k += 17)
+        if ((*sky)[k] != '+') return std::nullopt;
       jf.parts.sky = *sky;
     }
   }
@@ -188,7 +191,8 @@ StaleFrames stale_frames(const JournalContents& journal, const std::map<int, std
     if (jf.parts.script.empty() || latest.parts.script.empty())
       return jf.inputs == latest.inputs ? nullptr : &out.earlier_script;
     if (jf.parts.script != latest.parts.script) return &out.earlier_script;
-    if (!jf.parts.sky.empty() && !latest_hashes.count(jf.parts.sky)) return &out.earlier_sky;
+    for (std::size_t k = 0; k + 16 <= jf.parts.sky.size(); k += 17)
+      if (!latest_hashes.count(jf.parts.sky.substr(k, 16))) return &out.earlier_sky;
     return nullptr;
   };
   for (const auto& [frame, bytes] : png_sizes) {

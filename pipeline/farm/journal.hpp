@@ -38,7 +38,8 @@ struct FrameSettings {
 // the script from one that merely has another sky image (stale_frames).
 struct InputParts {
   std::string script;  // 16 hex: the script and every module it required; "" in older journals
-  std::string sky;     // 16 hex: the frame's sky image; "" when it has none
+  std::string sky;     // 16 hex for each file the frame's sky reads (its image, a star catalogue), joined
+                       // by '+'; "" when it reads none
   bool operator==(const InputParts&) const = default;
 };
 

@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
   ShotSurvey out;
   const auto dirs = shot.asset_dirs();
-  std::map<int, std::string> texture_of;  // frame -> resolved sky image path
+  std::map<int, std::vector<std::string>> sky_files_of;  // frame -> the files its sky reads
   for (int f : frames) {
     const SceneSpec fs = shot.frame(f);
     out.frames[f].spacetime = describe(fs.spacetime);
@@ -25,11 +25,13 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
       // The file the render will load (the same rules): checked before
       // anything reads it, for the hash below.
       try {
-        texture_of[f] = resolve_sky_image(asset, dirs).string();
+        sky_files_of[f].push_back(resolve_sky_image(asset, dirs).string());
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(fmt::format("{}: frame {}: {}", shot.file().string(), f, e.what()));
       }
     }
+    // (A catalogue's own checks are the sky's, made when the scene was read.)
+    for (const std::string& file : sky_system_files(fs.sky)) sky_files_of[f].push_back(file);
   }
   // Script and modules: after evaluating, so modules required inside
   // frame() are included.
@@ -45,11 +47,13 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
   for (auto& [f, facts] : out.frames) {
     ContentHash h = base;
     facts.parts.script = base.hex();
-    if (auto it = texture_of.find(f); it != texture_of.end()) {
-      auto known = out.files.find(it->second);
-      if (known == out.files.end()) known = out.files.emplace(it->second, to_hex(hash_file(it->second))).first;
-      h.add("sky image ").add(known->second);
-      facts.parts.sky = known->second;
+    if (auto it = sky_files_of.find(f); it != sky_files_of.end()) {
+      for (const std::string& file : it->second) {
+        auto known = out.files.find(file);
+        if (known == out.files.end()) known = out.files.emplace(file, to_hex(hash_file(file))).first;
+        h.add("sky image ").add(known->second);
+        facts.parts.sky += (facts.parts.sky.empty() ? "" : "+") + known->second;
+      }
     }
     facts.inputs = h.hex();
   }

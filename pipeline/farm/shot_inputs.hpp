@@ -1,9 +1,10 @@
 #pragma once
 // What the frames of a shot are made from, for the frame store's resume
-// check: the script, every module it required and the sky image of each
-// frame, each hashed by content.  A frame's input hash combines the hashes
-// of the script and modules (any of them may shape any frame) with that of
-// its own sky image, so rendering a sub-range and later the whole shot
+// check: the script, every module it required and the files each frame's
+// sky reads (its image; the star catalogue, LIGHTCONE_STAR_CATALOGUE's or
+// KStars'), each hashed by content.  A frame's input hash combines the
+// hashes of the script and modules (any of them may shape any frame) with
+// those of its own sky's files, so rendering a sub-range and later the whole shot
 // agree on the frames they share.  Engine changes are not covered: a
 // rebuilt lightcone resumes an old render as it stands.
 
