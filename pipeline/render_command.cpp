@@ -246,7 +246,10 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     fmt::print(stderr, "render: the master used {:.2f} s of CPU in {:.2f} s ({:.0f}% of one core) while {} worker threads rendered\n",
                master_cpu_seconds() - cpu_at_start, s, 100 * (master_cpu_seconds() - cpu_at_start) / s, cores);
   if (p.stats.gave_up)
-    fmt::print(stderr, "render: {} rays gave up (drawn black)\n", p.stats.gave_up);
+    fmt::print(stderr,
+               "render: {} rays gave up (drawn black): each ran out of steps or its step size fell below what double "
+               "precision resolves there; `lightcone trace SHOT --frame F --pixel I,J` shows a pixel's stop reason\n",
+               p.stats.gave_up);
   return 0;
 }
 

@@ -109,6 +109,13 @@ inline constexpr std::size_t max_shot_name_length = 128;
 // times in a few MiB of Lua memory, which would take GiBs here).
 inline constexpr std::size_t max_scene_objects = 1000;
 
+// How far from the origin an observer may be (M): a ray from farther away
+// starts at a coordinate time and radius so large that double precision
+// cannot resolve the steps near the hole (measured: Kerr renders from 1e10 M,
+// every ray gives up from 3e10 M).  A distant view: the observer at 1e9 M
+// with a narrow field of view (docs/shots.md).
+inline constexpr double max_observer_distance = 1e10;
+
 // Default safety bound on the number of accepted steps of one ray.
 inline constexpr long default_max_steps = 100000;
 

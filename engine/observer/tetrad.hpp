@@ -120,4 +120,18 @@ Tetrad static_frame(const S& st, const Vec4& scene_point) {
     return static_cartesian_tetrad(st, st.trace_from_scene(scene_point));
 }
 
+// The frame a moving body's velocity is given relative to at a scene point
+// (a worldline's start, a geodesic spec's): the static frame where a static
+// observer exists, else (inside a Kerr ergoregion, where none can stand) the
+// ZAMO's, with the same polar legs.  So a fall may start anywhere outside
+// the horizon.  Throws ObserverError inside a horizon.
+template <class S>
+Tetrad velocity_reference_frame(const S& st, const Vec4& scene_point) {
+  if constexpr (S::chart == SceneChart::polar) {
+    const Vec4 x = st.trace_from_scene(scene_point);
+    if (!st.inside_horizon(x) && st.metric(x)[0][0] >= 0.0) return zamo_polar_tetrad(st, scene_point);
+  }
+  return static_frame(st, scene_point);
+}
+
 }  // namespace lc

@@ -1,16 +1,29 @@
 #include "render/scene_builder.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "assets/asset_path.hpp"
+#include "core/constants.hpp"
 #include "scene/still_key.hpp"
 #include "spacetime/chart.hpp"
 
 namespace lc {
 
 namespace {
+
+// The distance of a scene point from the origin: r in a polar scene chart,
+// |(x, y, z)| in a Cartesian one.
+template <class S>
+double distance_from_origin(const Vec4& p) {
+  if constexpr (S::chart == SceneChart::polar) return std::abs(p[1]);
+  else return std::hypot(p[1], p[2], p[3]);  // (no overflow for huge coordinates)
+}
+
+// Where the script made the observer ("shot.lua:12"), for its errors.
+std::string where_of(const ObserverSpec& ob) { return ob.where.empty() ? std::string("observer") : ob.where; }
 
 // A coordinate radius beyond which a ray moving outwards meets nothing more:
 // twice the largest of the objects' reach and the spacetime's photon
@@ -35,6 +48,25 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
 
   SceneIn<S> sc{st, {}, 0.0, {}, {}, Camera(fs.camera, width, height), Sky(fs.sky, res), {}, rays};
   const ObserverSpec& ob = fs.observer;
+  // Where the observer stands is checked before its frame is made: there
+  // the reason would show only as "not timelike" or "degenerates".
+  auto check_distance = [&](const Vec4& scene_point) {
+    const double d = distance_from_origin<S>(scene_point);
+    if (!(d <= max_observer_distance))
+      throw std::invalid_argument(fmt::format(
+          "{}: observer: {}{:g} M from the origin, farther than rays can be traced from ({:g} M at most: double "
+          "precision cannot resolve their steps near the hole); for a distant view put the observer at most that "
+          "far away and narrow the camera's fov",
+          where_of(ob),
+          ob.kind == ObserverKind::free_fall ? fmt::format("at proper time {:g} the fall is ", ob.proper_time) : "",
+          d, max_observer_distance));
+    if (d == 0.0 && ob.kind != ObserverKind::free_fall)
+      throw std::invalid_argument(fmt::format(
+          "{}: observer: at the origin a {} observer has no view 'at the hole' (forward = -e_r has no "
+          "direction there): move it off the origin, and aim with lc.camera's yaw and pitch",
+          where_of(ob), ob.kind == ObserverKind::zamo ? "ZAMO" : "static"));
+  };
+  if (ob.kind != ObserverKind::free_fall) check_distance(ob.position);
   try {
     if (ob.kind == ObserverKind::free_fall) {
       check_same(*ob.worldline, "the observer");
@@ -43,6 +75,7 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
       sc.observer = ev.x;
       sc.frame = ev.frame;
       sc.observer_scene = st.scene_from_trace(ev.x);
+      check_distance(sc.observer_scene);
     } else {
       sc.observer = st.trace_from_scene(ob.position);
       sc.observer_scene = ob.position;
@@ -50,10 +83,12 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
                                                : static_polar_tetrad(st, ob.position);
     }
   } catch (const ObserverError& e) {
-    throw std::invalid_argument(fmt::format("observer: {}", e.what()));
+    throw std::invalid_argument(fmt::format("{}: observer: {}", where_of(ob), e.what()));
   }
   if (st.captured(sc.observer))
-    throw std::invalid_argument("observer: too close to a horizon (inside the capture region where rays are stopped)");
+    throw std::invalid_argument(fmt::format(
+        "{}: observer: too close to a horizon (inside the capture region where rays are stopped{})", where_of(ob),
+        ob.kind == ObserverKind::free_fall ? "; a fall can be shown up to just outside the horizon" : ""));
   sc.metric = st.metric(sc.observer);
   double r_unused, phi_unused;
   scene_polar(st, sc.observer, sc.observer_time, r_unused, phi_unused);

@@ -32,6 +32,7 @@ struct ObserverSpec {
   Vec4 position{};  // static / zamo: the event (t is the scene time)
   std::optional<WorldlineSpec> worldline;  // free_fall
   double proper_time = 0.0;                // free_fall: where on the worldline
+  std::string where;  // "shot.lua:12", where the script made it (for errors; not part of the picture)
 };
 
 struct SceneSpec {

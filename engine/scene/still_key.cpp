@@ -20,7 +20,8 @@ static_assert(sizeof(SceneSpec) == aligned(sizeof(Spacetime) + sizeof(ObserverSp
                                            alignof(SceneSpec)),
               "SceneSpec has a member still_key does not know: add it to still_key");
 static_assert(sizeof(ObserverSpec) ==
-                  sizeof(double) /* kind, padded */ + sizeof(Vec4) + sizeof(std::optional<WorldlineSpec>) + sizeof(double),
+                  sizeof(double) /* kind, padded */ + sizeof(Vec4) + sizeof(std::optional<WorldlineSpec>) + sizeof(double) +
+                      sizeof(std::string) /* where: not in the key, it does not change the picture */,
               "ObserverSpec has a member still_key does not know: add it to still_key");
 #endif
 

@@ -63,9 +63,9 @@ Start read_start(const S& st, lua::TableReader& t, bool polar) {
     throw lua::FieldError(fmt::format("{}: the start lies inside a horizon", t.context()));
   }
   try {
-    s.frame = static_frame(st, s.scene);
+    s.frame = velocity_reference_frame(st, s.scene);
   } catch (const ObserverError& e) {
-    throw lua::FieldError(fmt::format("{}: {} (directions and velocities are given in the static observer's frame)",
+    throw lua::FieldError(fmt::format("{}: {} (directions and velocities are given in the static observer's frame, or inside an ergoregion the ZAMO's)",
                                       t.context(), e.what()));
   }
   return s;

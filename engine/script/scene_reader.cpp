@@ -175,6 +175,7 @@ ObjectSpec read_object(TableReader& t, const Spacetime* st) {
 ObserverSpec read_observer(TableReader& t, const Spacetime* st) {
   const std::string k = kind_of(t);
   ObserverSpec o;
+  o.where = t.string_or("__where", t.context());
   if (k == "static_observer" || k == "zamo") {
     o.kind = k == "zamo" ? ObserverKind::zamo : ObserverKind::static_observer;
     const ScriptPosition p = read_position(t);  // reads and finishes t

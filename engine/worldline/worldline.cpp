@@ -51,7 +51,7 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
           throw std::invalid_argument(fmt::format("{}: the worldline starts inside a horizon", spec.where));
         Tetrad frame;
         try {
-          frame = boost(static_frame(st, spec.start), spec.velocity);
+          frame = boost(velocity_reference_frame(st, spec.start), spec.velocity);
         } catch (const ObserverError& e) {
           throw std::invalid_argument(fmt::format("{}: worldline: {}", spec.where, e.what()));
         }
@@ -164,7 +164,40 @@ WorldlineEvent Worldline::interpolate(std::size_t i, double s) const {
   std::array<Vec4, 4> blend;
   for (int l = 0; l < 4; ++l) blend[l] = (1.0 - s) * a.e.e[l] + s * b.e.e[l];
   const Mat4 g = std::visit([&](const auto& st) { return st.metric(ev.x); }, spacetime_);
-  ev.frame = orthonormalize(g, blend, "worldline");
+  try {
+    ev.frame = orthonormalize(g, blend, "worldline");
+  } catch (const ObserverError&) {
+    // Close to a horizon the trace chart is singular on (Kerr's outgoing
+    // Kerr-Schild form, regular for rays traced back, at the future
+    // horizon a fall crosses) the samples' components grow so fast that a
+    // blend of two future-pointing legs, measured in the metric between
+    // them, may not be timelike: carry sample a's event and frame to the
+    // proper time instead, by the geodesic and transport equations.
+    if (s == 0.0) throw;
+    return transported(a, s * dtau_, ev.tau);
+  }
+  return ev;
+}
+
+WorldlineEvent Worldline::transported(const Sample& from, double dtau, double tau) const {
+  GeodesicProblem pb;
+  pb.spacetime = spacetime_;
+  pb.kind = CurveKind::timelike;
+  pb.stop_parameter = StopParameter::proper_time;
+  pb.stop_value = dtau;
+  pb.x0 = from.x;
+  pb.u0 = from.u;
+  pb.tetrad = from.e;
+  const GeodesicPath path = solve_geodesic(pb);
+  if (path.reason != StopReason::reached)
+    throw ObserverError(fmt::format("worldline: the frame cannot be carried to proper time {:.6g} ({})", tau,
+                                    to_string(path.reason)));
+  const GeodesicSample& end = path.samples.back();
+  WorldlineEvent ev;
+  ev.tau = tau;
+  ev.x = end.x;
+  const Mat4 g = std::visit([&](const auto& st) { return st.metric(ev.x); }, spacetime_);
+  ev.frame = orthonormalize(g, end.e, "worldline");
   return ev;
 }
 

@@ -98,6 +98,9 @@ class Worldline {
     Tetrad e;
   };
   WorldlineEvent interpolate(std::size_t i, double s) const;  // s in [0,1] within step i
+  // The event and frame `dtau` of proper time after sample `from` (at proper
+  // time `tau`), integrated; throws ObserverError if the curve cannot get there.
+  WorldlineEvent transported(const Sample& from, double dtau, double tau) const;
 
   Spacetime spacetime_ = Minkowski{};
   std::vector<Sample> samples_;

@@ -59,12 +59,39 @@ expect_error bench_seconds_long "--seconds 4000: must be between 0 and 3600" -- 
 expect_error bad_frames "--frames '5:9': the shot has frames 0 to 0" -- "$LIGHTCONE" render ok.lua --out out --frames 5:9
 expect_error bad_frames2 "--frames 'x'" -- "$LIGHTCONE" render ok.lua --out out --frames x
 shot ergo "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 1.8, theta = 90, phi = 0},"
-expect_error ergo "ergo.lua: frame 0: observer: static observer: no static observer exists here (inside the ergoregion" -- "$LIGHTCONE" render ergo.lua --out out
+expect_error ergo "ergo.lua: frame 0: ergo.lua:5: observer: static observer: no static observer exists here (inside the ergoregion" -- "$LIGHTCONE" render ergo.lua --out out
 shot inside "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.zamo{r = 1.2, theta = 90, phi = 0},"
 expect_error inside "inside a horizon" -- "$LIGHTCONE" render inside.lua --out out
 # inspect refuses what render refuses (it builds each scene, short of tracing).
-expect_error inspect_ergo "ergo.lua: frame 0: observer: static observer: no static observer exists here" -- "$LIGHTCONE" inspect ergo.lua
-expect_error inspect_inside "inside.lua: frame 0: observer: ZAMO: the position is inside a horizon" -- "$LIGHTCONE" inspect inside.lua
+expect_error inspect_ergo "ergo.lua: frame 0: ergo.lua:5: observer: static observer: no static observer exists here" -- "$LIGHTCONE" inspect ergo.lua
+expect_error inspect_inside "inside.lua: frame 0: inside.lua:5: observer: ZAMO: the position is inside a horizon" -- "$LIGHTCONE" inspect inside.lua
+# Where an observer cannot stand, said with the line and the reason (not
+# "not timelike" or "the frame degenerates").
+shot far "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 1e300, theta = 90, phi = 0},"
+expect_error far "far.lua:5: observer: 1e+300 M from the origin, farther than rays can be traced from (1e+10 M at most" -- "$LIGHTCONE" render far.lua --out out
+shot far_flat "spacetime = lc.minkowski{}, observer = lc.zamo{x = 1e300, y = 1e300, z = 0},"
+expect_error far_flat "far_flat.lua:5: observer: 1.41421e+300 M from the origin, farther" -- "$LIGHTCONE" inspect far_flat.lua
+shot origin "spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 0, z = 0},"
+expect_error origin "origin.lua:5: observer: at the origin a static observer has no view 'at the hole'" -- "$LIGHTCONE" render origin.lua --out out
+# A fall may start inside Kerr's ergoregion (its velocity is then relative to
+# the ZAMO), where a static observer cannot stand, and be shown until just
+# outside the horizon (issue 25, defect 9).
+cat >"$WORK/fall.lua" <<'LUA'
+local lc = require "lightcone"
+local hole = lc.kerr{mass = 1, spin = 0.9}
+local w = lc.worldline{spacetime = hole, start = {t = 0, r = 1.9, theta = 90, phi = 0},
+                       velocity = {r = -0.1, theta = 0, phi = 0}, duration = 0.4}
+local v = lc.worldline{spacetime = hole, start = {t = 0, r = 6, theta = 60, phi = 0},
+                       velocity = {r = -0.5, theta = 0, phi = 0.3}, duration = 7.7}
+return {name = "fall", frames = 4, width = 16, height = 9,
+  frame = function(i)
+    local o = i < 2 and lc.free_fall{worldline = w, proper_time = 0.2 * i}
+                     or lc.free_fall{worldline = v, proper_time = 7.55 + 0.07 * (i - 2)}
+    return {spacetime = hole, observer = o, camera = lc.camera{fov = 90}, disk = lc.disk{inner = 3, outer = 12}}
+  end}
+LUA
+"$LIGHTCONE" render "$WORK/fall.lua" --out "$WORK/fall_out" --progress 0 2>"$WORK/fall.log" ||
+  fail "a fall inside the ergoregion and close to the horizon: $(cat "$WORK/fall.log")"
 expect_error inspect_texture "sky image 'nope.png' not found" -- "$LIGHTCONE" inspect missing_texture.lua
 cat >"$WORK/spin_changed.lua" <<'LUA'
 local lc = require "lightcone"

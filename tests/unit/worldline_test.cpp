@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "geodesic/geodesic_solver.hpp"
 #include "worldline/worldline.hpp"
 #include "test_scenes.hpp"
@@ -106,6 +107,48 @@ TEST(Worldline, TopCoordinateSpeedBoundsTheMotion) {
   EXPECT_GT(seen, 0.999 * w.top_coordinate_speed());
   const double U0 = 1.0 + 0.8 / std::sqrt(26.0);
   EXPECT_NEAR(w.top_coordinate_speed(), 1.0 / (1.5 * std::sqrt(3.0) * U0 * U0), 1e-4);
+}
+
+// A fall into Kerr (a = 0.9) from r = 6, shown until just before the
+// horizon: near it the trace chart (outgoing Kerr-Schild, singular at the
+// future horizon) made the blended frame not timelike, and such frames were
+// refused (issue 25, defect 9).  Every frame is orthonormal to 1e-9 (the
+// frame is carried by the transport equations there) and lies on the
+// reference solver's curve.
+TEST(Worldline, AFallIsFramedUntilJustOutsideTheHorizon) {
+  WorldlineSpec spec;
+  const Kerr kerr(1.0, 0.9);
+  spec.spacetime = kerr;
+  spec.start = {0, 6, 60 * degree, 0};
+  spec.velocity = {-0.5, 0, 0.3};
+  spec.duration = 7.7;
+  spec.where = "test";
+  const Worldline w = Worldline::integrate(spec);
+  const Kerr& st = std::get<Kerr>(w.spacetime());
+  for (double tau = 7.40; tau <= 7.7; tau += 0.005) {
+    const WorldlineEvent ev = w.at_proper_time(tau);
+    const Mat4 g = st.metric(ev.x);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        EXPECT_NEAR(contract(g, ev.frame.e[a], ev.frame.e[b]), a == b ? (a == 0 ? -1.0 : 1.0) : 0.0, 1e-9)
+            << "tau " << tau;
+    EXPECT_GT(st.scene_from_trace(ev.x)[1], kerr.horizon_radius()) << "tau " << tau;
+  }
+}
+
+// Inside the ergoregion no static observer exists; a worldline starting
+// there takes its velocity relative to the ZAMO (at rest: the ZAMO's own).
+TEST(Worldline, AFallMayStartInsideTheErgoregion) {
+  WorldlineSpec spec;
+  spec.spacetime = Kerr(1.0, 0.9);
+  spec.start = {0, 1.9, 90 * degree, 0};
+  spec.duration = 0.2;
+  spec.where = "test";
+  const Worldline w = Worldline::integrate(spec);
+  const Kerr& st = std::get<Kerr>(w.spacetime());
+  const Vec4 u = w.at_proper_time(0.0).frame.e[0];
+  const Vec4 zamo = zamo_velocity(st, st.trace_from_scene(spec.start));
+  for (int m = 0; m < 4; ++m) EXPECT_NEAR(u[m], zamo[m], 1e-12) << m;
 }
 
 TEST(Worldline, RefusesACaptureBeforeItsEnd) {
