@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "core/constants.hpp"
 #include "light/light.hpp"
 
@@ -37,7 +39,10 @@ StarField::StarField(std::vector<PointStar> stars, std::shared_ptr<const Blackbo
     if (!(std::abs(n - 1.0) < 1e-9))
       throw std::invalid_argument("star field: a star's direction is not a unit vector");
     for (const float f : s.flux)
-      if (!(f >= 0.0f) || !std::isfinite(f)) throw std::invalid_argument("star field: a star's flux is negative or not finite");
+      if (!(f >= 0.0f) || !std::isfinite(f))
+        throw std::invalid_argument(fmt::format("star field: star {} of {} has the light ({:g}, {:g}, {:g}): negative or "
+                                                "not finite (a catalogue's readers refuse such a star with its line)",
+                                                k + 1, stars_.size(), s.flux[0], s.flux[1], s.flux[2]));
     luminance_[k] = luminance_of(s.flux);
     faintest_ = k == 0 ? luminance_[k] : std::min(faintest_, static_cast<double>(luminance_[k]));
     if (s.temperature > 0.0) {
