@@ -103,9 +103,14 @@ std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file) {
             fmt::format("{}:{}: column {} is '{}', not a finite number", file.string(), number, header[k], c));
       return v;
     };
-    const int id = ray ? static_cast<int>(number_at(*ray)) : 1;
-    if (curves.empty() || curves.back().ray != id) curves.push_back({id, {}});
+    // A ray number outside int's range would not convert (undefined behaviour).
+    const double id = ray ? number_at(*ray) : 1.0;
+    if (!(id >= 1.0 && id <= 1e9 && id == std::floor(id)))
+      throw std::invalid_argument(fmt::format("{}:{}: column ray is '{}', not a whole number from 1 to 1e9",
+                                              file.string(), number, cells[*ray]));
+    if (curves.empty() || curves.back().ray != static_cast<int>(id)) curves.push_back({static_cast<int>(id), {}, {}});
     curves.back().events.push_back({number_at(x[0]), number_at(x[1]), number_at(x[2]), number_at(x[3])});
+    curves.back().lines.push_back(number);
   }
   if (curves.empty()) throw std::invalid_argument(fmt::format("{}: a header but no rows", file.string()));
   return curves;

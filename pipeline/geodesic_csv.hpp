@@ -25,13 +25,15 @@ void append_geodesic_csv(std::string& out, const Spacetime& st, const GeodesicPa
 struct CsvCurve {
   int ray = 1;  // the ray column's value (1 without one)
   std::vector<std::array<double, 4>> events;
+  std::vector<long> lines;  // each event's line in the file (1-based), for messages
 };
 
 // Reads a CSV written by `lightcone geodesic`: one curve per run of rows
 // with the same ray (the whole file without a ray column).  Throws
 // std::invalid_argument naming the file, and the line where a row is at
-// fault (a missing column, a number that is not one, a row of another
-// length), or the file when it cannot be read or holds no rows.
+// fault (a missing column, a number that is not one or not finite, a ray
+// that is not a whole number from 1, a row of another length), or the file
+// when it cannot be read or holds no rows.
 std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file);
 
 }  // namespace lc
