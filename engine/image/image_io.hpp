@@ -10,6 +10,8 @@
 // names the file and the reason.
 
 #include <filesystem>
+#include <functional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,5 +63,21 @@ std::pair<int, int> image_size(const std::filesystem::path& path);
 // channels beyond the fourth are ignored.  Throws for a missing file, a
 // file no reader accepts, zero size, or a side above max_image_side.
 FrameImage read_image_linear(const std::filesystem::path& path);
+
+// A band of rows of an image, in linear RGB (3 * width floats a row).
+struct ImageBand {
+  int width = 0, height = 0;  // the whole image's
+  int y0 = 0, rows = 0;       // the band: rows y0 .. y0 + rows - 1
+  std::span<const float> rgb;
+};
+
+// Reads an image as read_image_linear does, `band_rows` rows at a time, top
+// to bottom, handing each band to `use` (valid during the call): for
+// callers that reduce the image as it comes (a contact sheet's
+// thumbnails), so that memory is one band, not the image.  A tiled file is
+// one band (its reader gives no scanlines), and so is an interlaced PNG in
+// OpenImageIO's reader.  Throws as read_image_linear, but takes any size
+// up to max_image_side a side.
+void read_image_bands(const std::filesystem::path& path, int band_rows, const std::function<void(const ImageBand&)>& use);
 
 }  // namespace lc
