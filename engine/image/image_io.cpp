@@ -162,16 +162,18 @@ class CheckedFileOutput final : public OIIO::Filesystem::IOProxy {
 
 // Writes interleaved `pixels` of type `type` laid out as `spec` to `path`
 // with OIIO's writer for `format` (a format name, so the extension of
-// `path` does not matter), through CheckedFileOutput.  Removes the
+// `path` does not matter), through CheckedFileOutput; messages name
+// `named` when given (the final name of a temporary `path`), else `path`.  Removes the
 // half-written file if writing or closing fails after it was opened; the
 // reason is the OS's when it had one ("No space left on device").
 void write_with(const char* format, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* pixels,
-                std::string_view what, const fs::path& path) {
+                std::string_view what, const fs::path& path, const fs::path& named) {
+  const fs::path& blame = named.empty() ? path : named;
   std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(format);
-  if (!out) fail(what, path, std::string("no OpenImageIO writer for ") + format + ": " + oiio_reason(OIIO::geterror()));
-  if (!out->supports("ioproxy")) fail(what, path, std::string("the OpenImageIO writer for ") + format + " takes no I/O proxy");
+  if (!out) fail(what, blame, std::string("no OpenImageIO writer for ") + format + ": " + oiio_reason(OIIO::geterror()));
+  if (!out->supports("ioproxy")) fail(what, blame, std::string("the OpenImageIO writer for ") + format + " takes no I/O proxy");
   CheckedFileOutput file(path);
-  if (file.os_error() != 0) fail(what, path, std::strerror(file.os_error()));
+  if (file.os_error() != 0) fail(what, blame, std::strerror(file.os_error()));
   std::string error;
   if (!out->set_ioproxy(&file) || !out->open(path.string(), spec)) error = out->geterror();
   if (error.empty() && !out->write_image(type, pixels)) error = out->geterror();
@@ -183,7 +185,7 @@ void write_with(const char* format, const OIIO::ImageSpec& spec, OIIO::TypeDesc 
   out.reset();
   std::error_code ignored;
   fs::remove(path, ignored);
-  fail(what, path, oiio_reason(first_line(error)));
+  fail(what, blame, oiio_reason(first_line(error)));
 }
 
 // Fails with a clear reason when `path` is not an existing regular file
@@ -247,10 +249,12 @@ double decode(const Transfer& t, double v) {
 }  // namespace
 
 // Validates, names the channels, interleaves RGB and layers, writes FLOAT zip.
-void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata) {
+void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata,
+               const std::filesystem::path& named) {
   constexpr std::string_view what = "cannot write EXR";
-  check_frame(image, true, what, path);
-  check_metadata(metadata, what, path);
+  const fs::path& blame = named.empty() ? path : named;
+  check_frame(image, true, what, blame);
+  check_metadata(metadata, what, blame);
   const int nch = 3 + static_cast<int>(image.layers.size());
   OIIO::ImageSpec spec(image.width, image.height, nch, OIIO::TypeDesc::FLOAT);
   spec.channelnames = {"R", "G", "B"};
@@ -276,18 +280,18 @@ void write_exr(const std::filesystem::path& path, const FrameImage& image, const
     px[2] = image.rgb[3 * p + 2];
     for (std::size_t l = 0; l < image.layers.size(); ++l) px[3 + l] = image.layers[l].values[p];
   }
-  write_with("openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data(), what, path);
+  write_with("openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data(), what, path, named);
 }
 
 // Encodes to 8-bit sRGB codes here (srgb.hpp), so OIIO only stores bytes.
-void write_png(const std::filesystem::path& path, const FrameImage& image) {
+void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named) {
   constexpr std::string_view what = "cannot write PNG";
-  check_frame(image, false, what, path);
+  check_frame(image, false, what, named.empty() ? path : named);
   OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", "sRGB");  // the writer then stores an sRGB chunk
   std::vector<std::uint8_t> bytes(image.rgb.size());
   std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), linear_to_srgb8);
-  write_with("png", spec, OIIO::TypeDesc::UINT8, bytes.data(), what, path);
+  write_with("png", spec, OIIO::TypeDesc::UINT8, bytes.data(), what, path, named);
 }
 
 // Reads every channel as float, then splits R, G, B from the layers by name.

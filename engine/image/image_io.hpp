@@ -7,7 +7,8 @@
 // from the path's extension, because the frame store writes to temporary
 // names ("x.0001.exr.tmp-123") and renames.  Readers detect the format from
 // the file's content.  Every failure is a std::runtime_error whose message
-// names the file and the reason.
+// names the file and the reason.  A writer given `named` (a DurableFile's
+// final path while `path` is its temporary) names that file instead.
 
 #include <filesystem>
 #include <functional>
@@ -32,11 +33,12 @@ using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 // names such as "compression").  No timestamp is added, so equal frames and
 // metadata give byte-identical files.  On a failure after the file was
 // created the partial file is removed.
-void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata = {});
+void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata = {},
+               const std::filesystem::path& named = {});
 
 // Writes the RGB of `image` as an 8-bit sRGB PNG (linear -> sRGB curve,
 // clamp, round to nearest; NaN -> 0), tagged as sRGB.  Layers are ignored.
-void write_png(const std::filesystem::path& path, const FrameImage& image);
+void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named = {});
 
 // Reads an EXR written by write_exr: R, G, B into rgb and every other
 // channel, by name, into layers in the order the file lists them (OpenEXR

@@ -43,9 +43,9 @@ check_refused() {
 # Filled but for 16 KiB: each output starts, then a write comes up short.
 head -c $((240 * 1024)) /dev/zero >"$disk/filler" 2>/dev/null || true
 full="No space left on device"
-expect_error sheet_full "$full" -- "$LIGHTCONE" contact-sheet frames -o "$disk/sheet.png" --width 2048 --columns 1
+expect_error sheet_full "cannot write PNG '$disk/sheet.png': $full" -- "$LIGHTCONE" contact-sheet frames -o "$disk/sheet.png" --width 2048 --columns 1
 check_refused sheet_full "$disk/sheet.png" "$full"
-expect_error starfield_full "$full" -- "$LIGHTCONE" starfield -o "$disk/stars.png" --width 2048
+expect_error starfield_full "cannot write PNG '$disk/stars.png': $full" -- "$LIGHTCONE" starfield -o "$disk/stars.png" --width 2048
 check_refused starfield_full "$disk/stars.png" "$full"
 # 400 rays: the figure's PNG and SVG are far more than 16 KiB.
 python3 - >rays.csv <<'PY'
@@ -66,7 +66,7 @@ check_refused plot_svg_full "$disk/rays.svg" "$full"
 missing="No such file or directory"
 expect_error plot_missing "cannot write nowhere/rays.svg: $missing" -- "$LIGHTCONE" plot rays.csv -o nowhere/rays.svg
 expect_error plot_png_missing "cannot write nowhere/rays.png: $missing" -- "$LIGHTCONE" plot rays.csv -o nowhere/rays.png
-expect_error sheet_missing "$missing" -- "$LIGHTCONE" contact-sheet frames -o nowhere/sheet.png
+expect_error sheet_missing "cannot write PNG 'nowhere/sheet.png': $missing" -- "$LIGHTCONE" contact-sheet frames -o nowhere/sheet.png
 check_refused sheet_missing "$WORK/nowhere/sheet.png" "$missing"
 [ ! -e nowhere ] || fail "a refused output made its directory"
 e2e_end
