@@ -42,7 +42,7 @@ std::vector<Span> spans(int n_src, int n_dst) {
 }  // namespace
 
 AreaResampler::AreaResampler(int src_width, int src_height, int width, int height)
-    : src_width_(src_width), src_height_(src_height), width_(width), height_(height), columns_(spans(src_width, width)),
+    : src_width_(src_width), width_(width), height_(height), columns_(spans(src_width, width)),
       acc_(3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0),
       row_(3 * static_cast<std::size_t>(width)) {
   // Each source row's output rows, from the rows' spans.
@@ -77,6 +77,7 @@ void AreaResampler::add_rows(int y0, int rows, std::span<const float> rgb) {
 }
 
 FrameImage AreaResampler::result() const {
+  // The sums are kept in double; the image is float like every frame.
   FrameImage out;
   out.width = width_;
   out.height = height_;
@@ -86,6 +87,7 @@ FrameImage AreaResampler::result() const {
 }
 
 FrameImage thumbnail(const std::filesystem::path& file, int width, int height, std::pair<int, int> expected) {
+  // The resampler is made at the first band, which says the frame's size.
   std::optional<AreaResampler> resampler;
   read_image_bands(file, thumbnail_band_rows, [&](const ImageBand& band) {
     if (!resampler) {

@@ -46,7 +46,7 @@ class AreaResampler {
   };
 
  private:
-  int src_width_, src_height_, width_, height_;
+  int src_width_, width_, height_;
   std::vector<Span> columns_;
   std::vector<std::vector<std::pair<int, double>>> rows_of_;  // per source row: (output row, weight)
   std::vector<double> acc_, row_;
