@@ -6,6 +6,7 @@
 # message).  The full disk is a small tmpfs, so the test needs root; it is
 # skipped (exit 0, saying so) without it.
 source "$(dirname "$0")/lib.sh"
+umount "$3/disk" 2>/dev/null || true  # a run killed before its clean-up left it mounted
 e2e_begin "$@"
 
 if [ "$(id -u)" -ne 0 ]; then
@@ -14,7 +15,7 @@ if [ "$(id -u)" -ne 0 ]; then
 fi
 disk="$WORK/disk"
 mkdir -p "$disk"
-mount -t tmpfs -o size=256k tmpfs "$disk"
+mount -t tmpfs -o size=256k tmpfs "$disk" || { echo "FAIL: cannot mount a tmpfs at $disk (root, but without CAP_SYS_ADMIN?)" >&2; exit 1; }
 trap 'umount "$disk" 2>/dev/null || true' EXIT
 
 # A few frames to make a sheet of, rendered off the small disk.
