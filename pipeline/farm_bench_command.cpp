@@ -11,6 +11,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "core/cpu_time.hpp"
 #include "farm/content_hash.hpp"
 #include "farm/farm_run.hpp"
 #include "farm/frame_files.hpp"
@@ -144,6 +145,9 @@ int run_farm_bench(const FarmBenchCommand& cmd) {
                                (3 + (rs.layers ? 5 : 0)) * sizeof(float);
   fmt::print("farm-bench: {}x{}{}, {} stripes, {} frames = {} working sets; {}\n", rs.width, rs.height,
              rs.layers ? " with layers" : "", layout.stripes(), cmd.frames, sets, who);
+  // The farm's rates are wall time (it is the handing out that is timed, not
+  // work on a core): the load says how far to trust them.
+  fmt::print("  {}\n", describe_load(farm::usable_cpus()));
   fmt::print("  handed out and assembled: {:.0f} working sets/s, {:.1f} frames/s, {:.1f} MB/s of pixels "
              "({:.1f} KB a set), in {:.2f} s\n",
              sets / wall, cmd.frames / wall, sets * bytes_per_set / wall / 1e6, bytes_per_set / 1e3, wall);

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
+#include "core/line_reader.hpp"
 
 namespace lc {
 
@@ -68,9 +69,22 @@ std::vector<std::string> split_commas(const std::string& line) {
 std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::invalid_argument(fmt::format("{}: cannot be read", file.string()));
-  std::string line;
-  if (!std::getline(in, line)) throw std::invalid_argument(fmt::format("{}: empty (expected a `lightcone geodesic` CSV)", file.string()));
-  const std::vector<std::string> header = split_commas(line);
+  // Lines are read with a bounded length, so a file of one enormous line
+  // costs no more memory than a short one.
+  LineReader reader(in, max_csv_line);
+  auto next_line = [&]() -> std::optional<std::string> {
+    const auto l = reader.next();
+    if (!l) return std::nullopt;
+    if (l->too_long)
+      throw std::invalid_argument(fmt::format("{}:{}: the line is longer than {} bytes: not a `lightcone geodesic` CSV",
+                                              file.string(), l->number, max_csv_line));
+    std::string text(l->text);
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    return text;
+  };
+  const std::optional<std::string> first = next_line();
+  if (!first) throw std::invalid_argument(fmt::format("{}: empty (expected a `lightcone geodesic` CSV)", file.string()));
+  const std::vector<std::string> header = split_commas(*first);
   auto column = [&](const std::string& name) -> std::optional<std::size_t> {
     for (std::size_t k = 0; k < header.size(); ++k)
       if (header[k] == name) return k;
@@ -87,8 +101,10 @@ std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file) {
     x[static_cast<std::size_t>(m)] = *k;
   }
   std::vector<CsvCurve> curves;
-  for (int number = 2; std::getline(in, line); ++number) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+  long number = 1;
+  for (std::optional<std::string> row; (row = next_line());) {
+    ++number;
+    const std::string& line = *row;
     if (line.empty()) continue;
     const std::vector<std::string> cells = split_commas(line);
     if (cells.size() != header.size())
@@ -103,9 +119,14 @@ std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file) {
             fmt::format("{}:{}: column {} is '{}', not a finite number", file.string(), number, header[k], c));
       return v;
     };
-    const int id = ray ? static_cast<int>(number_at(*ray)) : 1;
-    if (curves.empty() || curves.back().ray != id) curves.push_back({id, {}});
+    // A ray number outside int's range would not convert (undefined behaviour).
+    const double id = ray ? number_at(*ray) : 1.0;
+    if (!(id >= 1.0 && id <= 1e9 && id == std::floor(id)))
+      throw std::invalid_argument(fmt::format("{}:{}: column ray is '{}', not a whole number from 1 to 1e9",
+                                              file.string(), number, cells[*ray]));
+    if (curves.empty() || curves.back().ray != static_cast<int>(id)) curves.push_back({static_cast<int>(id), {}, {}});
     curves.back().events.push_back({number_at(x[0]), number_at(x[1]), number_at(x[2]), number_at(x[3])});
+    curves.back().lines.push_back(number);
   }
   if (curves.empty()) throw std::invalid_argument(fmt::format("{}: a header but no rows", file.string()));
   return curves;

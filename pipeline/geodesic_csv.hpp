@@ -6,6 +6,7 @@
 // ray column (1-based) only for bundles.
 
 #include <array>
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -25,13 +26,20 @@ void append_geodesic_csv(std::string& out, const Spacetime& st, const GeodesicPa
 struct CsvCurve {
   int ray = 1;  // the ray column's value (1 without one)
   std::vector<std::array<double, 4>> events;
+  std::vector<long> lines;  // each event's line in the file (1-based), for messages
 };
+
+// The longest CSV line read: a row with the tetrad is 26 numbers of ~24
+// characters.  A longer line is refused without being held whole.
+inline constexpr std::size_t max_csv_line = 16 * 1024;
 
 // Reads a CSV written by `lightcone geodesic`: one curve per run of rows
 // with the same ray (the whole file without a ray column).  Throws
 // std::invalid_argument naming the file, and the line where a row is at
-// fault (a missing column, a number that is not one, a row of another
-// length), or the file when it cannot be read or holds no rows.
+// fault (a line longer than max_csv_line, a missing column, a number that
+// is not one or not finite, a ray
+// that is not a whole number from 1, a row of another length), or the file
+// when it cannot be read or holds no rows.
 std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file);
 
 }  // namespace lc

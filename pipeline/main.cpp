@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cmath>
+#include <optional>
 #include <cstdio>
 #include <exception>
 #include <map>
@@ -91,6 +94,47 @@ std::pair<std::string, std::string> unknown_word(CLI::App& app, int argc, char**
   return {"", command};
 }
 
+// One end of a numeric flag's range: its value and whether it is allowed.
+struct End {
+  double value;
+  bool included = true;
+};
+
+// "from 1e-15 to 0.01 (both included)", "greater than 0", "at least 1".
+std::string range_text(std::optional<End> lo, std::optional<End> hi) {
+  auto low = [&] { return fmt::format("{} {:g}", lo->included ? "at least" : "greater than", lo->value); };
+  auto high = [&] { return fmt::format("{} {:g}", hi->included ? "at most" : "less than", hi->value); };
+  if (lo && hi) {
+    if (lo->included && hi->included) return fmt::format("from {:g} to {:g} (both included)", lo->value, hi->value);
+    return low() + " and " + high();
+  }
+  if (lo) return low();
+  if (hi) return high();
+  return "";
+}
+
+// The check every numeric flag takes (CLI11's Range lets NaN through, since
+// every comparison with it is false, and prints its ends as %f, 1e-15 as
+// 0.000000): the text must be a finite number, within [lo, hi] where given.
+// The flag's own type (int, double) is still converted by CLI11 after it.
+CLI::Validator number(std::optional<End> lo = std::nullopt, std::optional<End> hi = std::nullopt) {
+  const std::string range = range_text(lo, hi);
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        double v = 0.0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        const std::string give = range.empty() ? "" : ": give a number " + range;
+        if (end != text.data() + text.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
+          return fmt::format("'{}' is not a number{}", text, give);
+        if (ec == std::errc::result_out_of_range || !std::isfinite(v))
+          return fmt::format("'{}' is not a finite number{}", text, give);
+        if ((lo && (lo->included ? v < lo->value : v <= lo->value)) || (hi && (hi->included ? v > hi->value : v >= hi->value)))
+          return fmt::format("{} is out of range{}", text, give);
+        return "";
+      },
+      range.empty() ? "a finite number" : "a number " + range);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -117,11 +161,11 @@ int main(int argc, char** argv) {
       ->transform(CLI::CheckedTransformer(std::map<std::string, lc::PlotView>{
           {"xz", lc::PlotView::xz}, {"xy", lc::PlotView::xy}, {"yz", lc::PlotView::yz}}));
   plot_cmd->add_option("--size", plot.size, "Figure size WxH in pixels (default 800x600)");
-  plot_cmd->add_option("--extent", plot.extent, "Half the width shown, in M (default: every point fits)");
+  plot_cmd->add_option("--extent", plot.extent, "Half the width shown, in M (default: every point fits)")->check(number());
   plot_cmd->add_option("--disk", plot.disk,
                        "INNER:OUTER: draw an equatorial disk and end each ray where it first meets it, solid from its top "
                        "side, dashed from its bottom side");
-  plot_cmd->add_option("--horizon", plot.horizon, "Radius of the black disc drawn for the hole (default: none)");
+  plot_cmd->add_option("--horizon", plot.horizon, "Radius of the black disc drawn for the hole (default: none)")->check(number());
 
   lc::RenderCommand render;
   auto* render_cmd = app.add_subcommand(
@@ -130,29 +174,32 @@ int main(int argc, char** argv) {
   render_cmd->add_option("-o,--out", render.out, "Output directory (created if missing)")->required();
   render_cmd->add_option("--frames", render.frames, "Frames A, A:B or A:B:STEP (inclusive, numbered from 0)");
   render_cmd->add_option("--size", render.size, "Image size WxH instead of the shot's");
-  render_cmd->add_option("--scale", render.scale, "Scale the image size by S (previews: 0.25)");
-  render_cmd->add_option("--supersample", render.supersample, "N x N samples per pixel instead of the shot's");
+  render_cmd->add_option("--scale", render.scale, "Scale the image size by S (previews: 0.25)")->check(number());
+  render_cmd->add_option("--supersample", render.supersample, "N x N samples per pixel instead of the shot's")->check(number());
   render_cmd->add_flag("--full-supersample", render.full_supersample,
                        "Trace every sample of the N x N grid (default: one per pixel, the rest only where it differs from a row neighbour's)");
   render_cmd->add_flag("--no-reuse", render.no_reuse,
                        "Trace every sample of every frame (default: frames that differ only in time reuse the rays that cannot change)");
   render_cmd->add_flag("--layers", render.layers, "Add the data layers (" + layer_list() + ") to the EXR: docs/layers.md");
   render_cmd->add_option("--threads", render.threads, "Render threads per process (default: every core; under mpirun the node's share)")
-      ->check(CLI::Range(1, 1024));
-  render_cmd->add_option("--stripes", render.stripes, "Working sets per frame: interleaved row stripes (default 512, at most the image height)");
-  render_cmd->add_option("--preview", render.preview, "Render every K-th stripe of every frame first, as DIR/preview/*.png");
+      ->check(number(End{1}, End{1024}));
+  render_cmd->add_option("--stripes", render.stripes, "Working sets per frame: interleaved row stripes (default 512, at most the image height)")
+      ->check(number());
+  render_cmd->add_option("--preview", render.preview, "Render every K-th stripe of every frame first, as DIR/preview/*.png")
+      ->check(number());
   render_cmd->add_flag("--force", render.force, "Resume even if the shot or settings changed: re-render the frames that differ");
   render_cmd->add_option("--progress", render.progress,
-                         "Seconds between progress lines when stderr is not a terminal (default 5; 0: none)");
+                         "Seconds between progress lines when stderr is not a terminal (default 5; 0: none)")
+      ->check(number());
 
   lc::FarmBenchCommand farm_bench;
   auto* farm_bench_cmd = app.add_subcommand(
       "farm-bench", "Time the render farm alone (working sets that cost nothing; run under mpirun for the master)");
   farm_bench_cmd->add_option("--size", farm_bench.size, "Image size WxH (default 1280x720)");
-  farm_bench_cmd->add_option("--stripes", farm_bench.stripes, "Working sets per frame (default 512)")->check(CLI::Range(1, 16384));
-  farm_bench_cmd->add_option("--frames", farm_bench.frames, "Frames (default 16)")->check(CLI::Range(1, 100000));
+  farm_bench_cmd->add_option("--stripes", farm_bench.stripes, "Working sets per frame (default 512)")->check(number(End{1}, End{16384}));
+  farm_bench_cmd->add_option("--frames", farm_bench.frames, "Frames (default 16)")->check(number(End{1}, End{100000}));
   farm_bench_cmd->add_flag("--layers", farm_bench.layers, "Send the data layers too");
-  farm_bench_cmd->add_option("--threads", farm_bench.threads, "Worker threads per process")->check(CLI::Range(1, 1024));
+  farm_bench_cmd->add_option("--threads", farm_bench.threads, "Worker threads per process")->check(number(End{1}, End{1024}));
 
   lc::InspectCommand inspect;
   auto* inspect_cmd = app.add_subcommand("inspect", "Print the evaluated scene of each frame as JSON, without rendering");
@@ -171,17 +218,17 @@ int main(int argc, char** argv) {
 
   auto* trace_cmd = app.add_subcommand("trace", "Follow the ray through one pixel: its path as CSV and what it hit");
   trace_cmd->add_option("shot", trace.shot, "Shot script")->required()->check(CLI::ExistingFile);
-  trace_cmd->add_option("--frame", trace.frame, "Frame number (from 0)")->required();
+  trace_cmd->add_option("--frame", trace.frame, "Frame number (from 0)")->required()->check(number());
   trace_cmd->add_option("--pixel", trace.pixel, "Pixel I,J (column from the left, row from the top)")->required();
   trace_cmd->add_option("-o,--output", trace.output, "CSV file to write (default: standard output)");
   trace_cmd->add_option("--size", trace.size, "Image size WxH instead of the shot's");
-  trace_cmd->add_option("--scale", trace.scale, "Scale the image size by S");
+  trace_cmd->add_option("--scale", trace.scale, "Scale the image size by S")->check(number());
 
   lc::StarfieldCommand starfield;
   auto* starfield_cmd = app.add_subcommand("starfield", "Write the procedural star field as an equirectangular PNG");
   starfield_cmd->add_option("-o,--output", starfield.output, "PNG file to write")->required();
-  starfield_cmd->add_option("--width", starfield.width, "Width in pixels (height is half)");
-  starfield_cmd->add_option("--seed", starfield.seed, "Catalogue seed");
+  starfield_cmd->add_option("--width", starfield.width, "Width in pixels (height is half)")->check(number());
+  starfield_cmd->add_option("--seed", starfield.seed, "Catalogue seed")->check(number());
 
   lc::EncodeCommand encode;
   auto* encode_cmd = app.add_subcommand(
@@ -189,7 +236,8 @@ int main(int argc, char** argv) {
   encode_cmd->add_option("inputs", encode.inputs, "Frame directory; with --concat, the videos to join in order");
   encode_cmd->add_option("-o,--output", encode.output, "Video file to write (.mp4, .mov, .mkv, .webm)")->required();
   encode_cmd->add_option("--fps", encode.fps, "Frames per second: 30, 29.97 or a fraction such as 30000/1001 (default: the shot's if recorded, else 30)");
-  encode_cmd->add_option("--crf", encode.crf, "Constant quality: lower is better (default h264 18, hevc 22, vp9 24, av1 30)");
+  encode_cmd->add_option("--crf", encode.crf, "Constant quality: lower is better (default h264 18, hevc 22, vp9 24, av1 30)")
+      ->check(number());
   encode_cmd->add_option("--codec", encode.codec, "h264 (default), hevc, vp9, av1 or prores");
   encode_cmd->add_option("--preset", encode.preset,
                          "Speed/quality: x264/x265 preset (default medium), vp9/av1 speed number, prores profile");
@@ -199,15 +247,15 @@ int main(int argc, char** argv) {
   encode_cmd->add_flag("--concat", encode.concat, "Join the videos given, without re-encoding");
   encode_cmd->add_option("--title", encode.title, "Make a title card: one line of text (repeat for more lines)");
   encode_cmd->add_option("--size", encode.size, "Title card size WxH");
-  encode_cmd->add_option("--seconds", encode.seconds, "Title card length in seconds (default 3)");
+  encode_cmd->add_option("--seconds", encode.seconds, "Title card length in seconds (default 3)")->check(number());
 
   lc::ContactSheetCommand sheet;
   auto* sheet_cmd = app.add_subcommand("contact-sheet", "Write a PNG grid of frames picked evenly across a shot");
   sheet_cmd->add_option("dir", sheet.dir, "Frame directory")->required();
   sheet_cmd->add_option("-o,--output", sheet.output, "PNG file to write")->required();
-  sheet_cmd->add_option("--columns", sheet.columns, "Frames per row (default 4)");
-  sheet_cmd->add_option("--width", sheet.width, "Sheet width in pixels (default 1280)");
-  sheet_cmd->add_option("--count", sheet.count, "Frames shown at most (default 16)");
+  sheet_cmd->add_option("--columns", sheet.columns, "Frames per row (default 4)")->check(number());
+  sheet_cmd->add_option("--width", sheet.width, "Sheet width in pixels (default 1280)")->check(number());
+  sheet_cmd->add_option("--count", sheet.count, "Frames shown at most (default 16)")->check(number());
   sheet_cmd->add_option("--shot", sheet.shot, "The shot when DIR holds several");
   sheet_cmd->add_flag("--allow-stale", sheet.allow_stale,
                       "Show frames rendered from another version of the shot or other settings than the latest render");
@@ -218,17 +266,18 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--shot", bench.shots, "Benchmark shot (repeatable; default: shots/bench/*.lua)")
       ->check(CLI::ExistingFile);
   bench_cmd->add_option("--threads", bench.threads, "Threads for the parallel run (default: every core)")
-      ->check(CLI::Range(1, 1024));
-  bench_cmd->add_option("--repeats", bench.repeats, "Best of this many runs")->check(CLI::Range(1, 100));
+      ->check(number(End{1}, End{1024}));
+  bench_cmd->add_option("--repeats", bench.repeats, "Best of this many runs")->check(number(End{1}, End{100}));
   bench_cmd->add_option("--seconds", bench.seconds,
-                        "Each timed run traces the image again until this many seconds have passed (default: once)");
+                        "Each timed run traces the image again until this many seconds have passed (default: once)")
+      ->check(number(End{0}, End{3600}));
   bench_cmd->add_option("--tolerance", bench.tolerance, "Integrator tolerance to measure (default: production)")
-      ->check(CLI::Range(1e-15, 1e-2));
+      ->check(number(End{1e-15}, End{1e-2}));
   bench_cmd->add_option("--kerr-chart", bench.kerr_chart,
                         "How Kerr rays are integrated: bl-mino (default; Boyer-Lindquist, Mino time) or kerr-schild");
   bench_cmd->add_option("--reference-tolerance", bench.reference_tolerance,
                         "Integrator tolerance of the reference render")
-      ->check(CLI::Range(1e-15, 1e-6));
+      ->check(number(End{1e-15}, End{1e-6}));
 
   lc::ShowcaseCommand showcase;
   auto* showcase_cmd = app.add_subcommand(
@@ -236,16 +285,17 @@ int main(int argc, char** argv) {
   showcase_cmd->add_option("--quality", showcase.quality,
                            "preview (the default: 256x144, 3 frames per second of story; minutes) or production (the paper's settings)");
   showcase_cmd->add_option("--size", showcase.size, "Image size WxH instead of the quality's (preview 256x144, production the shots')");
-  showcase_cmd->add_option("--rate", showcase.rate, "Preview only: frames per second of story (default 3; the video plays at this rate)");
+  showcase_cmd->add_option("--rate", showcase.rate, "Preview only: frames per second of story (default 3; the video plays at this rate)")
+      ->check(number());
   showcase_cmd->add_option("-o,--out", showcase.out, "Output directory (default out/showcase/<quality>)");
   showcase_cmd->add_option("--shots", showcase.shots, "Folder holding the three shot scripts (default: the project's shots/)")
       ->check(CLI::ExistingDirectory);
   showcase_cmd->add_option("--threads", showcase.threads, "Render threads per process (as render --threads)")
-      ->check(CLI::Range(1, 1024));
+      ->check(number(End{1}, End{1024}));
   showcase_cmd->add_flag("--force", showcase.force, "Re-render frames made from other settings or inputs (as render --force)");
   showcase_cmd->add_flag("--thermal", showcase.thermal,
                          "Add a fourth sequence: the first in light as physics says (kerr_accrDisk_thermal; docs/light.md)");
-  showcase_cmd->add_option("--progress", showcase.progress, "Seconds between plain progress lines (0: none)");
+  showcase_cmd->add_option("--progress", showcase.progress, "Seconds between plain progress lines (0: none)")->check(number());
 
   // Usage errors in the form of every other error, with a suggestion for a
   // mistyped command or flag and where to find the right ones.

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -16,6 +18,11 @@
 
 namespace lc {
 namespace {
+
+// Every point drawn, the disk and the extent must be within this many M of
+// the origin: far beyond any ray a spec traces (they escape at ~1000 M),
+// small enough that the figure's scale and Cairo's coordinates hold.
+constexpr double max_plot_coordinate = 1e12;
 
 // An event's (pseudo-)Cartesian position: Boyer–Lindquist (r, theta, phi)
 // taken as spherical coordinates (the paper's Figure 1), or (x, y, z).
@@ -42,9 +49,11 @@ DiskRange parse_disk(const std::string& text) {
     return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
   };
   if (colon == std::string::npos || !number(std::string_view(text).substr(0, colon), d.inner) ||
-      !number(std::string_view(text).substr(colon + 1), d.outer) || !(d.inner >= 0.0) || !(d.outer > d.inner))
-    throw std::invalid_argument(
-        fmt::format("--disk {}: expected INNER:OUTER, two radii with 0 <= INNER < OUTER (e.g. 6:16)", text));
+      !number(std::string_view(text).substr(colon + 1), d.outer) || !(d.inner >= 0.0) || !(d.outer > d.inner) ||
+      d.outer > max_plot_coordinate)
+    throw std::invalid_argument(fmt::format(
+        "--disk {}: expected INNER:OUTER, two radii with 0 <= INNER < OUTER <= {:g} (e.g. 6:16)", text,
+        max_plot_coordinate));
   return d;
 }
 
@@ -172,6 +181,43 @@ void check(cairo_status_t status, const std::filesystem::path& out) {
                                          cairo_status_to_string(status)));
 }
 
+// Cairo writes the figure through this, into the DurableFile: a write
+// error is then the file's own ("cannot write DIR/x.png: No space left on
+// device"), where Cairo's file writers say only "error while writing to
+// output stream".  The exception is kept, not thrown through Cairo's C.
+struct FigureSink {
+  DurableFile& file;
+  std::exception_ptr error;
+  static cairo_status_t write(void* self, const unsigned char* data, unsigned int length) {
+    auto* sink = static_cast<FigureSink*>(self);
+    if (sink->error) return CAIRO_STATUS_WRITE_ERROR;
+    try {
+      sink->file.write(std::string_view(reinterpret_cast<const char*>(data), length));
+      return CAIRO_STATUS_SUCCESS;
+    } catch (...) {
+      sink->error = std::current_exception();
+      return CAIRO_STATUS_WRITE_ERROR;
+    }
+  }
+};
+
+// Throws naming the CSV's line of the first point whose (pseudo-)Cartesian
+// coordinates are beyond max_plot_coordinate (e.g. r = 1e308: sin and cos
+// keep it finite, but the figure's width overflows to infinity).
+void check_coordinates(const std::vector<CsvCurve>& curves, PlotCoordinates coordinates, const std::filesystem::path& csv) {
+  for (const CsvCurve& c : curves)
+    for (std::size_t i = 0; i < c.events.size(); ++i) {
+      const auto p = cartesian(c.events[i], coordinates);
+      if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) &&
+          std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}) <= max_plot_coordinate)
+        continue;
+      throw std::invalid_argument(fmt::format(
+          "{}:{}: the point ({:g}, {:g}, {:g}) M is too far out: plot draws points within {:g} M of the origin "
+          "(cut the CSV's rows beyond it)",
+          csv.string(), i < c.lines.size() ? c.lines[i] : 0L, p[0], p[1], p[2], max_plot_coordinate));
+    }
+}
+
 }  // namespace
 
 std::array<double, 2> FigureFrame::to_pixel(const std::array<double, 2>& p) const {
@@ -226,13 +272,16 @@ int run_plot(const PlotCommand& cmd) {
   if (width < 200 || height < 150 || width > max_frame_side || height > max_frame_side)
     throw std::invalid_argument(fmt::format("--size {}: a figure is 200x150 to {}x{} pixels", cmd.size, max_frame_side,
                                             max_frame_side));
-  if (cmd.extent && !(*cmd.extent > 0.0 && std::isfinite(*cmd.extent)))
-    throw std::invalid_argument(fmt::format("--extent {}: must be a positive number of M", *cmd.extent));
-  if (!(cmd.horizon >= 0.0 && std::isfinite(cmd.horizon)))
-    throw std::invalid_argument(fmt::format("--horizon {}: must be a radius >= 0", cmd.horizon));
+  if (cmd.extent && !(*cmd.extent > 0.0 && *cmd.extent <= max_plot_coordinate))
+    throw std::invalid_argument(
+        fmt::format("--extent {:g}: must be a positive number of M, at most {:g}", *cmd.extent, max_plot_coordinate));
+  if (!(cmd.horizon >= 0.0 && cmd.horizon <= max_plot_coordinate))
+    throw std::invalid_argument(
+        fmt::format("--horizon {:g}: must be a radius >= 0, at most {:g} M", cmd.horizon, max_plot_coordinate));
   const std::optional<DiskRange> disk = cmd.disk ? std::optional(parse_disk(*cmd.disk)) : std::nullopt;
 
   const std::vector<CsvCurve> curves = read_geodesic_csv(cmd.csv);
+  check_coordinates(curves, cmd.coordinates, cmd.csv);
   const std::vector<FigureLine> lines = figure_lines(curves, cmd.coordinates, cmd.view, disk);
   double extent = 0.0;
   if (cmd.extent) {
@@ -246,8 +295,9 @@ int run_plot(const PlotCommand& cmd) {
   const FigureFrame frame = figure_frame(width, height, extent);
 
   DurableFile file(cmd.output);
+  FigureSink sink{file, nullptr};
   cairo_surface_t* surface = ext == ".svg"
-                                 ? cairo_svg_surface_create(file.temp_path().c_str(), width, height)
+                                 ? cairo_svg_surface_create_for_stream(&FigureSink::write, &sink, width, height)
                                  : cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
   // Sizes in pixels, as asked for (Cairo's SVG default is points).
   if (ext == ".svg") cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
@@ -257,11 +307,12 @@ int run_plot(const PlotCommand& cmd) {
   cairo_destroy(cr);
   cairo_status_t written = drawn;
   if (drawn == CAIRO_STATUS_SUCCESS) {
-    if (ext == ".png") written = cairo_surface_write_to_png(surface, file.temp_path().c_str());
+    if (ext == ".png") written = cairo_surface_write_to_png_stream(surface, &FigureSink::write, &sink);
     cairo_surface_finish(surface);
     if (written == CAIRO_STATUS_SUCCESS) written = cairo_surface_status(surface);
   }
   cairo_surface_destroy(surface);
+  if (sink.error) std::rethrow_exception(sink.error);
   check(written, cmd.output);
   file.commit();
   int ended = 0, top = 0, bottom = 0;

@@ -5,9 +5,11 @@
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <mutex>
 #include <thread>
 #include <vector>
 
+#include "core/cpu_time.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
 #include "script/shot.hpp"
@@ -17,11 +19,16 @@ namespace lc {
 namespace {
 
 // Pixel-centre samples of the whole image, rows handed out to `threads`.
-std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int threads, long* steps) {
+// Adds the threads' CPU time, summed, to *cpu_seconds when given.
+std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int threads, long* steps,
+                                 double* cpu_seconds = nullptr) {
   std::vector<RaySample> out(static_cast<std::size_t>(width) * height);
   std::atomic<int> next{0};
   std::atomic<long> total{0};
+  std::mutex cpu_mutex;
+  double cpu = 0.0;
   auto worker = [&] {
+    const double cpu0 = thread_cpu_seconds();
     long local = 0;
     std::vector<Vec3> dirs(static_cast<std::size_t>(width));
     for (int j; (j = next.fetch_add(1)) < height;)
@@ -36,22 +43,30 @@ std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int 
           },
           scene);
     total += local;
+    const std::lock_guard lock(cpu_mutex);
+    cpu += thread_cpu_seconds() - cpu0;
   };
   std::vector<std::thread> pool;
   for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
   if (steps) *steps = total;
+  if (cpu_seconds) *cpu_seconds += cpu;
   return out;
 }
 
-// Seconds per call of f, over as many calls as fill `at_least` seconds.
-double seconds_of(const std::function<void()>& f, double at_least) {
+// Wall and CPU seconds per call of f(double* cpu), over as many calls as
+// fill `at_least` seconds of wall time; f adds its threads' CPU time.
+struct CallTime {
+  double wall = 0.0, cpu = 0.0;
+};
+CallTime time_of(const std::function<void(double*)>& f, double at_least) {
   const auto t0 = std::chrono::steady_clock::now();
+  double cpu = 0.0;
   for (int calls = 1;; ++calls) {
-    f();
+    f(&cpu);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (s >= at_least) return s / calls;
+    if (s >= at_least) return {s / calls, cpu / calls};
   }
 }
 
@@ -76,13 +91,21 @@ ShotBenchResult bench_shot(const std::filesystem::path& file, int threads, Bench
   r.reference_tolerance = reference_tolerance;
   const Scene scene = build_scene(fs, file, 0, info.width, info.height, resources, defaults);
   std::vector<RaySample> test;
-  r.seconds_one = r.seconds_all = 1e300;
+  r.seconds_one = r.seconds_all = r.cpu_one = r.cpu_all = 1e300;
+  // The best of the repeats, each figure on its own: the least CPU time is
+  // the run least disturbed (cache, frequency), the least wall time the one
+  // that waited least for a core.
   for (int k = 0; k < timing.repeats; ++k) {
-    r.seconds_one = std::min(
-        r.seconds_one, seconds_of([&] { test = trace_all(scene, r.width, r.height, 1, &r.steps); }, timing.seconds));
-    if (threads > 1)
-      r.seconds_all = std::min(
-          r.seconds_all, seconds_of([&] { trace_all(scene, r.width, r.height, threads, nullptr); }, timing.seconds));
+    const CallTime one =
+        time_of([&](double* cpu) { test = trace_all(scene, r.width, r.height, 1, &r.steps, cpu); }, timing.seconds);
+    r.seconds_one = std::min(r.seconds_one, one.wall);
+    r.cpu_one = std::min(r.cpu_one, one.cpu);
+    if (threads > 1) {
+      const CallTime all =
+          time_of([&](double* cpu) { trace_all(scene, r.width, r.height, threads, nullptr, cpu); }, timing.seconds);
+      r.seconds_all = std::min(r.seconds_all, all.wall);
+      r.cpu_all = std::min(r.cpu_all, all.cpu);
+    }
   }
   RayOptions tight;
   tight.control.rtol = tight.control.atol = reference_tolerance;

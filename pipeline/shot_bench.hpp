@@ -1,6 +1,7 @@
 #pragma once
-// One benchmark shot measured: rays per core-second with one thread and
-// with all, and accuracy against lightcone's own tight-tolerance render of
+// One benchmark shot measured: rays per core-second (the threads' CPU time,
+// so a loaded machine does not halve it) with one thread and with all, rays
+// per second of wall time beside it, and accuracy against lightcone's own tight-tolerance render of
 // the same frame (docs/performance.md).
 
 #include <filesystem>
@@ -15,7 +16,8 @@ struct ShotBenchResult {
   std::string name;
   int width = 0, height = 0;
   long rays = 0, steps = 0;
-  double seconds_one = 0.0, seconds_all = 0.0;  // best of the repeats
+  double seconds_one = 0.0, seconds_all = 0.0;  // wall time of one image, best of the repeats
+  double cpu_one = 0.0, cpu_all = 0.0;          // the threads' CPU time for one image, summed, best of the repeats
   int threads = 1;
   double tolerance = 0.0, reference_tolerance = 0.0;
   AccuracyReport accuracy;

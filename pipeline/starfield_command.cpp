@@ -17,7 +17,8 @@ int run_starfield(const StarfieldCommand& cmd) {
   if (cmd.width < 64 || cmd.width > 16384 || cmd.width % 2 != 0)
     throw std::invalid_argument(fmt::format("--width {}: must be even, between 64 and 16384", cmd.width));
   DurableFile out(cmd.output);
-  make_starfield(out.temp_path(), cmd.width, cmd.width / 2, cmd.seed);
+  // Written by the image layer, whose errors then name the final file.
+  write_png(out.temp_path(), render_starfield(cmd.width, cmd.width / 2, cmd.seed), out.final_path());
   out.commit();
   fmt::print(stderr, "starfield: {}x{} (seed {}) -> {}\n", cmd.width, cmd.width / 2, cmd.seed, cmd.output.string());
   return 0;

@@ -3,13 +3,20 @@
 // STACK.md), so error messages are built with plain std::string.
 #include "image/image_io.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <set>
 #include <stdexcept>
@@ -34,6 +41,14 @@ std::string oiio_reason(std::string msg) {
   while (!msg.empty() && std::isspace(static_cast<unsigned char>(msg.back()))) msg.pop_back();
   for (std::size_t at = msg.find('\n'); at != std::string::npos; at = msg.find('\n', at)) msg.replace(at, 1, "; ");
   return msg.empty() ? std::string("unknown OpenImageIO error") : msg;
+}
+
+// The first of OIIO's stacked messages, one a line (a writer that fails on
+// every block says so thousands of times).
+std::string first_line(std::string msg) {
+  while (!msg.empty() && std::isspace(static_cast<unsigned char>(msg.back()))) msg.pop_back();
+  const std::size_t at = msg.find('\n');
+  return at == std::string::npos ? msg : msg.substr(0, at) + " (and more)";
 }
 
 std::string lowercase(std::string s) {
@@ -87,23 +102,90 @@ void check_metadata(const ImageMetadata& metadata, std::string_view what, const 
   }
 }
 
+// OIIO's writers go through this proxy, not OIIO's own file: its file
+// proxy notes a short write (a full disk) in the writer's error text but
+// write_image() and close() still report success, so a truncated PNG was
+// taken as written (issue #25).  Here every write is checked, the first
+// OS error is kept with its errno, and close() is checked too (NFS reports
+// write errors there).
+class CheckedFileOutput final : public OIIO::Filesystem::IOProxy {
+ public:
+  explicit CheckedFileOutput(const fs::path& path) : IOProxy(path.string(), Write) {
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd_ < 0) {
+      errno_ = errno;
+      m_mode = Closed;
+    }
+  }
+  ~CheckedFileOutput() override { close(); }
+  const char* proxytype() const override { return "lightcone-checked-file"; }
+  void close() override {
+    if (fd_ < 0) return;
+    if (::close(fd_) != 0 && errno_ == 0) errno_ = errno;
+    fd_ = -1;
+    m_mode = Closed;
+  }
+  bool seek(int64_t offset) override {
+    m_pos = offset;
+    return true;
+  }
+  size_t write(const void* buf, size_t size) override {
+    const size_t n = pwrite(buf, size, m_pos);
+    m_pos += static_cast<int64_t>(n);
+    return n;
+  }
+  size_t pwrite(const void* buf, size_t size, int64_t offset) override {
+    // Loops because write() may take fewer bytes than asked.
+    const char* p = static_cast<const char*>(buf);
+    size_t done = 0;
+    while (fd_ >= 0 && done < size) {
+      const ssize_t n = ::pwrite(fd_, p + done, size - done, static_cast<off_t>(offset) + static_cast<off_t>(done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        if (errno_ == 0) errno_ = n < 0 ? errno : EIO;
+        break;
+      }
+      done += static_cast<size_t>(n);
+    }
+    end_ = std::max(end_, offset + static_cast<int64_t>(done));
+    return done;
+  }
+  size_t size() const override { return static_cast<size_t>(end_); }
+  // The first OS error (0: none).
+  int os_error() const { return errno_; }
+
+ private:
+  int fd_ = -1;
+  int errno_ = 0;
+  int64_t end_ = 0;
+};
+
 // Writes interleaved `pixels` of type `type` laid out as `spec` to `path`
 // with OIIO's writer for `format` (a format name, so the extension of
-// `path` does not matter).  Removes the half-written file if writing or
-// closing fails after it was opened.
+// `path` does not matter), through CheckedFileOutput.  Messages name
+// `named` when given (the final name of a temporary `path`), else `path`.
+// Removes the half-written file if writing or closing fails after it was
+// opened; the reason is the OS's when it had one ("No space left on device").
 void write_with(const char* format, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* pixels,
-                std::string_view what, const fs::path& path) {
+                std::string_view what, const fs::path& path, const fs::path& named) {
+  const fs::path& blame = named.empty() ? path : named;
   std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(format);
-  if (!out) fail(what, path, std::string("no OpenImageIO writer for ") + format + ": " + oiio_reason(OIIO::geterror()));
-  if (!out->open(path.string(), spec)) fail(what, path, oiio_reason(out->geterror()));
+  if (!out) fail(what, blame, std::string("no OpenImageIO writer for ") + format + ": " + oiio_reason(OIIO::geterror()));
+  if (!out->supports("ioproxy")) fail(what, blame, std::string("the OpenImageIO writer for ") + format + " takes no I/O proxy");
+  CheckedFileOutput file(path);
+  if (file.os_error() != 0) fail(what, blame, std::strerror(file.os_error()));
   std::string error;
-  if (!out->write_image(type, pixels)) error = out->geterror();
+  if (!out->set_ioproxy(&file) || !out->open(path.string(), spec)) error = out->geterror();
+  if (error.empty() && !out->write_image(type, pixels)) error = out->geterror();
   if (!out->close() && error.empty()) error = out->geterror();
+  if (error.empty() && out->has_error()) error = out->geterror();
+  file.close();
+  if (file.os_error() != 0) error = std::strerror(file.os_error());  // the cause, rather than OIIO's account of it
   if (error.empty()) return;
   out.reset();
   std::error_code ignored;
   fs::remove(path, ignored);
-  fail(what, path, oiio_reason(error));
+  fail(what, blame, oiio_reason(first_line(error)));
 }
 
 // Fails with a clear reason when `path` is not an existing regular file
@@ -167,10 +249,12 @@ double decode(const Transfer& t, double v) {
 }  // namespace
 
 // Validates, names the channels, interleaves RGB and layers, writes FLOAT zip.
-void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata) {
+void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata,
+               const std::filesystem::path& named) {
   constexpr std::string_view what = "cannot write EXR";
-  check_frame(image, true, what, path);
-  check_metadata(metadata, what, path);
+  const fs::path& blame = named.empty() ? path : named;
+  check_frame(image, true, what, blame);
+  check_metadata(metadata, what, blame);
   const int nch = 3 + static_cast<int>(image.layers.size());
   OIIO::ImageSpec spec(image.width, image.height, nch, OIIO::TypeDesc::FLOAT);
   spec.channelnames = {"R", "G", "B"};
@@ -196,18 +280,18 @@ void write_exr(const std::filesystem::path& path, const FrameImage& image, const
     px[2] = image.rgb[3 * p + 2];
     for (std::size_t l = 0; l < image.layers.size(); ++l) px[3 + l] = image.layers[l].values[p];
   }
-  write_with("openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data(), what, path);
+  write_with("openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data(), what, path, named);
 }
 
 // Encodes to 8-bit sRGB codes here (srgb.hpp), so OIIO only stores bytes.
-void write_png(const std::filesystem::path& path, const FrameImage& image) {
+void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named) {
   constexpr std::string_view what = "cannot write PNG";
-  check_frame(image, false, what, path);
+  check_frame(image, false, what, named.empty() ? path : named);
   OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", "sRGB");  // the writer then stores an sRGB chunk
   std::vector<std::uint8_t> bytes(image.rgb.size());
   std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), linear_to_srgb8);
-  write_with("png", spec, OIIO::TypeDesc::UINT8, bytes.data(), what, path);
+  write_with("png", spec, OIIO::TypeDesc::UINT8, bytes.data(), what, path, named);
 }
 
 // Reads every channel as float, then splits R, G, B from the layers by name.
@@ -274,9 +358,29 @@ FrameImage read_image_linear(const std::filesystem::path& path) {
   return detail::read_linear_rgb(path, "cannot read image");
 }
 
-// Opens by content (any extension), checks the size before allocating,
-// reads at most four channels and converts them to linear RGB.
-FrameImage detail::read_linear_rgb(const std::filesystem::path& path, const char* what, long max_pixels) {
+namespace {
+
+// How a file's stored channels become linear RGB (the rules at
+// read_image_linear), found once from its header.
+struct LinearDecoder {
+  int width = 0, height = 0;
+  int nread = 0;  // channels read: at most four
+  int alpha = -1;
+  std::array<int, 3> colour{};
+  bool apply_alpha = false;
+  Transfer transfer;
+  bool eight_bit = false;
+  std::array<float, 256> table{};  // 8-bit code -> linear
+
+  // Reads rows [y0, y1) of `in` and writes their linear RGB to `rgb`
+  // (3 * width * (y1 - y0) floats).  The whole image is read with one
+  // read_image (any file, tiled ones too), a band of it with read_scanlines.
+  void read_rows(OIIO::ImageInput& in, int y0, int y1, float* rgb, const char* what, const fs::path& path) const;
+};
+
+// Opens by content (any extension), checks the size, and works out the
+// channels and their decoding.
+std::pair<std::unique_ptr<OIIO::ImageInput>, LinearDecoder> open_linear(const fs::path& path, const char* what) {
   check_readable(path, what);
   // Ask for alpha as stored so it can be applied in linear light below
   // (OIIO would otherwise premultiply the sRGB-encoded values).
@@ -284,64 +388,94 @@ FrameImage detail::read_linear_rgb(const std::filesystem::path& path, const char
   config.attribute("oiio:UnassociatedAlpha", 1);
   std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string(), &config);
   if (!in) fail(what, path, "not an image OpenImageIO can read (" + oiio_reason(OIIO::geterror()) + ")");
-  const OIIO::ImageSpec spec = in->spec();
+  const OIIO::ImageSpec& spec = in->spec();
   check_size(spec.width, spec.height, what, path);
-  if (long{spec.width} * spec.height > max_pixels)
-    fail(what, path,
-         "image too large (" + size_text(spec.width, spec.height) + "; at most " + std::to_string(max_pixels) +
-             " pixels, e.g. " + size_text(static_cast<long>(std::sqrt(2.0 * max_pixels)),
-                                          static_cast<long>(std::sqrt(0.5 * max_pixels))) +
-             ": it is held as float RGB, 12 bytes a pixel)");
   if (spec.depth != 1) fail(what, path, "a volume image, not a 2D image");
   if (spec.nchannels < 1) fail(what, path, "image has no channels");
 
+  LinearDecoder d;
+  d.width = spec.width;
+  d.height = spec.height;
   // Colour channels: the first three that are not alpha (one means grey).
-  const int nread = std::min(spec.nchannels, 4);
-  const int alpha = spec.alpha_channel >= 0 && spec.alpha_channel < nread ? spec.alpha_channel : -1;
-  std::array<int, 3> colour{};
+  d.nread = std::min(spec.nchannels, 4);
+  d.alpha = spec.alpha_channel >= 0 && spec.alpha_channel < d.nread ? spec.alpha_channel : -1;
   int ncolour = 0;
-  for (int c = 0; c < nread && ncolour < 3; ++c)
-    if (c != alpha) colour[static_cast<std::size_t>(ncolour++)] = c;
+  for (int c = 0; c < d.nread && ncolour < 3; ++c)
+    if (c != d.alpha) d.colour[static_cast<std::size_t>(ncolour++)] = c;
   if (ncolour == 0) fail(what, path, "image has only an alpha channel");
-  if (ncolour < 3) colour = {colour[0], colour[0], colour[0]};
-  const bool apply_alpha = alpha >= 0 && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
-
-  const Transfer transfer = transfer_of(spec);
-  const std::size_t n = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
-  std::vector<float> values(n * static_cast<std::size_t>(nread));
+  if (ncolour < 3) d.colour = {d.colour[0], d.colour[0], d.colour[0]};
+  d.apply_alpha = d.alpha >= 0 && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
+  d.transfer = transfer_of(spec);
   // 8-bit data goes through a 256-entry table: a large sky texture would
   // otherwise cost one pow() per value at load.
-  const bool eight_bit = spec.format == OIIO::TypeDesc::UINT8 && spec.channelformats.empty();
+  d.eight_bit = spec.format == OIIO::TypeDesc::UINT8 && spec.channelformats.empty();
+  for (int k = 0; k < 256; ++k) d.table[static_cast<std::size_t>(k)] = static_cast<float>(decode(d.transfer, k / 255.0));
+  return {std::move(in), d};
+}
+
+void LinearDecoder::read_rows(OIIO::ImageInput& in, int y0, int y1, float* rgb, const char* what,
+                              const fs::path& path) const {
+  const bool whole = y0 == 0 && y1 == height;
+  auto read = [&](OIIO::TypeDesc type, void* data) {
+    const bool ok = whole ? in.read_image(0, 0, 0, nread, type, data)
+                          : in.read_scanlines(0, 0, y0, y1, 0, 0, nread, type, data);
+    if (!ok) fail(what, path, oiio_reason(in.geterror()));
+  };
+  const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(y1 - y0);
+  std::vector<float> values(n * static_cast<std::size_t>(nread));
   if (eight_bit) {
     std::vector<std::uint8_t> bytes(values.size());
-    if (!in->read_image(0, 0, 0, nread, OIIO::TypeDesc::UINT8, bytes.data()))
-      fail(what, path, oiio_reason(in->geterror()));
-    std::array<float, 256> table{};
-    for (int k = 0; k < 256; ++k) table[static_cast<std::size_t>(k)] = static_cast<float>(decode(transfer, k / 255.0));
+    read(OIIO::TypeDesc::UINT8, bytes.data());
     for (std::size_t i = 0; i < bytes.size(); ++i) values[i] = table[bytes[i]];
     if (alpha >= 0)  // alpha is coverage, never colour-decoded
       for (std::size_t p = 0; p < n; ++p)
         values[p * static_cast<std::size_t>(nread) + static_cast<std::size_t>(alpha)] =
             bytes[p * static_cast<std::size_t>(nread) + static_cast<std::size_t>(alpha)] / 255.0f;
   } else {
-    if (!in->read_image(0, 0, 0, nread, OIIO::TypeDesc::FLOAT, values.data()))
-      fail(what, path, oiio_reason(in->geterror()));
+    read(OIIO::TypeDesc::FLOAT, values.data());
     if (transfer.kind != Transfer::linear)
       for (std::size_t i = 0; i < values.size(); ++i)
         if (static_cast<int>(i % static_cast<std::size_t>(nread)) != alpha)
           values[i] = static_cast<float>(decode(transfer, values[i]));
   }
-
-  FrameImage image;
-  image.width = spec.width;
-  image.height = spec.height;
-  image.rgb.resize(3 * n);
   for (std::size_t p = 0; p < n; ++p) {
     const float* px = &values[p * static_cast<std::size_t>(nread)];
     const float a = apply_alpha ? px[alpha] : 1.0f;
-    for (std::size_t k = 0; k < 3; ++k) image.rgb[3 * p + k] = px[colour[k]] * a;
+    for (std::size_t k = 0; k < 3; ++k) rgb[3 * p + k] = px[colour[k]] * a;
   }
+}
+
+}  // namespace
+
+// Checks the size before allocating, then reads the whole image at once.
+FrameImage detail::read_linear_rgb(const std::filesystem::path& path, const char* what, long max_pixels) {
+  auto [in, d] = open_linear(path, what);
+  if (long{d.width} * d.height > max_pixels)
+    fail(what, path,
+         "image too large (" + size_text(d.width, d.height) + "; at most " + std::to_string(max_pixels) +
+             " pixels, e.g. " + size_text(static_cast<long>(std::sqrt(2.0 * max_pixels)),
+                                          static_cast<long>(std::sqrt(0.5 * max_pixels))) +
+             ": it is held as float RGB, 12 bytes a pixel)");
+  FrameImage image;
+  image.width = d.width;
+  image.height = d.height;
+  image.rgb.resize(3 * static_cast<std::size_t>(d.width) * static_cast<std::size_t>(d.height));
+  d.read_rows(*in, 0, d.height, image.rgb.data(), what, path);
   return image;
+}
+
+void read_image_bands(const std::filesystem::path& path, int band_rows, const std::function<void(const ImageBand&)>& use) {
+  constexpr const char* what = "cannot read image";
+  auto [in, d] = open_linear(path, what);
+  // A tiled file is read whole: its reader gives no scanlines.
+  const int rows = in->spec().tile_width > 0 ? d.height : std::clamp(band_rows, 1, d.height);
+  std::vector<float> rgb(3 * static_cast<std::size_t>(d.width) * static_cast<std::size_t>(rows));
+  for (int y0 = 0; y0 < d.height; y0 += rows) {
+    const int y1 = std::min(d.height, y0 + rows);
+    d.read_rows(*in, y0, y1, rgb.data(), what, path);
+    use(ImageBand{d.width, d.height, y0, y1 - y0,
+                  std::span<const float>(rgb.data(), 3 * static_cast<std::size_t>(d.width) * static_cast<std::size_t>(y1 - y0))});
+  }
 }
 
 }  // namespace lc

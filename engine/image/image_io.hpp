@@ -7,9 +7,12 @@
 // from the path's extension, because the frame store writes to temporary
 // names ("x.0001.exr.tmp-123") and renames.  Readers detect the format from
 // the file's content.  Every failure is a std::runtime_error whose message
-// names the file and the reason.
+// names the file and the reason.  A writer given `named` (a DurableFile's
+// final path while `path` is its temporary) names that file instead.
 
 #include <filesystem>
+#include <functional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,11 +33,12 @@ using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 // names such as "compression").  No timestamp is added, so equal frames and
 // metadata give byte-identical files.  On a failure after the file was
 // created the partial file is removed.
-void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata = {});
+void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata = {},
+               const std::filesystem::path& named = {});
 
 // Writes the RGB of `image` as an 8-bit sRGB PNG (linear -> sRGB curve,
 // clamp, round to nearest; NaN -> 0), tagged as sRGB.  Layers are ignored.
-void write_png(const std::filesystem::path& path, const FrameImage& image);
+void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named = {});
 
 // Reads an EXR written by write_exr: R, G, B into rgb and every other
 // channel, by name, into layers in the order the file lists them (OpenEXR
@@ -61,5 +65,21 @@ std::pair<int, int> image_size(const std::filesystem::path& path);
 // channels beyond the fourth are ignored.  Throws for a missing file, a
 // file no reader accepts, zero size, or a side above max_image_side.
 FrameImage read_image_linear(const std::filesystem::path& path);
+
+// A band of rows of an image, in linear RGB (3 * width floats a row).
+struct ImageBand {
+  int width = 0, height = 0;  // the whole image's
+  int y0 = 0, rows = 0;       // the band: rows y0 .. y0 + rows - 1
+  std::span<const float> rgb;
+};
+
+// Reads an image as read_image_linear does, `band_rows` rows at a time, top
+// to bottom, handing each band to `use` (valid during the call): for
+// callers that reduce the image as it comes (a contact sheet's
+// thumbnails), so that memory is one band, not the image.  A tiled file is
+// one band (its reader gives no scanlines), and so is an interlaced PNG in
+// OpenImageIO's reader.  Throws as read_image_linear, but takes any size
+// up to max_image_side a side.
+void read_image_bands(const std::filesystem::path& path, int band_rows, const std::function<void(const ImageBand&)>& use);
 
 }  // namespace lc

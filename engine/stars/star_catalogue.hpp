@@ -25,13 +25,20 @@ class CatalogueError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The longest catalogue line read (KStars' are at most 101 bytes): a longer
+// one is refused before it is held whole (a file of one 2 GB line is not a
+// catalogue).
+inline constexpr std::size_t max_catalogue_line = 1024;
+
 // The stars of `file` (KStars stars.dat text format) no fainter than
 // `faintest` (V), in the file's order.  Lines starting with '#' are
 // comments.  A data line holds, by 0-based column: RA `hhmmss.ss` at 0,
 // Dec `sddmmss.s` at 10 (the sign always written), V at 46 (5 wide), B - V
 // at 51 (5 wide); the rest (proper motion, parallax, spectral type, names)
-// is not read.  Throws CatalogueError for a file that cannot be read or a
-// line that does not parse, and when more than `max_stars` stars pass.
+// is not read.  Every number must be finite and in its range.  Throws
+// CatalogueError for a file that cannot be read, a line that does not parse
+// or is longer than max_catalogue_line, when more than `max_stars` stars
+// pass, and when none does ("0 stars read from FILE", with why).
 std::vector<CatalogueStar> read_star_catalogue(const std::filesystem::path& file, double faintest,
                                                std::size_t max_stars);
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "core/constants.hpp"
 #include "light/light.hpp"
 
@@ -12,10 +14,26 @@ namespace {
 
 float luminance_of(const Color& c) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]; }
 
-std::vector<Vec3> directions_of(const std::vector<PointStar>& stars) {
+// The stars' directions, each checked with its light first: the bins index
+// cells by the direction's angles, so a NaN one must never reach them (a
+// NaN from a catalogue line crashed the render there, issue #25).
+std::vector<Vec3> checked_directions(const std::vector<PointStar>& stars) {
   std::vector<Vec3> out;
   out.reserve(stars.size());
-  for (const PointStar& s : stars) out.push_back(s.direction);
+  for (std::size_t k = 0; k < stars.size(); ++k) {
+    const PointStar& s = stars[k];
+    const double n = std::sqrt(dot3(s.direction, s.direction));
+    if (!(std::abs(n - 1.0) < 1e-9))
+      throw std::invalid_argument(fmt::format("star field: star {} of {} has the direction ({:g}, {:g}, {:g}), not a "
+                                              "unit vector",
+                                              k + 1, stars.size(), s.direction[0], s.direction[1], s.direction[2]));
+    for (const float f : s.flux)
+      if (!(f >= 0.0f) || !std::isfinite(f))
+        throw std::invalid_argument(fmt::format("star field: star {} of {} has the light ({:g}, {:g}, {:g}): negative or "
+                                                "not finite (a catalogue's readers refuse such a star with its line)",
+                                                k + 1, stars.size(), s.flux[0], s.flux[1], s.flux[2]));
+    out.push_back(s.direction);
+  }
   return out;
 }
 
@@ -27,17 +45,12 @@ constexpr double bin_size = 1.0 * degree;
 
 StarField::StarField(std::vector<PointStar> stars, std::shared_ptr<const BlackbodyColors> colors,
                      std::shared_ptr<const SpectralShift> spectra)
-    : stars_(std::move(stars)), bins_(directions_of(stars_), bin_size), colors_(std::move(colors)),
+    : stars_(std::move(stars)), bins_(checked_directions(stars_), bin_size), colors_(std::move(colors)),
       spectra_(std::move(spectra)) {
   blackbody_scale_.assign(stars_.size(), 0.0f);
   luminance_.assign(stars_.size(), 0.0f);
   for (std::size_t k = 0; k < stars_.size(); ++k) {
     const PointStar& s = stars_[k];
-    const double n = std::sqrt(dot3(s.direction, s.direction));
-    if (!(std::abs(n - 1.0) < 1e-9))
-      throw std::invalid_argument("star field: a star's direction is not a unit vector");
-    for (const float f : s.flux)
-      if (!(f >= 0.0f) || !std::isfinite(f)) throw std::invalid_argument("star field: a star's flux is negative or not finite");
     luminance_[k] = luminance_of(s.flux);
     faintest_ = k == 0 ? luminance_[k] : std::min(faintest_, static_cast<double>(luminance_[k]));
     if (s.temperature > 0.0) {

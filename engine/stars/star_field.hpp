@@ -29,8 +29,9 @@ class StarField {
  public:
   // colors: blackbody colours (any reference), needed when a star has a
   // temperature; spectra: the texture spectra.  Either may be null when no
-  // star needs it.  Throws std::invalid_argument for a star whose direction
-  // is not a unit vector or whose flux is negative or not finite.
+  // star needs it.  Throws std::invalid_argument naming the star for one
+  // whose direction is not a unit vector (NaN included) or whose flux is
+  // negative or not finite, before anything is binned.
   StarField(std::vector<PointStar> stars, std::shared_ptr<const BlackbodyColors> colors,
             std::shared_ptr<const SpectralShift> spectra);
 

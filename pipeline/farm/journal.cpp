@@ -2,6 +2,8 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cmath>
+#include <type_traits>
 #include <cstring>
 #include <fstream>
 #include <set>
@@ -13,6 +15,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "core/line_reader.hpp"
 #include "durable_file.hpp"
 #include "farm/content_hash.hpp"
 
@@ -34,10 +37,16 @@ std::optional<std::string> checked_content(const std::string& line) {
   return content;
 }
 
+// A journal number: every one is a count, a size, seconds or a time, so
+// at least 0, and finite (std::from_chars reads "nan" and "inf", which a
+// later comparison would let through).
 template <class T>
 bool parse_number(const std::string& s, T& out) {
   const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-  return ec == std::errc() && p == s.data() + s.size();
+  if (ec != std::errc() || p != s.data() + s.size()) return false;
+  if constexpr (std::is_floating_point_v<T>)
+    if (!std::isfinite(out)) return false;
+  return out >= T{0};
 }
 
 // key=value tokens separated by single spaces; nullopt when one is malformed.
@@ -72,6 +81,7 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
       !parse_number(size->substr(x + 1), jf.settings.height) || !parse_number(*ss, jf.settings.supersample) ||
       !parse_number(*exr, jf.exr_bytes) || !parse_number(*png, jf.png_bytes) || !parse_number(*rays, jf.cost.rays))
     return std::nullopt;
+  if (jf.settings.width < 1 || jf.settings.height < 1 || jf.settings.supersample < 1) return std::nullopt;
   if (*layers != "0" && *layers != "1") return std::nullopt;
   jf.settings.layers = *layers == "1";
   // Written since adaptive supersampling; older lines sampled the full grid.
@@ -131,27 +141,30 @@ std::string journal_input_line(const std::string& hash, const std::string& path)
   return with_check(fmt::format("input hash={} path={}", hash, path));
 }
 
-// Walks complete lines; keeps those whose check holds.  The first complete
-// line must be the header, else the file is not ours.
-JournalContents parse_journal(const std::string& text, const std::string& name) {
+// Walks complete lines, one at a time in bounded memory (a junk line of
+// any length costs max_journal_line bytes); keeps those whose check holds.
+// The first complete line must be the header, else the file is not ours.
+JournalContents parse_journal(std::istream& in, const std::string& name) {
   JournalContents out;
-  std::size_t pos = 0;
+  LineReader lines(in, max_journal_line);
+  std::uintmax_t pos = 0;
   bool first = true;
-  while (pos < text.size()) {
-    const auto nl = text.find('\n', pos);
-    if (nl == std::string::npos) {
+  while (const auto text = lines.next()) {
+    if (!text->complete) {
       out.torn_tail = true;
       break;
     }
-    const std::string line = text.substr(pos, nl - pos);
-    pos = nl + 1;
-    const auto content = checked_content(line);
+    pos += text->bytes;
+    // An overlong line is no line this lightcone wrote: a bad line, as one
+    // whose check fails.
+    const std::optional<std::string> content =
+        text->too_long ? std::nullopt : checked_content(std::string(text->text));
     if (first) {
       first = false;
       if (!content || *content != header)
         throw std::runtime_error(fmt::format(
             "{} is not a lightcone journal (its first line is '{}'); move it away or choose another --out", name,
-            line.substr(0, 60)));
+            text->text.substr(0, 60)));
       out.valid_bytes = pos;
       continue;
     }
@@ -175,8 +188,14 @@ JournalContents parse_journal(const std::string& text, const std::string& name) 
     }
     out.valid_bytes = pos;
   }
+  if (lines.failed()) throw std::runtime_error(fmt::format("cannot read {}: a read error", name));
   // A bad line after the last good one is a torn tail too: cut it off.
   return out;
+}
+
+JournalContents parse_journal(const std::string& text, const std::string& name) {
+  std::istringstream in(text, std::ios::binary);
+  return parse_journal(in, name);
 }
 
 StaleFrames stale_frames(const JournalContents& journal, const std::map<int, std::uintmax_t>& png_sizes) {
@@ -214,9 +233,7 @@ JournalContents read_journal(const std::filesystem::path& file) {
     if (!std::filesystem::exists(file)) return {};
     throw std::runtime_error(fmt::format("cannot read {}: {}", file.string(), std::strerror(errno)));
   }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_journal(ss.str(), file.string());
+  return parse_journal(in, file.string());
 }
 
 JournalWriter::JournalWriter(std::filesystem::path file, std::uintmax_t valid_bytes)

@@ -15,7 +15,9 @@
 // frame cost beyond its rays.
 
 #include <cstdint>
+#include <cstddef>
 #include <filesystem>
+#include <istream>
 #include <map>
 #include <optional>
 #include <string>
@@ -100,9 +102,16 @@ std::string journal_header_line();
 std::string journal_frame_line(const JournalFrame& f);
 std::string journal_input_line(const std::string& hash, const std::string& path);
 
-// Parses a journal's text.  Throws std::runtime_error naming `name` when the
-// first complete line is not a lightcone journal header (someone else's
-// file: better to stop than to append to it).
+// The longest journal line read: a frame line is ~300 bytes, an input
+// line a hash and a path.  A longer line is skipped as a bad line without
+// being held whole (a junk line of 600 MB must not cost 600 MB).
+inline constexpr std::size_t max_journal_line = 64 * 1024;
+
+// Parses a journal's text, line by line in bounded memory.  Throws
+// std::runtime_error naming `name` when the first complete line is not a
+// lightcone journal header (someone else's file: better to stop than to
+// append to it), or on a read error.
+JournalContents parse_journal(std::istream& in, const std::string& name);
 JournalContents parse_journal(const std::string& text, const std::string& name);
 
 // Reads DIR/<shot>.journal; a missing file is an empty journal.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -21,53 +22,86 @@ constexpr int gap = 8;
 constexpr float background = 0.01f;  // linear; about sRGB 25
 constexpr float label = 0.7f;        // linear; about sRGB 218
 
-// Resizes linear RGB by area averaging: each output pixel is the mean of the
-// source area it covers (weighted by overlap), right both for shrinking a
-// 1280-wide frame to a thumbnail and for blowing up a 32-pixel preview
-// (then it is nearest-neighbour, keeping pixels crisp).
-FrameImage resample(const FrameImage& src, int w, int h) {
-  FrameImage out;
-  out.width = w;
-  out.height = h;
-  out.rgb.assign(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0.0f);
-  // Per output column/row: the source pixels it overlaps and their weights.
-  struct Span {
-    int first;
-    std::vector<double> weights;
-  };
-  auto spans = [](int n_src, int n_dst) {
-    std::vector<Span> s(static_cast<std::size_t>(n_dst));
-    const double ratio = static_cast<double>(n_src) / n_dst;
-    for (int d = 0; d < n_dst; ++d) {
-      const double a = d * ratio, b = (d + 1) * ratio;
-      const int first = static_cast<int>(std::floor(a));
-      const int last = std::min(n_src - 1, static_cast<int>(std::ceil(b)) - 1);
-      Span& sp = s[static_cast<std::size_t>(d)];
-      sp.first = first;
-      for (int k = first; k <= last; ++k)
-        sp.weights.push_back((std::min<double>(b, k + 1) - std::max<double>(a, k)) / ratio);
+using Span = AreaResampler::Span;
+
+// The spans of n_dst output pixels over n_src source pixels.
+std::vector<Span> spans(int n_src, int n_dst) {
+  std::vector<Span> s(static_cast<std::size_t>(n_dst));
+  const double ratio = static_cast<double>(n_src) / n_dst;
+  for (int d = 0; d < n_dst; ++d) {
+    const double a = d * ratio, b = (d + 1) * ratio;
+    const int first = static_cast<int>(std::floor(a));
+    const int last = std::min(n_src - 1, static_cast<int>(std::ceil(b)) - 1);
+    Span& sp = s[static_cast<std::size_t>(d)];
+    sp.first = first;
+    for (int k = first; k <= last; ++k) sp.weights.push_back((std::min<double>(b, k + 1) - std::max<double>(a, k)) / ratio);
+  }
+  return s;
+}
+
+}  // namespace
+
+AreaResampler::AreaResampler(int src_width, int src_height, int width, int height)
+    : src_width_(src_width), width_(width), height_(height), columns_(spans(src_width, width)),
+      acc_(3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0),
+      row_(3 * static_cast<std::size_t>(width)) {
+  // Each source row's output rows, from the rows' spans.
+  rows_of_.resize(static_cast<std::size_t>(src_height));
+  const std::vector<Span> rows = spans(src_height, height);
+  for (int y = 0; y < height; ++y) {
+    const Span& sy = rows[static_cast<std::size_t>(y)];
+    for (std::size_t j = 0; j < sy.weights.size(); ++j)
+      rows_of_[static_cast<std::size_t>(sy.first) + j].push_back({y, sy.weights[j]});
+  }
+}
+
+void AreaResampler::add_rows(int y0, int rows, std::span<const float> rgb) {
+  // Each row is averaged along x first, then added to the output rows it
+  // overlaps with their weights: the separable form of the area average.
+  for (int r = 0; r < rows; ++r) {
+    const std::size_t j = static_cast<std::size_t>(y0 + r);
+    const float* src = rgb.data() + 3 * static_cast<std::size_t>(r) * static_cast<std::size_t>(src_width_);
+    for (int x = 0; x < width_; ++x) {
+      const Span& sx = columns_[static_cast<std::size_t>(x)];
+      double a[3] = {0, 0, 0};
+      for (std::size_t i = 0; i < sx.weights.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+          a[c] += sx.weights[i] * src[3 * (static_cast<std::size_t>(sx.first) + i) + static_cast<std::size_t>(c)];
+      for (int c = 0; c < 3; ++c) row_[3 * static_cast<std::size_t>(x) + static_cast<std::size_t>(c)] = a[c];
     }
-    return s;
-  };
-  const std::vector<Span> xs = spans(src.width, w), ys = spans(src.height, h);
-  for (int y = 0; y < h; ++y) {
-    const Span& sy = ys[static_cast<std::size_t>(y)];
-    for (int x = 0; x < w; ++x) {
-      const Span& sx = xs[static_cast<std::size_t>(x)];
-      double acc[3] = {0, 0, 0};
-      for (std::size_t j = 0; j < sy.weights.size(); ++j)
-        for (std::size_t i = 0; i < sx.weights.size(); ++i) {
-          const double wgt = sy.weights[j] * sx.weights[i];
-          const std::size_t p = 3 * ((static_cast<std::size_t>(sy.first) + j) * static_cast<std::size_t>(src.width) +
-                                     static_cast<std::size_t>(sx.first) + i);
-          for (int c = 0; c < 3; ++c) acc[c] += wgt * src.rgb[p + static_cast<std::size_t>(c)];
-        }
-      const std::size_t q = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
-      for (int c = 0; c < 3; ++c) out.rgb[q + static_cast<std::size_t>(c)] = static_cast<float>(acc[c]);
+    for (const auto& [y, weight] : rows_of_[j]) {
+      double* out = &acc_[3 * static_cast<std::size_t>(y) * static_cast<std::size_t>(width_)];
+      for (std::size_t k = 0; k < row_.size(); ++k) out[k] += weight * row_[k];
     }
   }
+}
+
+FrameImage AreaResampler::result() const {
+  // The sums are kept in double; the image is float like every frame.
+  FrameImage out;
+  out.width = width_;
+  out.height = height_;
+  out.rgb.resize(acc_.size());
+  std::transform(acc_.begin(), acc_.end(), out.rgb.begin(), [](double v) { return static_cast<float>(v); });
   return out;
 }
+
+FrameImage thumbnail(const std::filesystem::path& file, int width, int height, std::pair<int, int> expected) {
+  // The resampler is made at the first band, which says the frame's size.
+  std::optional<AreaResampler> resampler;
+  read_image_bands(file, thumbnail_band_rows, [&](const ImageBand& band) {
+    if (!resampler) {
+      if (band.width != expected.first || band.height != expected.second)
+        throw std::runtime_error(fmt::format("{}: {}x{}, but the sequence's first frame is {}x{}", file.string(),
+                                             band.width, band.height, expected.first, expected.second));
+      resampler.emplace(band.width, band.height, width, height);
+    }
+    resampler->add_rows(band.y0, band.rows, band.rgb);
+  });
+  return resampler->result();
+}
+
+namespace {
 
 // Copies `tile` into `sheet` with its top-left corner at (x0, y0).
 void paste(FrameImage& sheet, const FrameImage& tile, int x0, int y0) {
@@ -110,9 +144,10 @@ FrameImage make_contact_sheet(const FrameSequence& sequence, const ContactSheetO
   const int n = static_cast<int>(picks.size());
   const int columns = std::min(o.columns, n);
   const int rows = (n + columns - 1) / columns;
-  FrameImage first = read_image_linear(sequence.files[picks.front()]);
-  const int first_w = first.width, first_h = first.height;  // every pick must match
-  const int thumb_h = std::max(1, static_cast<int>(std::lround(static_cast<double>(thumb_w) * first.height / first.width)));
+  // Every pick must be the first's size; each is read a band at a time
+  // into its thumbnail, so a huge frame costs a band, not its pixels.
+  const auto [first_w, first_h] = image_size(sequence.files[picks.front()]);
+  const int thumb_h = std::max(1, static_cast<int>(std::lround(static_cast<double>(thumb_w) * first_h / first_w)));
   const int scale = std::max(1, thumb_w / 160);  // labels ~1/5 of a 160-pixel thumbnail's width
   const int label_h = pixel_font::text_height(scale) + 2 * scale;
   const int cell_h = thumb_h + label_h;
@@ -128,14 +163,9 @@ FrameImage make_contact_sheet(const FrameSequence& sequence, const ContactSheetO
 
   for (int k = 0; k < n; ++k) {
     const std::size_t idx = picks[static_cast<std::size_t>(k)];
-    FrameImage frame = k == 0 ? std::move(first) : read_image_linear(sequence.files[idx]);
-    if (frame.width != first_w || frame.height != first_h)
-      throw std::runtime_error(fmt::format("{}: {}x{}, but {} is {}x{}", sequence.files[idx].string(), frame.width,
-                                           frame.height, sequence.files[picks.front()].filename().string(), first_w,
-                                           first_h));
     const int x0 = gap + (k % columns) * (thumb_w + gap);
     const int y0 = gap + (k / columns) * (cell_h + gap);
-    paste(sheet, resample(frame, thumb_w, thumb_h), x0, y0);
+    paste(sheet, thumbnail(sequence.files[idx], thumb_w, thumb_h, {first_w, first_h}), x0, y0);
     const std::string text = std::to_string(sequence.frames[idx]);
     const int tx = x0 + (thumb_w - pixel_font::text_width(text, scale)) / 2;
     const int ty = y0 + thumb_h + scale;
@@ -154,7 +184,7 @@ void write_contact_sheet(const FrameSequence& sequence, const ContactSheetOption
   // Builds the sheet first (reading every pick), then writes it atomically.
   const FrameImage sheet = make_contact_sheet(sequence, options);
   DurableFile file(out);
-  write_png(file.temp_path(), sheet);
+  write_png(file.temp_path(), sheet, file.final_path());
   file.commit();
 }
 

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "image/frame_image.hpp"
@@ -21,6 +23,42 @@ struct ContactSheetOptions {
 // `count` indices spread evenly over 0 .. available-1, the first and the
 // last included, ascending and distinct; all indices when available <= count.
 std::vector<std::size_t> pick_evenly(std::size_t available, std::size_t count);
+
+// Resizes linear RGB by area averaging, fed a few rows at a time: each
+// output pixel is the mean of the source area it covers (weighted by
+// overlap), right both for shrinking a frame to a thumbnail and for
+// blowing up a 32-pixel preview (then it is nearest-neighbour, keeping
+// pixels crisp).  Memory: the output (in double) and one row of it.
+class AreaResampler {
+ public:
+  AreaResampler(int src_width, int src_height, int width, int height);
+  // Rows y0 .. y0 + rows - 1 of the source (3 * src_width floats a row);
+  // each row once, in any order.
+  void add_rows(int y0, int rows, std::span<const float> rgb);
+  // The output once every row was added.
+  FrameImage result() const;
+
+  // An output column's or row's source pixels: the first, and each one's
+  // weight (overlap / the output pixel's width in source pixels).
+  struct Span {
+    int first = 0;
+    std::vector<double> weights;
+  };
+
+ private:
+  int src_width_, width_, height_;
+  std::vector<Span> columns_;
+  std::vector<std::vector<std::pair<int, double>>> rows_of_;  // per source row: (output row, weight)
+  std::vector<double> acc_, row_;
+};
+
+// Rows read at a time for a thumbnail: a 16384-wide frame's band is ~12 MB.
+inline constexpr int thumbnail_band_rows = 64;
+
+// The thumbnail (width x height, linear RGB) of the image `file`, read a
+// band at a time; throws std::runtime_error naming the file when it is not
+// `expected` (width, height) in size or does not read.
+FrameImage thumbnail(const std::filesystem::path& file, int width, int height, std::pair<int, int> expected);
 
 // The sheet of `sequence` (linear RGB, for write_png): a dark background,
 // thumbnails of equal size (the first frame's aspect, scaled by area

@@ -39,6 +39,12 @@ bool rate_in(long long a, long long b, FrameRate lo, FrameRate hi) {
   return a * lo.den >= lo.num * b && a * hi.den <= hi.num * b;
 }
 
+// The message for a fraction whose terms are too large for a rate.
+std::string too_large(const std::string& flag, const std::string& text) {
+  return fmt::format("{} {}: too large: in lowest terms the fraction's numbers must be at most {} (as in 30000/1001)",
+                     flag, text, max_rate_term);
+}
+
 // The message for a rate outside the range.
 std::string out_of_range(const std::string& flag, const std::string& text) {
   return fmt::format("{} {}: must be from 1/1000 (one frame every 1000 s) to 1000 frames per second", flag, text);
@@ -72,22 +78,29 @@ FrameRate parse_frame_rate(const std::string& text, const std::string& flag) {
       "{} '{}': expected frames per second as a number (30, 29.97) or a fraction of whole numbers (30000/1001)", flag,
       text);
   if (const auto slash = text.find('/'); slash != std::string::npos) {
+    // Whole numbers of up to 18 digits fit a long long; a longer one is a
+    // number too, only too large.
     auto whole = [&](std::string_view digits) {
       long long v = 0;
-      if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string_view::npos)
+      if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos)
         throw std::invalid_argument(expected);
+      if (digits.size() > 18) throw std::invalid_argument(too_large(flag, text));
       std::from_chars(digits.data(), digits.data() + digits.size(), v);
       return v;
     };
     const long long num = whole(std::string_view(text).substr(0, slash));
     const long long den = whole(std::string_view(text).substr(slash + 1));
     if (den == 0) throw std::invalid_argument(fmt::format("{} {}: the denominator is 0", flag, text));
-    if (!rate_in(num, den, min_frame_rate, max_frame_rate)) throw std::invalid_argument(out_of_range(flag, text));
-    const FrameRate r = reduced(num, den);
-    if (r.num > max_rate_term || r.den > max_rate_term)
-      throw std::invalid_argument(fmt::format("{} {}: in lowest terms its numbers must be at most {}", flag, text,
-                                              max_rate_term));
-    return r;
+    const long long g = std::gcd(num, den);
+    if (num / g > max_rate_term || den / g > max_rate_term) {
+      // Which message: the value's range, roughly (exact range checks need
+      // small terms), else the terms.
+      const long double v = static_cast<long double>(num) / static_cast<long double>(den);
+      throw std::invalid_argument(v < min_frame_rate.value() || v > max_frame_rate.value() ? out_of_range(flag, text)
+                                                                                         : too_large(flag, text));
+    }
+    if (!rate_in(num / g, den / g, min_frame_rate, max_frame_rate)) throw std::invalid_argument(out_of_range(flag, text));
+    return reduced(num, den);
   }
   // A decimal: digits first (no sign, no "inf" or "nan"), all of it a number.
   double v = 0;

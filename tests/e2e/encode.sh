@@ -55,7 +55,10 @@ expect_error fps_huge "--fps 1001: $fps_range" -- "$LIGHTCONE" encode frames -o 
 expect_error fps_junk "--fps '30fps': expected frames per second" -- "$LIGHTCONE" encode frames -o fps3.mp4 --fps 30fps
 expect_error fps_zero_den "--fps 30/0: the denominator is 0" -- "$LIGHTCONE" encode frames -o fps4.mp4 --fps 30/0
 expect_error fps_title "--fps 1e-9: $fps_range" -- "$LIGHTCONE" encode --title X --size 32x18 --fps 1e-9 -o fps5.mp4
-for f in fps1 fps2 fps3 fps4 fps5; do [ -e $f.mp4 ] && fail "$f.mp4 written for a refused --fps"; done
+# A fraction is one however long its numbers: too large, not "expected a number".
+expect_error fps_terms "--fps 4294967297/4294967296: too large: in lowest terms the fraction's numbers must be at most 1001000" -- \
+  "$LIGHTCONE" encode frames -o fps6.mp4 --fps 4294967297/4294967296
+for f in fps1 fps2 fps3 fps4 fps5 fps6; do [ -e $f.mp4 ] && fail "$f.mp4 written for a refused --fps"; done
 # Colour survives: a flat orange frame decodes (as a player does, by the
 # stream's BT.709 tags) to its PNG's bytes within 2 codes.  A BT.601 matrix
 # under a BT.709 tag would be ~10 codes off.

@@ -88,6 +88,17 @@ expect_fail "a PDF" "-o arches.pdf: a figure is written as SVG or PNG" arches.cs
 expect_fail "a bad disk" "--disk 16:6: expected INNER:OUTER" arches.csv -o x.svg --disk 16:6
 printf 'ray,lambda,x0,x1,x2,x3\n1,0,0,10,1.5,0\n1,1,0,nan?,1.5,0\n' >broken.csv
 expect_fail "a broken row" "broken.csv:3: column x1 is 'nan?'" broken.csv -o x.svg
+# Finite but huge coordinates gave a blank figure "inf M across" (issue #25).
+printf 'ray,lambda,x0,x1,x2,x3\n1,0,0,10,1.5,0\n1,1,0,1e308,1.5,0\n' >huge.csv
+expect_fail "a huge radius" "huge.csv:3: the point (9.97495e+307, 0, 7.07372e+306) M is too far out: plot draws points within 1e+12 M" huge.csv -o x.svg
+printf 'ray,lambda,x0,x1,x2,x3\n1,0,0,10,1.5,0\n1,1,0,-1e308,1e308,0\n' >huge_xyz.csv
+expect_fail "huge Cartesian coordinates" "huge_xyz.csv:3: the point" huge_xyz.csv -o x.png --coordinates cartesian
+printf 'ray,lambda,x0,x1,x2,x3\n1e300,0,0,10,1.5,0\n' >huge_ray.csv
+expect_fail "a huge ray number" "huge_ray.csv:2: column ray is '1e300', not a whole number from 1 to 1e9" huge_ray.csv -o x.svg
+expect_fail "a huge extent" "--extent 1e+300: must be a positive number of M, at most 1e+12" arches.csv -o x.svg --extent 1e300
+expect_fail "a huge disk" "--disk 6:1e300: expected INNER:OUTER" arches.csv -o x.svg --disk 6:1e300
+python3 -c "import sys; sys.stdout.write('ray,lambda,x0,x1,x2,x3\\n1,0,0,10,1.5,0\\n' + '1' * 100000 + '\\n')" >long.csv
+expect_fail "an overlong line" "long.csv:3: the line is longer than 16384 bytes" long.csv -o x.svg
 printf 'a,b\n1,2\n' >other.csv
 expect_fail "another CSV" "other.csv:1: no column x0" other.csv -o x.svg
 head -1 arches.csv >empty.csv

@@ -53,9 +53,24 @@ expect_error title_size "--size '4294967360x36': 4294967360 is far too large" --
 expect_error farm_bench_size "--size '4294967360x36': 4294967360 is far too large" -- \
   "$LIGHTCONE" farm-bench --size 4294967360x36 --frames 1
 [ -e trace.csv ] || [ -e title.mp4 ] || [ -e showcase_out ] && fail "a refused size left an output behind"
-expect_error bench_seconds "--seconds -1: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds -1
-expect_error bench_seconds_nan "--seconds nan: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds nan
-expect_error bench_seconds_long "--seconds 4000: must be between 0 and 3600" -- "$LIGHTCONE" bench --shot ok.lua --seconds 4000
+expect_error bench_seconds "--seconds: -1 is out of range: give a number from 0 to 3600 (both included)" -- "$LIGHTCONE" bench --shot ok.lua --seconds -1
+expect_error bench_seconds_nan "--seconds: 'nan' is not a finite number: give a number from 0 to 3600 (both included)" -- "$LIGHTCONE" bench --shot ok.lua --seconds nan
+expect_error bench_seconds_long "--seconds: 4000 is out of range: give a number from 0 to 3600 (both included)" -- "$LIGHTCONE" bench --shot ok.lua --seconds 4000
+# Every numeric flag takes the one check (CLI11's Range let NaN through and
+# printed its ends as %f: "not in range 0.000000 to 0.010000", issue #25).
+expect_error bench_tolerance_nan "--tolerance: 'nan' is not a finite number: give a number from 1e-15 to 0.01 (both included)" -- \
+  "$LIGHTCONE" bench --shot ok.lua --tolerance nan
+expect_error bench_tolerance_zero "--tolerance: 0 is out of range: give a number from 1e-15 to 0.01 (both included)" -- \
+  "$LIGHTCONE" bench --shot ok.lua --tolerance 0
+expect_error bench_reference_inf "--reference-tolerance: 'inf' is not a finite number: give a number from 1e-15 to 1e-06" -- \
+  "$LIGHTCONE" bench --shot ok.lua --reference-tolerance inf
+expect_error render_scale_nan "--scale: 'nan' is not a finite number" -- "$LIGHTCONE" render ok.lua --out out --scale nan
+expect_error render_progress_inf "--progress: 'inf' is not a finite number" -- "$LIGHTCONE" render ok.lua --out out --progress=inf
+expect_error render_threads_big "--threads: 2000 is out of range: give a number from 1 to 1024 (both included)" -- \
+  "$LIGHTCONE" render ok.lua --out out --threads 2000
+expect_error plot_extent_nan "--extent: 'nan' is not a finite number" -- "$LIGHTCONE" plot ok.lua -o x.svg --extent nan
+expect_error encode_seconds_inf "--seconds: 'inf' is not a finite number" -- "$LIGHTCONE" encode --title X --size 32x18 -o x.mp4 --seconds inf
+expect_error showcase_rate_nan "--rate: 'nan' is not a finite number" -- "$LIGHTCONE" showcase --rate nan
 expect_error bad_frames "--frames '5:9': the shot has frames 0 to 0" -- "$LIGHTCONE" render ok.lua --out out --frames 5:9
 expect_error bad_frames2 "--frames 'x'" -- "$LIGHTCONE" render ok.lua --out out --frames x
 shot ergo "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 1.8, theta = 90, phi = 0},"
@@ -140,6 +155,27 @@ expect_error bad_catalogue "starfield: the catalogue does not read: $WORK/bad_st
   env LIGHTCONE_STAR_CATALOGUE="$WORK/bad_stars.dat" "$LIGHTCONE" render no_catalogue.lua --out out
 grep -qF "no_catalogue.lua" "$WORK/bad_catalogue.err" || fail "bad catalogue: no shot named: $(cat "$WORK/bad_catalogue.err")"
 [ ! -e out/no_catalogue.0000.exr ] || fail "a frame was written from a bad catalogue"
+# Numbers std::from_chars reads but no catalogue holds: a NaN seconds field
+# crashed the render (SIGSEGV, issue #25); a NaN magnitude or colour was
+# "a star's flux is negative or not finite" without a file or line.
+star='064508.92 -164258.0 -000546.0-001223.100379.2 -1.4400.01A0 1'
+printf '%s\n%s\n' "$star" "${star:0:4}  nan${star:9}" >nan_ra.dat
+expect_error nan_ra "$WORK/nan_ra.dat:2: the right ascension (columns 1-9) is not hhmmss.ss" -- \
+  env LIGHTCONE_STAR_CATALOGUE="$WORK/nan_ra.dat" "$LIGHTCONE" render no_catalogue.lua --out out
+printf '%s\n' "${star:0:15} nan${star:19}" >nan_dec.dat
+expect_error nan_dec "$WORK/nan_dec.dat:1: the declination (columns 11-19) is not sddmmss.s" -- \
+  env LIGHTCONE_STAR_CATALOGUE="$WORK/nan_dec.dat" "$LIGHTCONE" render no_catalogue.lua --out out
+printf '%s\n' "${star:0:46}  nan${star:51}" >nan_v.dat
+expect_error nan_v "$WORK/nan_v.dat:1: the magnitude V (columns 47-51) is not a number from -2 to 30" -- \
+  env LIGHTCONE_STAR_CATALOGUE="$WORK/nan_v.dat" "$LIGHTCONE" render no_catalogue.lua --out out
+printf '%s\n' "${star:0:51}  inf${star:56}" >inf_bv.dat
+expect_error inf_bv "$WORK/inf_bv.dat:1: the colour index B-V (columns 52-56) is not a number from -1 to 6" -- \
+  env LIGHTCONE_STAR_CATALOGUE="$WORK/inf_bv.dat" "$LIGHTCONE" render no_catalogue.lua --out out
+# A catalogue that gives no star is an error, not a starless sky.
+printf '# nothing but a comment\n' >empty_stars.dat
+expect_error empty_catalogue "$WORK/empty_stars.dat: 0 stars read from it: it holds no star line" -- \
+  env LIGHTCONE_STAR_CATALOGUE="$WORK/empty_stars.dat" "$LIGHTCONE" render no_catalogue.lua --out out
+[ ! -e out/no_catalogue.0000.exr ] || fail "a frame was written from a bad catalogue"
 shot no_background "$good_kerr sky = lc.starfield{background = 'nope.png'},"
 expect_error no_background "sky image 'nope.png' not found" -- "$LIGHTCONE" render no_background.lua --out out
 shot bad_choice "$good_kerr sky = lc.starfield{catalogue = 'hipparcos'},"
@@ -203,7 +239,7 @@ expect_error typo_flag2 "lightcone: error: contact-sheet: unknown option --colum
   "$LIGHTCONE" contact-sheet out -o sheet.png --colums 3
 expect_error no_command "lightcone: error: no command given; the commands are geodesic, plot, render" -- "$LIGHTCONE"
 expect_error required "lightcone: error: --output is required" -- "$LIGHTCONE" encode out
-expect_error not_a_number "lightcone: error: Could not convert: --crf = abc" -- "$LIGHTCONE" encode out -o x.mp4 --crf abc
+expect_error not_a_number "lightcone: error: --crf: 'abc' is not a number" -- "$LIGHTCONE" encode out -o x.mp4 --crf abc
 grep -q "Run 'lightcone encode --help' for the options." not_a_number.err || fail "no help hint: $(cat not_a_number.err)"
 
 # script NAME BEFORE [FRAME-BODY]: a one-frame shot with BEFORE on line 2

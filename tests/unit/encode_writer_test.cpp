@@ -118,17 +118,24 @@ TEST(encode_writer, FrameRatesAreExactFractions) {
   EXPECT_EQ(lc::parse_frame_rate("1/1000", "--fps"), (FrameRate{1, 1000}));
   EXPECT_EQ(lc::parse_frame_rate("1000", "--fps"), (FrameRate{1000, 1}));
   const std::string range = "must be from 1/1000 (one frame every 1000 s) to 1000 frames per second";
-  for (const char* bad : {"1e-9", "0", "0.0009", "1001", "1000001/1000", "1/1001", "1e400", "0/5"})
+  for (const char* bad : {"1e-9", "0", "0.0009", "1001", "1000001/1000", "1/1001", "1e400", "0/5", "1234567890/1"})
     EXPECT_EQ(error_of<std::invalid_argument>([&] { lc::parse_frame_rate(bad, "--fps"); }),
               std::string("--fps ") + bad + ": " + range)
         << bad;
   for (const char* junk : {"", "abc", "-30", "+30", "inf", "nan", "30fps", "30 ", "30/", "/2", "30/-1", "1.5/2",
-                           "30/1001/2", "0x1e", "1234567890/1"})
+                           "30/1001/2", "0x1e"})
     EXPECT_NE(error_of<std::invalid_argument>([&] { lc::parse_frame_rate(junk, "--fps"); })
                   .find(std::string("--fps '") + junk + "': expected frames per second"),
               std::string::npos)
         << junk;
   EXPECT_EQ(error_of<std::invalid_argument>([] { lc::parse_frame_rate("30/0", "--fps"); }), "--fps 30/0: the denominator is 0");
+  // A fraction is one however long its numbers (issue #25: "expected a
+  // number or a fraction"); in range but with terms too large, it says so.
+  EXPECT_EQ(lc::parse_frame_rate("60000000000/2000000000", "--fps"), (FrameRate{30, 1}));
+  const std::string large = ": too large: in lowest terms the fraction's numbers must be at most 1001000 (as in 30000/1001)";
+  for (const char* big : {"4294967297/4294967296", "30000001/1000000", "1000000000000000000000/1000000000000000000000"})
+    EXPECT_EQ(error_of<std::invalid_argument>([&] { lc::parse_frame_rate(big, "--fps"); }), std::string("--fps ") + big + large)
+        << big;
   EXPECT_EQ(lc::describe(FrameRate{24, 1}), "24");
   EXPECT_EQ(lc::describe(FrameRate{2997, 100}), "29.97");
   EXPECT_EQ(lc::describe(FrameRate{30000, 1001}), "30000/1001 (29.97)");

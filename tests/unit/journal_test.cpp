@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "farm/content_hash.hpp"
 #include "farm/journal.hpp"
 #include "scratch_dir.hpp"
 
@@ -97,6 +98,41 @@ TEST(Journal, CorruptMiddleLineIsSkipped) {
   EXPECT_EQ(j.frames.count(1), 0u);
   EXPECT_EQ(j.frames.count(2), 1u);
   EXPECT_EQ(j.valid_bytes, text.size());
+}
+
+// A junk line of any length is a bad line, skipped without being held
+// whole (issue #25: one of 600 MB made `render` and `cost` use ~2 GB); the
+// lines after it still count, and the byte count past it stays exact.
+TEST(Journal, AnOverlongLineIsSkippedAsABadLine) {
+  const std::string junk(3 * max_journal_line, 'j');
+  const std::string text = journal_text(1) + junk + "\n" + journal_frame_line(frame(1)) + "\n";
+  const JournalContents j = parse_journal(text, "j");
+  EXPECT_EQ(j.bad_lines, 1);
+  EXPECT_EQ(j.frames.size(), 2u);
+  EXPECT_EQ(j.valid_bytes, text.size());
+  // Overlong and without its newline: a torn tail, cut off by the next writer.
+  const JournalContents torn = parse_journal(journal_text(2) + junk, "j");
+  EXPECT_TRUE(torn.torn_tail);
+  EXPECT_EQ(torn.frames.size(), 2u);
+  EXPECT_EQ(torn.valid_bytes, journal_text(2).size());
+  // An overlong first line: not a journal.
+  EXPECT_THROW(parse_journal(junk + "\n", "x.journal"), std::runtime_error);
+}
+
+// Numbers that are not finite or below 0 make the line bad, even under a
+// matching check (std::from_chars reads "nan" and "inf").
+TEST(Journal, NumbersThatAreNotFiniteOrNegativeMakeTheLineBad) {
+  for (const char* bad : {"core_seconds=nan", "core_seconds=inf", "core_seconds=-1.000", "star_seconds=nan"}) {
+    std::string line = journal_frame_line(frame(1));
+    line = line.substr(0, line.rfind(" #"));
+    const std::string key = std::string(bad).substr(0, std::string(bad).find('=') + 1);
+    const auto at = line.find(key);
+    line.replace(at, line.find(' ', at) - at, bad);
+    const std::string text = journal_text(1) + line + " #" + to_hex(hash_bytes(line)) + "\n";
+    const JournalContents j = parse_journal(text, "j");
+    EXPECT_EQ(j.bad_lines, 1) << bad;
+    EXPECT_EQ(j.frames.count(1), 0u) << bad;
+  }
 }
 
 TEST(Journal, LaterLineSupersedesEarlier) {

@@ -4,6 +4,7 @@
 // stays local (a small cap does not visit most of the sky).
 
 #include "stars/star_bins.hpp"
+#include "stars/star_field.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,6 +25,22 @@ Vec3 random_direction(std::mt19937_64& rng) {
 
 double angle(const Vec3& a, const Vec3& b) {
   return std::acos(std::clamp(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], -1.0, 1.0));
+}
+
+// A star field refuses a star of NaN direction or light before binning it
+// (the bins index cells by its angles: a NaN one crashed the render).
+TEST(StarBins, TheStarFieldRefusesANanStarBeforeBinningIt) {
+  const double nan = std::nan("");
+  for (const PointStar& bad : {PointStar{{nan, 0.0, 1.0}, {1.0f, 1.0f, 1.0f}, 0.0},
+                               PointStar{{0.0, 0.0, 1.0}, {1.0f, static_cast<float>(nan), 1.0f}, 0.0},
+                               PointStar{{0.0, 0.0, 2.0}, {1.0f, 1.0f, 1.0f}, 0.0}}) {
+    try {
+      StarField({PointStar{{1.0, 0.0, 0.0}, {1.0f, 1.0f, 1.0f}, 0.0}, bad}, nullptr, nullptr);
+      ADD_FAILURE() << "accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("star field: star 2 of 2 has the"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(StarBins, EveryStarInACapIsVisitedOnce) {

@@ -67,7 +67,18 @@ TEST(StarCatalogue, MalformedLinesNameTheLineAndTheField) {
                         Case{line("064508.92", "-164258.0", "-1.44", ""), ":1: the colour index B-V (columns 52-56) is not a number from -1 to 6"},
                         // A line one column short: V and B-V read half from their neighbours.
                         Case{"064508.92 -164258.0 -000546.0-001223.10379.2 -1.4400.01A0 1", ":1: the colour index B-V"},
-                        Case{"064508.92 -16", ":1: the declination"}}) {
+                        Case{"064508.92 -16", ":1: the declination"},
+                        // std::from_chars reads "nan" and "inf"; NaN passed every range check and
+                        // crashed the star bins (issue #25).
+                        Case{line("0645  nan", "-164258.0", "-1.44", "00.01"), ":1: the right ascension (columns 1-9)"},
+                        Case{line("0645 -nan", "-164258.0", "-1.44", "00.01"), ":1: the right ascension (columns 1-9)"},
+                        Case{line("064508.92", "-1642 nan", "-1.44", "00.01"), ":1: the declination (columns 11-19)"},
+                        Case{line("064508.92", "-1642 inf", "-1.44", "00.01"), ":1: the declination (columns 11-19)"},
+                        Case{line("0645-1.00", "-164258.0", "-1.44", "00.01"), ":1: the right ascension (columns 1-9)"},
+                        Case{line("064508.92", "-164258.0", "  nan", "00.01"), ":1: the magnitude V (columns 47-51)"},
+                        Case{line("064508.92", "-164258.0", " -inf", "00.01"), ":1: the magnitude V (columns 47-51)"},
+                        Case{line("064508.92", "-164258.0", "-1.44", "  nan"), ":1: the colour index B-V (columns 52-56)"},
+                        Case{line("064508.92", "-164258.0", "-1.44", "  inf"), ":1: the colour index B-V (columns 52-56)"}}) {
     const fs::path file = write(dir, c.text);
     const std::string msg = test::error_of<CatalogueError>([&] { read_star_catalogue(file, 9.0, 1000); });
     EXPECT_EQ(msg.rfind(file.string(), 0), 0u) << msg;
@@ -88,6 +99,33 @@ TEST(StarCatalogue, MissingFilesDirectoriesAndTooManyStarsAreRefused) {
   EXPECT_NE(test::error_of<CatalogueError>([&] { read_star_catalogue(file, 9, 4); })
                 .find("more than 4 stars brighter than V = 9"),
             std::string::npos);
+}
+
+TEST(StarCatalogue, ALineLongerThanTheLimitIsRefusedWithoutHoldingIt) {
+  test::ScratchDir dir;
+  const std::string good = line("064508.92", "-164258.0", "-1.44", "00.01") + "\n";
+  // A line just under the limit is read (its columns past 56 are not);
+  // one over it is refused naming its line, however long it goes on.
+  const std::string under = line("064508.92", "-164258.0", "-1.44", "00.01") + std::string(max_catalogue_line - 70, 'x');
+  ASSERT_LE(under.size(), max_catalogue_line);
+  EXPECT_EQ(read_star_catalogue(write(dir, good + under + "\n"), 9, 10).size(), 2u);
+  const std::string over = good + good + std::string(5'000'000, 'y') + "\n" + good;
+  const std::string msg = test::error_of<CatalogueError>([&] { read_star_catalogue(write(dir, over), 9, 10); });
+  EXPECT_NE(msg.find("stars.dat:3: the line is longer than 1024 bytes"), std::string::npos) << msg;
+}
+
+TEST(StarCatalogue, ACatalogueThatGivesNoStarSaysSo) {
+  test::ScratchDir dir;
+  for (const std::string text : {std::string(), std::string("# only a comment\n\n")}) {
+    const fs::path file = write(dir, text);
+    const std::string msg = test::error_of<CatalogueError>([&] { read_star_catalogue(file, 9, 10); });
+    EXPECT_EQ(msg.rfind(file.string() + ": 0 stars read from it: it holds no star line", 0), 0u) << msg;
+  }
+  const fs::path file = write(dir, line("064508.92", "-164258.0", "-1.44", "00.01") + "\n");
+  const std::string msg = test::error_of<CatalogueError>([&] { read_star_catalogue(file, -2, 10); });
+  EXPECT_NE(msg.find("0 stars read from it: none of its 1 stars is as bright as V = -2: raise `faintest`"),
+            std::string::npos)
+      << msg;
 }
 
 TEST(StarCatalogue, TheSunsColourIsTheSunsTemperature) {
