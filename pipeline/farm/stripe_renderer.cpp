@@ -13,19 +13,9 @@
 
 #include <fmt/format.h>
 
+#include "core/thread_clock.hpp"
+
 namespace lc::farm {
-
-namespace {
-
-// CPU time of the calling thread, in seconds: what a set cost however busy
-// the machine was (wall time would count the waits for a core).
-double thread_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-}  // namespace
 
 RenderStats SceneStripeRenderer::render(const WorkItem& item, FrameImage& canvas) {
   const double start = thread_cpu_seconds();
