@@ -31,15 +31,15 @@ same_frames() {
   done
   [ "$n" -eq 20 ] || fail "ref holds $n frame files, expected 20"
 }
-# task ID COUNT OUT [render options]: one array task, as Slurm would start
+# task ID PARTS OUT [render options]: one array task, as Slurm would start
 # it.  It becomes the script (exec), so that `task ... &` leaves the
 # script's own pid in $! for the signal; run it in the foreground as
 # `(task ...)`.
 task() {
   local id="$1" count="$2" out="$3"
   shift 3
-  export SLURM_ARRAY_JOB_ID=77 SLURM_ARRAY_TASK_ID="$id" SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_COUNT="$count"
-  exec bash "$HERE/render-array.sbatch" "$SHOT" "$WORK/$out" "$@"
+  export SLURM_ARRAY_JOB_ID=77 SLURM_ARRAY_TASK_ID="$id"
+  exec bash "$HERE/render-array.sbatch" "$count" "$SHOT" "$WORK/$out" "$@"
 }
 # Whatever this test started and left running (a check failed half way).
 STARTED=()
@@ -111,6 +111,9 @@ CHECKS=$((CHECKS + 1))
 (task 11 12 spare "${ARGS[@]}") >spare.log 2>&1 || fail "a task without frames failed: $(cat spare.log)"
 grep -q "no frames left for it" spare.log || fail "the spare task did not say it had nothing to do: $(cat spare.log)"
 [ ! -e spare/part-11 ] || fail "the spare task made a folder"
+
+# A task outside 0..PARTS-1 (an --array that does not match PARTS) is refused.
+expect_error beyond "give the number of parts first" -- bash -c 'SLURM_ARRAY_JOB_ID=77 SLURM_ARRAY_TASK_ID=4 exec bash "$1" 4 "$2" "$3"' _ "$HERE/render-array.sbatch" "$SHOT" "$WORK/beyond"
 
 # 4. One folder, two renders at once: the second stops (the lock).
 LIGHTCONE_TEST_PAUSE_AFTER=1 "$LIGHTCONE" render "$SHOT" --out shared --progress 0 >first.log 2>&1 &
