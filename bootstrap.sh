@@ -22,9 +22,11 @@ packages=(
   libopenimageio-dev openimageio-tools libcli11-dev libfmt-dev libgtest-dev libcairo2-dev
 )
 # The end-to-end tests also read results back with tools a minimal Debian
-# lacks: python3 (PNG chunks, MP4 atoms, JSON) and procps (pgrep); the
+# lacks: python3 (PNG chunks, MP4 atoms, JSON), python3-openimageio and
+# python3-numpy (docs/layers.md's EXR reader, run as written) and procps
+# (pgrep); the
 # cluster test (tests/cluster/slurm.sh) runs a one-node Slurm of its own.
-if [ "$job" = test ]; then packages+=(python3 procps slurmctld slurmd slurm-client munge); fi
+if [ "$job" = test ]; then packages+=(python3 python3-openimageio python3-numpy procps slurmctld slurmd slurm-client munge); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -22,6 +22,7 @@
 #include "cost_command.hpp"
 #include "encode_command.hpp"
 #include "farm_bench_command.hpp"
+#include "farm/mpi_session.hpp"
 #include "geodesic_command.hpp"
 #include "plot_command.hpp"
 #include "inspect_command.hpp"
@@ -139,7 +140,8 @@ CLI::Validator number(std::optional<End> lo = std::nullopt, std::optional<End> h
 
 int main(int argc, char** argv) {
   CLI::App app{"lightcone: general-relativistic black-hole animation, traced along null geodesics", "lightcone"};
-  app.set_version_flag("--version", std::string("lightcone ") + LIGHTCONE_VERSION);
+  // The version and whether (and with which MPI) the binary runs as a farm.
+  app.set_version_flag("--version", [] { return std::string("lightcone ") + LIGHTCONE_VERSION + "\n" + lc::farm::mpi_description(); });
   app.require_subcommand(1);
 
   lc::GeodesicCommand geo;
@@ -223,6 +225,8 @@ int main(int argc, char** argv) {
   trace_cmd->add_option("-o,--output", trace.output, "CSV file to write (default: standard output)");
   trace_cmd->add_option("--size", trace.size, "Image size WxH instead of the shot's");
   trace_cmd->add_option("--scale", trace.scale, "Scale the image size by S")->check(number());
+  trace_cmd->add_flag("--json", trace.json,
+                      "Print the report as one JSON object on standard output (the path then only with -o)");
 
   lc::StarfieldCommand starfield;
   auto* starfield_cmd = app.add_subcommand("starfield", "Write the procedural star field as an equirectangular PNG");

@@ -192,7 +192,10 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
 
   farm::WorkQueue queue(job.rs, job.layout, plan.todo,
                         {.preview_every = job.preview, .max_open_frames = farm::open_frames_for(std::max(threads, 1), job.layout.stripes())});
-  farm::StoreSink sink(store, survey, info, job.rs, preview_rows(queue), job.shot->asset_dirs());
+  // A frame's point stars on as many threads as render it (the MPI
+  // master's writers draw four frames at once on a worker's node: one each).
+  const int star_threads = mpi ? 1 : threads;
+  farm::StoreSink sink(store, survey, info, job.rs, preview_rows(queue), job.shot->asset_dirs(), star_threads);
   farm::Progress progress(farm::progress_style_for(stderr, cmd.progress), cmd.progress);
   int cores = threads;
   const double cpu_at_start = master_cpu_seconds();
@@ -240,8 +243,9 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
              p.stats.reused ? fmt::format("; {} samples reused from earlier frames", p.stats.reused) : "",
              plan.done.empty() ? "" : fmt::format("; {} more were finished before", plan.done.size()));
   if (const double stars = sink.star_seconds(); stars > 0.0)
-    fmt::print(stderr, "render: point stars drawn in {:.2f} s ({:.1f}% of the time; on the {})\n", stars,
-               100 * stars / s, mpi ? "master" : "writer thread");
+    fmt::print(stderr, "render: point stars drawn in {:.2f} core-seconds ({:.1f}% of the CPU time), {:.2f} s of the writer's time; {}\n",
+               stars, 100 * stars / (stars + p.stats.seconds), sink.star_wall_seconds(),
+               mpi ? "on the master's writers" : fmt::format("on up to {} thread{}", star_threads, star_threads == 1 ? "" : "s"));
   if (mpi)
     fmt::print(stderr, "render: the master used {:.2f} s of CPU in {:.2f} s ({:.0f}% of one core) while {} worker threads rendered\n",
                master_cpu_seconds() - cpu_at_start, s, 100 * (master_cpu_seconds() - cpu_at_start) / s, cores);

@@ -1,11 +1,14 @@
 #include "trace_command.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <string>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "command_output.hpp"
+#include "core/json.hpp"
 #include "frame_range.hpp"
 #include "geodesic_csv.hpp"
 #include "render/scene_builder.hpp"
@@ -19,6 +22,33 @@ namespace lc {
 namespace {
 
 constexpr const char* kind_names[] = {"sky", "disk", "horizon", "object", "gave up"};
+
+// A float as JSON: its shortest exact spelling (the EXR's value to the
+// bit), null where JSON has no number.
+std::string json_float(float v) { return std::isfinite(v) ? fmt::format("{}", v) : "null"; }
+
+// What the ray through pixel (i, j) of frame f found, for people: one line
+// (the layers to 9 digits, the colour to 4).
+std::string text_report(int f, int i, int j, const RaySample& s) {
+  std::string values;
+  for (const LayerSpec& l : layers) values += fmt::format("{}{} {:.9g}", values.empty() ? "" : ", ", l.name, l.value(s));
+  return fmt::format("trace: frame {} pixel {},{}: hit {}, stop reason {}, {} steps; {}; colour {:.4g} {:.4g} {:.4g}\n", f,
+                     i, j, kind_names[static_cast<int>(s.kind)], to_string(s.reason), s.steps, values, s.color[0],
+                     s.color[1], s.color[2]);
+}
+
+// The same as one JSON object, for scripts: every number exact (layers and
+// colour as the floats the EXR holds).
+std::string json_report(int f, int i, int j, const RaySample& s) {
+  std::string values;
+  for (const LayerSpec& l : layers)
+    values += fmt::format("{}{}: {}", values.empty() ? "" : ", ", json_string(std::string(l.name)), json_float(l.value(s)));
+  return fmt::format(
+      "{{\"frame\": {}, \"pixel\": [{}, {}], \"hit\": {}, \"stop_reason\": {}, \"steps\": {}, \"layers\": {{{}}}, "
+      "\"colour\": [{}, {}, {}]}}\n",
+      f, i, j, json_string(kind_names[static_cast<int>(s.kind)]), json_string(std::string(to_string(s.reason))), s.steps,
+      values, json_float(s.color[0]), json_float(s.color[1]), json_float(s.color[2]));
+}
 
 }  // namespace
 
@@ -59,15 +89,18 @@ int run_trace(const TraceCommand& cmd) {
       scene);
   path.reason = s.reason;
   path.steps = s.steps;
-  std::string csv = geodesic_csv_header(false, false);
-  append_geodesic_csv(csv, st_out, path, false, std::nullopt);
-  write_output(cmd.output, csv);
+  // With --json standard output is the report's, so the path goes only
+  // to a file named with -o.
+  if (!cmd.json || cmd.output) {
+    std::string csv = geodesic_csv_header(false, false);
+    append_geodesic_csv(csv, st_out, path, false, std::nullopt);
+    write_output(cmd.output, csv);
+  }
   // Every data layer's value (render/layers.hpp), as the pixel's EXR holds it.
-  std::string values;
-  for (const LayerSpec& l : layers) values += fmt::format("{}{} {:.9g}", values.empty() ? "" : ", ", l.name, l.value(s));
-  fmt::print(stderr, "trace: frame {} pixel {},{}: hit {}, stop reason {}, {} steps; {}; colour {:.4g} {:.4g} {:.4g}\n", f,
-             i, j, kind_names[static_cast<int>(s.kind)], to_string(s.reason), s.steps, values, s.color[0], s.color[1],
-             s.color[2]);
+  if (cmd.json)
+    write_output(std::nullopt, json_report(f, i, j, s));
+  else
+    fmt::print(stderr, "{}", text_report(f, i, j, s));
   return 0;
 }
 

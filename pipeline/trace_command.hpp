@@ -1,7 +1,9 @@
 #pragma once
-// `lightcone trace SHOT.lua --frame F --pixel I,J [-o path.csv]`: follows the
-// ray through the centre of one pixel and writes its path (CSV as
-// `lightcone geodesic` writes, traced into the past) and what it hit.
+// `lightcone trace SHOT.lua --frame F --pixel I,J [-o path.csv] [--json]`:
+// follows the ray through the centre of one pixel and writes its path (CSV
+// as `lightcone geodesic` writes, traced into the past) and what it hit (a
+// line on standard error, or with --json one JSON object on standard
+// output).
 
 #include <filesystem>
 #include <optional>
@@ -16,6 +18,7 @@ struct TraceCommand {
   std::optional<std::filesystem::path> output;
   std::optional<std::string> size;
   double scale = 1.0;
+  bool json = false;  // the report as one JSON object on standard output (the path only with -o)
 };
 
 int run_trace(const TraceCommand& cmd);

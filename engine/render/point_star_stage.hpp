@@ -16,9 +16,11 @@ namespace lc {
 
 // Adds `stars` (a sky's: sky_point_stars) to `image`'s colour from the
 // frame's rays' sky points (`rays`: FrameImage::sky, one per pixel).
-// `camera` is the frame's, for the image's size.  Returns the number of
-// star images drawn.
+// `camera` is the frame's, for the image's size.  Runs on up to `threads`
+// threads (the image the same to the bit for any number) and adds the CPU
+// time it took, summed over them, to *cpu_seconds if given.  Returns the
+// number of star images drawn.
 long draw_point_stars(const PointStars& stars, const Camera& camera, std::span<const SkyPoint> rays,
-                      FrameImage& image);
+                      FrameImage& image, int threads = 1, double* cpu_seconds = nullptr);
 
 }  // namespace lc

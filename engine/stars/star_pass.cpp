@@ -1,13 +1,18 @@
 #include "stars/star_pass.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
 #include "core/constants.hpp"
+#include "core/cpu_time.hpp"
 #include "stars/sky_quad.hpp"
 
 namespace lc {
@@ -166,151 +171,212 @@ struct Deposit {
   Color flux;
 };
 
+// What one row of tiles found: its deposits in the order it made them.
+struct TileRow {
+  std::vector<Deposit> deposits;
+  long images = 0;
+};
+
+// A lit pixel's radiance, and how far (pixels) and with what weight its
+// glare's halo spreads.
+struct Lit {
+  Color radiance{};
+  int reach = 0;
+  double share = 0.0;
+};
+
+// Runs fn(k) for every k in [0, count) once, on up to `threads` threads
+// (this one among them) in no particular order; adds the CPU time the
+// threads it started spent to `helpers_cpu` (this thread's own is the
+// caller's to measure).  The first exception thrown is rethrown once all
+// stop.
+template <class F>
+void for_each_parallel(std::size_t count, int threads, F&& fn, double& helpers_cpu) {
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::exception_ptr error;
+  auto work = [&] {
+    for (std::size_t k; (k = next.fetch_add(1)) < count;) {
+      try {
+        fn(k);
+      } catch (...) {
+        std::lock_guard lock(mutex);
+        if (!error) error = std::current_exception();
+        next = count;
+      }
+    }
+  };
+  const std::size_t helpers = count == 0 ? 0 : std::min(count, static_cast<std::size_t>(std::max(1, threads))) - 1;
+  std::vector<std::thread> pool;
+  pool.reserve(helpers);
+  for (std::size_t t = 0; t < helpers; ++t)
+    pool.emplace_back([&] {
+      const double start = thread_cpu_seconds();
+      work();
+      std::lock_guard lock(mutex);
+      helpers_cpu += thread_cpu_seconds() - start;
+    });
+  work();
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
 }  // namespace
 
 long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const StarField& field,
-                     const CameraDirections& camera, const StarPassOptions& options, std::span<float> rgb) {
+                     const CameraDirections& camera, const StarPassOptions& options, std::span<float> rgb,
+                     double* cpu_seconds) {
   const int w = width, h = height;
   const std::size_t pixels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   if (w < 2 || h < 2 || sky.size() != pixels || rgb.size() != 3 * pixels)
     throw std::invalid_argument("star pass: the frame's rays or pixels do not match its size (at least 2 x 2)");
+  const double start = thread_cpu_seconds();
   const Grid grid(sky, w, h);
   const double cos_max = std::cos(options.max_patch_radius);
   const double cos_wide = std::cos(wide_patch);
   const double cos_plane = std::cos(plane_tile);
-  // The camera's and the sky's solid angles of quad (i, j) (0 and 0 where
-  // it is not used), made once each: the quads around one star's image
-  // are those around its neighbours' in a crowded lensed ring.
-  std::unordered_map<std::size_t, std::array<double, 2>> areas;
-  auto quad_areas = [&](int i, int j) -> std::array<double, 2> {
-    const std::size_t key = static_cast<std::size_t>(j + 1) * static_cast<std::size_t>(w + 1) + static_cast<std::size_t>(i + 1);
-    if (const auto it = areas.find(key); it != areas.end()) return it->second;
-    std::array<double, 2> a{0.0, 0.0};
-    if (const auto q = make_quad(grid.at(i, j), grid.at(i + 1, j), grid.at(i + 1, j + 1), grid.at(i, j + 1), cos_max)) {
-      const auto& k = q->corner;
-      a = {SkyQuad{{camera(k[0].x, k[0].y), camera(k[1].x, k[1].y), camera(k[2].x, k[2].y), camera(k[3].x, k[3].y)}}
-               .area(),
-           q->sky.area()};
-    }
-    return areas.emplace(key, a).first->second;
-  };
-  // The magnification at node (i, j): the camera's over the sky's solid
-  // angle of the quads around it.
-  auto magnification = [&](int i, int j) {
-    double seen = 0.0, sky_area = 0.0;
-    for (int qj = std::max(-1, j - 1); qj <= std::min(h - 1, j); ++qj)
-      for (int qi = std::max(-1, i - 1); qi <= std::min(w - 1, i); ++qi) {
-        const auto a = quad_areas(qi, qj);
-        seen += a[0];
-        sky_area += a[1];
+  // Each row of tiles (tj = -1, -1 + tile, ...) on its own: its quads' areas,
+  // its stars' images and the light they put on pixels, made without
+  // reading another row's (the areas a row needs beyond its edge are made
+  // again: the same numbers).  So the rows can run on any threads in any
+  // order, and their deposits, joined in row order, are the one-thread
+  // pass's to the bit.
+  const int tile_rows = (h + 1 + tile - 1) / tile;
+  std::vector<TileRow> rows(static_cast<std::size_t>(tile_rows));
+  auto tile_row = [&](std::size_t row) {
+    const int tj = -1 + static_cast<int>(row) * tile;
+    // The camera's and the sky's solid angles of quad (i, j) (0 and 0 where
+    // it is not used), made once each: the quads around one star's image
+    // are those around its neighbours' in a crowded lensed ring.
+    std::unordered_map<std::size_t, std::array<double, 2>> areas;
+    auto quad_areas = [&](int i, int j) -> std::array<double, 2> {
+      const std::size_t key = static_cast<std::size_t>(j + 1) * static_cast<std::size_t>(w + 1) + static_cast<std::size_t>(i + 1);
+      if (const auto it = areas.find(key); it != areas.end()) return it->second;
+      std::array<double, 2> a{0.0, 0.0};
+      if (const auto q = make_quad(grid.at(i, j), grid.at(i + 1, j), grid.at(i + 1, j + 1), grid.at(i, j + 1), cos_max)) {
+        const auto& k = q->corner;
+        a = {SkyQuad{{camera(k[0].x, k[0].y), camera(k[1].x, k[1].y), camera(k[2].x, k[2].y), camera(k[3].x, k[3].y)}}
+                 .area(),
+             q->sky.area()};
       }
-    return seen > 0.0 ? seen / std::max(sky_area, seen / options.max_magnification) : 0.0;
-  };
-  std::vector<Deposit> deposits;
-  long images = 0;
-  // An image of star s in quad q = (i, j): its light onto the pixels.
-  auto draw = [&](int i, int j, const Quad& q, std::size_t s) {
-    const auto uv = q.sky.locate(field.stars()[s].direction);
-    // A star on an edge two quads share is counted in one: the one where
-    // it is at u = 0 (v = 0).
-    if (!uv || (*uv)[0] >= 1.0 - locate_slack || (*uv)[1] >= 1.0 - locate_slack) return;
-    const double u = std::clamp((*uv)[0], 0.0, 1.0), v = std::clamp((*uv)[1], 0.0, 1.0);
-    const double wt[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
-    const double mu[4] = {magnification(i, j), magnification(i + 1, j), magnification(i + 1, j + 1),
-                          magnification(i, j + 1)};
-    double m = 0.0, x = 0.0, y = 0.0, colour = 0.0, beaming = 0.0;
-    for (std::size_t k = 0; k < 4; ++k) {
-      m += wt[k] * mu[k];
-      x += wt[k] * q.corner[k].x;
-      y += wt[k] * q.corner[k].y;
-      colour += wt[k] * q.corner[k].color;
-      beaming += wt[k] * q.corner[k].beaming;
-    }
-    const Color light = field.seen(s, static_cast<float>(colour), static_cast<float>(beaming));
-    // Tent filter: the pixels whose centres are within one pixel.
-    const double fx = x - 0.5, fy = y - 0.5;
-    const int px = static_cast<int>(std::floor(fx)), py = static_cast<int>(std::floor(fy));
-    const double ax = fx - px, ay = fy - py;
-    for (int k = 0; k < 4; ++k) {
-      const int pi_ = px + (k & 1), pj = py + (k >> 1);
-      if (pi_ < 0 || pj < 0 || pi_ >= w || pj >= h) continue;
-      const double share = m * ((k & 1) ? ax : 1 - ax) * ((k >> 1) ? ay : 1 - ay);
-      Deposit d{pi_, pj, {}};
-      for (int c = 0; c < 3; ++c) d.flux[c] = static_cast<float>(share * light[c]);
-      deposits.push_back(d);
-    }
-    ++images;
-  };
-  // The images in quad (i, j) of the stars `each` offers (each(f) calls
-  // f(star) for every one).  A star whose image here would be under a
-  // thousandth of the faintest star's light is left out (the thin rings of
-  // images at a shadow's edge hold most of a sky's stars, ever fainter):
-  // twice the quad's own magnification bounds its corners'.
-  auto stars_in = [&](int i, int j, const Quad& q, auto&& each) {
-    const auto a = quad_areas(i, j);
-    const double least =
-        invisible * field.faintest_luminance() * std::max(a[1], a[0] / options.max_magnification) / (2.0 * a[0]);
-    each([&](std::size_t s) {
-      const Vec3& d = field.stars()[s].direction;
-      if (field.luminance(s) >= least && dot3(d, q.centre) >= q.cos_reach && q.may_hold(d)) draw(i, j, q, s);
-    });
-  };
-  // The quads of a tile of tile x tile (cut at the grid's end), made once;
-  // a block of them is searched with one lookup in the bins for the cap
-  // their patches span, and a block whose cap holds many stars (a patch of
-  // sky the lens spreads wide) is split in four first, so each quad tests
-  // few stars.
-  std::vector<std::optional<Quad>> quads(static_cast<std::size_t>(tile * tile));
-  // `from`: the stars the enclosing block found (none for a whole tile,
-  // which asks the bins): a block only narrows them down.
-  auto search = [&](auto&& self, int ti, int tj, int i0, int j0, int i1, int j1,
-                    const std::vector<std::size_t>* from) -> void {
-    auto quad = [&](int i, int j) -> const std::optional<Quad>& {
-      return quads[static_cast<std::size_t>((j - tj) * tile + (i - ti))];
+      return areas.emplace(key, a).first->second;
     };
-    Vec3 sum{0, 0, 0};
-    int count = 0;
-    for (int j = j0; j < j1; ++j)
-      for (int i = i0; i < i1; ++i)
-        if (const auto& q = quad(i, j)) {
-          for (int m = 0; m < 3; ++m) sum[m] += q->centre[m];
-          ++count;
+    // The magnification at node (i, j): the camera's over the sky's solid
+    // angle of the quads around it.
+    auto magnification = [&](int i, int j) {
+      double seen = 0.0, sky_area = 0.0;
+      for (int qj = std::max(-1, j - 1); qj <= std::min(h - 1, j); ++qj)
+        for (int qi = std::max(-1, i - 1); qi <= std::min(w - 1, i); ++qi) {
+          const auto a = quad_areas(qi, qj);
+          seen += a[0];
+          sky_area += a[1];
         }
-    if (count == 0 || norm3(sum) == 0.0) return;
-    const Vec3 centre = unit3(sum);
-    double radius = 0.0;
-    for (int j = j0; j < j1; ++j)
-      for (int i = i0; i < i1; ++i)
-        if (const auto& q = quad(i, j))
-          radius = std::max(radius, std::acos(std::clamp(dot3(q->centre, centre), -1.0, 1.0)) +
-                                        std::acos(std::clamp(q->cos_reach, -1.0, 1.0)));
-    radius = std::min(radius, pi);
-    const double cos_radius = std::cos(radius);
-    std::vector<std::size_t> candidates;
-    auto take = [&](std::size_t s) {
-      if (dot3(field.stars()[s].direction, centre) >= cos_radius) candidates.push_back(s);
+      return seen > 0.0 ? seen / std::max(sky_area, seen / options.max_magnification) : 0.0;
     };
-    if (from)
-      for (const std::size_t s : *from) take(s);
-    else
-      field.bins().near(centre, radius, take);
-    if (candidates.empty()) return;
-    if (candidates.size() > split_above && count > 1) {
-      const int im = (i0 + i1 + 1) / 2, jm = (j0 + j1 + 1) / 2;
-      for (const auto& [a0, a1] : {std::pair{i0, im}, std::pair{im, i1}})
-        for (const auto& [b0, b1] : {std::pair{j0, jm}, std::pair{jm, j1}})
-          if (a0 < a1 && b0 < b1) self(self, ti, tj, a0, b0, a1, b1, &candidates);
-      return;
-    }
-    for (int j = j0; j < j1; ++j)
-      for (int i = i0; i < i1; ++i)
-        if (const auto& q = quad(i, j)) stars_in(i, j, *q, [&](auto&& f) {
-            for (const std::size_t s : candidates) f(s);
-          });
-  };
-  // Quads (i, j) .. (i + 1, j + 1) for i in [-1, w), j in [-1, h), a tile
-  // at a time.
-  for (int tj = -1; tj < h; tj += tile)
+    std::vector<Deposit> deposits;
+    long images = 0;
+    // An image of star s in quad q = (i, j): its light onto the pixels.
+    auto draw = [&](int i, int j, const Quad& q, std::size_t s) {
+      const auto uv = q.sky.locate(field.stars()[s].direction);
+      // A star on an edge two quads share is counted in one: the one where
+      // it is at u = 0 (v = 0).
+      if (!uv || (*uv)[0] >= 1.0 - locate_slack || (*uv)[1] >= 1.0 - locate_slack) return;
+      const double u = std::clamp((*uv)[0], 0.0, 1.0), v = std::clamp((*uv)[1], 0.0, 1.0);
+      const double wt[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
+      const double mu[4] = {magnification(i, j), magnification(i + 1, j), magnification(i + 1, j + 1),
+                            magnification(i, j + 1)};
+      double m = 0.0, x = 0.0, y = 0.0, colour = 0.0, beaming = 0.0;
+      for (std::size_t k = 0; k < 4; ++k) {
+        m += wt[k] * mu[k];
+        x += wt[k] * q.corner[k].x;
+        y += wt[k] * q.corner[k].y;
+        colour += wt[k] * q.corner[k].color;
+        beaming += wt[k] * q.corner[k].beaming;
+      }
+      const Color light = field.seen(s, static_cast<float>(colour), static_cast<float>(beaming));
+      // Tent filter: the pixels whose centres are within one pixel.
+      const double fx = x - 0.5, fy = y - 0.5;
+      const int px = static_cast<int>(std::floor(fx)), py = static_cast<int>(std::floor(fy));
+      const double ax = fx - px, ay = fy - py;
+      for (int k = 0; k < 4; ++k) {
+        const int pi_ = px + (k & 1), pj = py + (k >> 1);
+        if (pi_ < 0 || pj < 0 || pi_ >= w || pj >= h) continue;
+        const double share = m * ((k & 1) ? ax : 1 - ax) * ((k >> 1) ? ay : 1 - ay);
+        Deposit d{pi_, pj, {}};
+        for (int c = 0; c < 3; ++c) d.flux[c] = static_cast<float>(share * light[c]);
+        deposits.push_back(d);
+      }
+      ++images;
+    };
+    // The images in quad (i, j) of the stars `each` offers (each(f) calls
+    // f(star) for every one).  A star whose image here would be under a
+    // thousandth of the faintest star's light is left out (the thin rings of
+    // images at a shadow's edge hold most of a sky's stars, ever fainter):
+    // twice the quad's own magnification bounds its corners'.
+    auto stars_in = [&](int i, int j, const Quad& q, auto&& each) {
+      const auto a = quad_areas(i, j);
+      const double least =
+          invisible * field.faintest_luminance() * std::max(a[1], a[0] / options.max_magnification) / (2.0 * a[0]);
+      each([&](std::size_t s) {
+        const Vec3& d = field.stars()[s].direction;
+        if (field.luminance(s) >= least && dot3(d, q.centre) >= q.cos_reach && q.may_hold(d)) draw(i, j, q, s);
+      });
+    };
+    // The quads of a tile of tile x tile (cut at the grid's end), made once;
+    // a block of them is searched with one lookup in the bins for the cap
+    // their patches span, and a block whose cap holds many stars (a patch of
+    // sky the lens spreads wide) is split in four first, so each quad tests
+    // few stars.
+    std::vector<std::optional<Quad>> quads(static_cast<std::size_t>(tile * tile));
+    // `from`: the stars the enclosing block found (none for a whole tile,
+    // which asks the bins): a block only narrows them down.
+    auto search = [&](auto&& self, int ti, int tj, int i0, int j0, int i1, int j1,
+                      const std::vector<std::size_t>* from) -> void {
+      auto quad = [&](int i, int j) -> const std::optional<Quad>& {
+        return quads[static_cast<std::size_t>((j - tj) * tile + (i - ti))];
+      };
+      Vec3 sum{0, 0, 0};
+      int count = 0;
+      for (int j = j0; j < j1; ++j)
+        for (int i = i0; i < i1; ++i)
+          if (const auto& q = quad(i, j)) {
+            for (int m = 0; m < 3; ++m) sum[m] += q->centre[m];
+            ++count;
+          }
+      if (count == 0 || norm3(sum) == 0.0) return;
+      const Vec3 centre = unit3(sum);
+      double radius = 0.0;
+      for (int j = j0; j < j1; ++j)
+        for (int i = i0; i < i1; ++i)
+          if (const auto& q = quad(i, j))
+            radius = std::max(radius, std::acos(std::clamp(dot3(q->centre, centre), -1.0, 1.0)) +
+                                          std::acos(std::clamp(q->cos_reach, -1.0, 1.0)));
+      radius = std::min(radius, pi);
+      const double cos_radius = std::cos(radius);
+      std::vector<std::size_t> candidates;
+      auto take = [&](std::size_t s) {
+        if (dot3(field.stars()[s].direction, centre) >= cos_radius) candidates.push_back(s);
+      };
+      if (from)
+        for (const std::size_t s : *from) take(s);
+      else
+        field.bins().near(centre, radius, take);
+      if (candidates.empty()) return;
+      if (candidates.size() > split_above && count > 1) {
+        const int im = (i0 + i1 + 1) / 2, jm = (j0 + j1 + 1) / 2;
+        for (const auto& [a0, a1] : {std::pair{i0, im}, std::pair{im, i1}})
+          for (const auto& [b0, b1] : {std::pair{j0, jm}, std::pair{jm, j1}})
+            if (a0 < a1 && b0 < b1) self(self, ti, tj, a0, b0, a1, b1, &candidates);
+        return;
+      }
+      for (int j = j0; j < j1; ++j)
+        for (int i = i0; i < i1; ++i)
+          if (const auto& q = quad(i, j)) stars_in(i, j, *q, [&](auto&& f) {
+              for (const std::size_t s : candidates) f(s);
+            });
+    };
+    // Quads (i, j) .. (i + 1, j + 1) for i in [-1, w), j in [tj, tj + tile), a
+    // tile at a time.
     for (int ti = -1; ti < w; ti += tile) {
       const int i1 = std::min(w, ti + tile), j1 = std::min(h, tj + tile);
       // The tile's nodes, made from the rays once.
@@ -408,6 +474,16 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
         }
       search(search, ti, tj, ti, tj, i1, j1, nullptr);
     }
+    rows[row] = {std::move(deposits), images};
+  };
+  double cpu = 0.0;
+  for_each_parallel(rows.size(), options.threads, tile_row, cpu);
+  std::vector<Deposit> deposits;
+  long images = 0;
+  for (TileRow& r : rows) {
+    deposits.insert(deposits.end(), r.deposits.begin(), r.deposits.end());
+    images += r.images;
+  }
   // The light landed on each pixel, summed (a crowded lensed ring puts
   // many images on one).
   std::sort(deposits.begin(), deposits.end(),
@@ -423,37 +499,61 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
   deposits.resize(kept);
   // Flux to radiance over each pixel's solid angle; the glare's share
   // spread over the halo around it (the pixels there taken as the same
-  // size: the halo spans a few pixels).
+  // size: the halo spans a few pixels).  Each lit pixel's radiance and halo
+  // on its own, in parallel.
   const std::optional<GlareKernel> kernel =
       options.glare > 0.0 ? std::optional<GlareKernel>(GlareKernel(options.glare_radius)) : std::nullopt;
-  for (const Deposit& d : deposits) {
-    const double omega =
-        SkyQuad{{camera(d.i, d.j), camera(d.i + 1, d.j), camera(d.i + 1, d.j + 1), camera(d.i, d.j + 1)}}.area();
-    Color radiance;
-    for (int c = 0; c < 3; ++c) radiance[c] = static_cast<float>(d.flux[c] / omega);
-    auto add = [&](int i, int j, float k) {
-      float* p = &rgb[3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i))];
-      for (int c = 0; c < 3; ++c) p[c] += k * radiance[c];
-    };
-    if (!kernel) {
-      add(d.i, d.j, 1.0f);
-      continue;
+  std::vector<Lit> lit(deposits.size());
+  constexpr std::size_t chunk = 256;
+  for_each_parallel((deposits.size() + chunk - 1) / chunk, options.threads, [&](std::size_t c) {
+    for (std::size_t k = c * chunk; k < std::min(deposits.size(), (c + 1) * chunk); ++k) {
+      const Deposit& d = deposits[k];
+      const double omega =
+          SkyQuad{{camera(d.i, d.j), camera(d.i + 1, d.j), camera(d.i + 1, d.j + 1), camera(d.i, d.j + 1)}}.area();
+      Lit& l = lit[k];
+      for (int m = 0; m < 3; ++m) l.radiance[m] = static_cast<float>(d.flux[m] / omega);
+      if (!kernel) continue;
+      // The halo as far as it is brighter than the invisible share of the
+      // faintest star's light on one pixel (a faint image's stops at once),
+      // its weights scaled up to keep the light.
+      const double glow = options.glare * (0.2126 * l.radiance[0] + 0.7152 * l.radiance[1] + 0.0722 * l.radiance[2]);
+      const double floor = invisible * field.faintest_luminance() / omega;
+      while (l.reach < kernel->radius && glow * kernel->at_radius[static_cast<std::size_t>(l.reach + 1)] >= floor) ++l.reach;
+      l.share = options.glare / kernel->within[static_cast<std::size_t>(l.reach)];
     }
-    add(d.i, d.j, static_cast<float>(1.0 - options.glare));
-    // The halo as far as it is brighter than the invisible share of the
-    // faintest star's light on one pixel (a faint image's stops at once),
-    // its weights scaled up to keep the light.
-    const double glow = options.glare * (0.2126 * radiance[0] + 0.7152 * radiance[1] + 0.0722 * radiance[2]);
-    const double floor = invisible * field.faintest_luminance() / omega;
-    int r = 0;
-    while (r < kernel->radius && glow * kernel->at_radius[static_cast<std::size_t>(r + 1)] >= floor) ++r;
-    const int n = 2 * kernel->radius + 1, c0 = kernel->radius;
-    const double share = options.glare / kernel->within[static_cast<std::size_t>(r)];
-    for (int dy = std::max(-r, -d.j); dy <= std::min(r, h - 1 - d.j); ++dy)
-      for (int dx = std::max(-r, -d.i); dx <= std::min(r, w - 1 - d.i); ++dx)
-        if (const double k = kernel->weight[static_cast<std::size_t>((dy + c0) * n + dx + c0)]; k > 0.0)
-          add(d.i + dx, d.j + dy, static_cast<float>(share * k));
-  }
+  }, cpu);
+  // The light onto the image by bands of rows, each band from every lit
+  // pixel whose halo reaches it, in the lit pixels' order: so each pixel
+  // sums what lands on it in the order one thread would.
+  const int reach = kernel ? kernel->radius : 0;
+  const int bands = (h + tile - 1) / tile;
+  for_each_parallel(static_cast<std::size_t>(bands), options.threads, [&](std::size_t b) {
+    const int y0 = static_cast<int>(b) * tile, y1 = std::min(h, y0 + tile);
+    auto row_at_least = [&](int j) {
+      return std::partition_point(deposits.begin(), deposits.end(), [j](const Deposit& d) { return d.j < j; }) -
+             deposits.begin();
+    };
+    const auto first = row_at_least(y0 - reach), last = row_at_least(y1 + reach);
+    for (auto k = first; k < last; ++k) {
+      const Deposit& d = deposits[static_cast<std::size_t>(k)];
+      const Lit& l = lit[static_cast<std::size_t>(k)];
+      auto add = [&](int i, int j, float weight) {
+        float* p = &rgb[3 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i))];
+        for (int m = 0; m < 3; ++m) p[m] += weight * l.radiance[m];
+      };
+      if (!kernel) {
+        if (d.j >= y0 && d.j < y1) add(d.i, d.j, 1.0f);
+        continue;
+      }
+      if (d.j >= y0 && d.j < y1) add(d.i, d.j, static_cast<float>(1.0 - options.glare));
+      const int r = l.reach, n = 2 * kernel->radius + 1, c0 = kernel->radius;
+      for (int dy = std::max({-r, -d.j, y0 - d.j}); dy <= std::min({r, h - 1 - d.j, y1 - 1 - d.j}); ++dy)
+        for (int dx = std::max(-r, -d.i); dx <= std::min(r, w - 1 - d.i); ++dx)
+          if (const double k = kernel->weight[static_cast<std::size_t>((dy + c0) * n + dx + c0)]; k > 0.0)
+            add(d.i + dx, d.j + dy, static_cast<float>(l.share * k));
+    }
+  }, cpu);
+  if (cpu_seconds) *cpu_seconds += cpu + thread_cpu_seconds() - start;
   return images;
 }
 

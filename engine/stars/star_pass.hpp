@@ -32,6 +32,10 @@ struct StarPassOptions {
   // (1 + r^2 / a^2)^-2 of scale a = glare_radius pixels, cut at 8 a.
   double glare = 0.0;
   double glare_radius = 1.0;
+  // Threads the pass may use (this one among them).  The image is the
+  // same to the bit for any number: rows of tiles and bands of pixels are
+  // worked out apart and joined in a fixed order.
+  int threads = 1;
 };
 
 // The camera's unit direction through image point (x, y) in pixel units
@@ -41,8 +45,12 @@ using CameraDirections = std::function<Vec3(double x, double y)>;
 // Adds the stars' light to `rgb` (linear RGB, 3 floats per pixel, row by
 // row, width x height); `sky` holds each pixel's ray (width x height).
 // Pixels on the image's edge get their outer quads from rays extrapolated
-// one pixel beyond it.  Returns how many star images were added.
+// one pixel beyond it.  Returns how many star images were added; adds the
+// CPU time the pass took, summed over its threads, to *cpu_seconds if
+// given.  `camera` is called from several threads at once when
+// options.threads > 1.
 long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const StarField& field,
-                     const CameraDirections& camera, const StarPassOptions& options, std::span<float> rgb);
+                     const CameraDirections& camera, const StarPassOptions& options, std::span<float> rgb,
+                     double* cpu_seconds = nullptr);
 
 }  // namespace lc

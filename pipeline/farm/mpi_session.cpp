@@ -1,11 +1,32 @@
 #include "farm/mpi_session.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 
+#include <fmt/format.h>
 #include <mpi.h>
 
 namespace lc::farm {
+
+std::string mpi_description() {
+#ifdef OMPI_MAJOR_VERSION
+  const std::string built = fmt::format("Open MPI {}.{}.{}", OMPI_MAJOR_VERSION, OMPI_MINOR_VERSION, OMPI_RELEASE_VERSION);
+#else
+  const std::string built = fmt::format("an MPI {}.{} library", MPI_VERSION, MPI_SUBVERSION);
+#endif
+  // The loaded library's own name and version: its text up to the first
+  // comma ("Open MPI v4.1.4, package: ...").
+  char text[MPI_MAX_LIBRARY_VERSION_STRING] = {};
+  int length = 0;
+  std::string loaded = "unknown";
+  if (MPI_Get_library_version(text, &length) == MPI_SUCCESS) {
+    const std::string all(text, static_cast<std::size_t>(std::clamp(length, 0, MPI_MAX_LIBRARY_VERSION_STRING)));
+    loaded = all.substr(0, all.find_first_of(",\n"));
+  }
+  return fmt::format("MPI: {} (built against; loaded: {}); mpirun or srun --mpi=pmix makes a render a farm", built, loaded);
+}
 
 // Open MPI's mpirun sets OMPI_COMM_WORLD_SIZE; PMIx and PMI launchers
 // (srun, MPICH's hydra) set PMIX_RANK or PMI_RANK / PMI_SIZE.

@@ -6,7 +6,14 @@
 // starting one.  Only the thread that made the session calls MPI
 // (MPI_THREAD_FUNNELED).
 
+#include <string>
+
 namespace lc::farm {
+
+// "MPI: Open MPI 4.1.4 (built against; loaded: Open MPI v4.1.4)": the MPI
+// this binary was compiled with and the library it loaded, for `lightcone
+// --version`.  Needs no MPI_Init (MPI_Get_library_version may precede it).
+std::string mpi_description();
 
 class MpiSession {
  public:

@@ -1,5 +1,6 @@
 #include "farm/store_sink.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -14,9 +15,9 @@ FrameSettings frame_settings(const RenderSettings& rs) {
 }
 
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
-                     std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs)
+                     std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs, int star_threads)
     : store_(store), survey_(survey), shot_name_(shot.name), fps_(shot.fps), display_(shot.display()), rs_(rs),
-      preview_rows_(std::move(preview_rows)), resources_(std::move(asset_dirs)) {}
+      preview_rows_(std::move(preview_rows)), resources_(std::move(asset_dirs)), star_threads_(std::max(1, star_threads)) {}
 
 void StoreSink::store(const CompletedFrame& cf) {
   if (cf.pass == Pass::preview) {
@@ -33,15 +34,20 @@ void StoreSink::store(const CompletedFrame& cf) {
   const FrameImage* written = &cf.image;
   FrameImage with_stars;
   FrameCost cost{.rays = cf.stats.rays, .reused = cf.stats.reused, .core_seconds = cf.stats.seconds};
+  // Its cost is CPU time, as the rays' is: the stage's threads share the
+  // cores with the render threads, so wall time would count their waits.
   if (const auto stars = cf.image.sky.empty() ? std::nullopt : sky_point_stars(facts.sky, resources_)) {
     const auto start = std::chrono::steady_clock::now();
     with_stars = {cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}};
-    draw_point_stars(*stars, Camera(facts.camera, with_stars.width, with_stars.height), cf.image.sky, with_stars);
+    double cpu = 0.0;
+    draw_point_stars(*stars, Camera(facts.camera, with_stars.width, with_stars.height), cf.image.sky, with_stars,
+                     star_threads_, &cpu);
     written = &with_stars;
+    cost.star_seconds = cpu;
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-    cost.star_seconds = took.count();
     std::lock_guard lock(star_mutex_);
-    star_seconds_ += took.count();
+    star_seconds_ += cpu;
+    star_wall_seconds_ += took.count();
   }
   // The same header in every mode (threads, ranks), so files are identical.
   // The frame rate lets `lightcone encode` play the frames at the shot's pace.
@@ -58,6 +64,11 @@ void StoreSink::store(const CompletedFrame& cf) {
 double StoreSink::star_seconds() const {
   std::lock_guard lock(star_mutex_);
   return star_seconds_;
+}
+
+double StoreSink::star_wall_seconds() const {
+  std::lock_guard lock(star_mutex_);
+  return star_wall_seconds_;
 }
 
 }  // namespace lc::farm

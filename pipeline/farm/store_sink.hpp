@@ -15,12 +15,17 @@ class StoreSink final : public FrameSink {
  public:
   // `survey` gives each frame's input hash, spacetime, sky and camera;
   // `preview_rows` the rows a preview frame has (sorted); `asset_dirs` the
-  // shot's (Shot::asset_dirs), where a point-star sky's background is read.
+  // shot's (Shot::asset_dirs), where a point-star sky's background is read;
+  // `star_threads` how many threads a frame's point stars are drawn on
+  // (the writer's among them; the frame is the same for any number).
   StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
-            std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs);
+            std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs, int star_threads = 1);
   void store(const CompletedFrame& frame) override;
-  // Seconds spent drawing point stars so far (all writer threads).
+  // CPU time spent drawing point stars so far, summed over every thread
+  // that drew them (core-seconds).
   double star_seconds() const;
+  // The wall time the writers spent in the stage, summed over them.
+  double star_wall_seconds() const;
 
  private:
   FrameStore& store_;
@@ -31,8 +36,9 @@ class StoreSink final : public FrameSink {
   RenderSettings rs_;
   std::vector<int> preview_rows_;
   ShotResources resources_;  // the skies' stars, for the stage after the pixels
+  int star_threads_;
   mutable std::mutex star_mutex_;
-  double star_seconds_ = 0.0;
+  double star_seconds_ = 0.0, star_wall_seconds_ = 0.0;
 };
 
 // The journal's spelling of the settings.

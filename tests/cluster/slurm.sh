@@ -6,6 +6,8 @@
 #   1. sbatch of tests/cluster/render-pmix.sbatch (srun --mpi=pmix) and of
 #      render-mpirun.sbatch (mpirun inside the allocation), 3 tasks (the
 #      master and 2 workers): frames byte-identical to a 1-thread render.
+#   1b. sbatch --array=0-1 of render-array.sbatch, then join-array.sbatch
+#      after both (afterok): the joined frames byte-identical, one video.
 #   2. scancel mid-render (the workers held at a known point by the test
 #      hook LIGHTCONE_TEST_PAUSE_AFTER), then sbatch again: it resumes, no
 #      frame is rendered twice, the frames are byte-identical: under srun,
@@ -250,6 +252,24 @@ for launcher in pmix mpirun; do
   same_frames "$launcher"
   [ "$(frames_done "$launcher")" -eq 10 ] || fail "$launcher: journal: $(cat "$launcher/farm_orbit.journal")"
 done
+
+# 1b. docs/cluster.md's array job: two tasks, each its block of frames in its
+# own folder, then the join once both have succeeded (afterok).
+CHECKS=$((CHECKS + 1))
+JOBS_SUBMITTED=$((JOBS_SUBMITTED + 1))
+if ARRAY=$(sbatch --parsable --array=0-1 --output="$WORK/array-%a.log" "$HERE/render-array.sbatch" 2 "$SHOT" "$WORK/array" "${ARGS[@]}") &&
+  JOIN=$(sbatch --parsable --dependency="afterok:${ARRAY%%;*}" --kill-on-invalid-dep=yes --output="$WORK/join.log" \
+    "$HERE/join-array.sbatch" "$WORK/array"); then
+  s=$(wait_job "${JOIN%%;*}" 180)
+  [ "$s" = COMPLETED ] || fail "array join (job ${JOIN%%;*}): $s: $(cat join.log array-*.log 2>/dev/null)"
+  for t in 0 1; do
+    [ "$(frames_done "array/part-$t")" -eq 5 ] || fail "array task $t: $(frames_done "array/part-$t") frames journalled, expected 5"
+  done
+  same_frames array/all
+  check_probe array.mp4 codec_name=h264 nb_read_frames=10
+else
+  fail "array: sbatch failed"
+fi
 
 # 2. scancel mid-render, then sbatch again.  Each worker holds its sets after
 # 40 (two frames' worth together: a frame is certainly stored), so the job

@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include "core/constants.hpp"
 #include "stars/sky_quad.hpp"
@@ -130,6 +132,67 @@ TEST(StarPass, StarsAtTheImagesEdgeAndBehindObjects) {
   // Pixel (10, 5) met an object: a star beside its centre is hidden.
   sky[5 * 32 + 10].theta = -1;
   EXPECT_EQ(render(cam, sky, cam.at(10.6, 5.6)).lit, 0);
+}
+
+
+// The pass on several threads: rows of tiles and bands of pixels are
+// worked out apart and joined in a fixed order, so the image is the same
+// to the bit for any thread count.  A lens-like sky (a point lens's map:
+// a shadow, two images of each star, a crowded ring) of 3,000 stars with
+// glare, on an odd-sized image (rows of tiles cut short at its edge).
+TEST(StarPass, TheImageIsTheSameToTheBitOnAnyNumberOfThreads) {
+  const Pinhole cam{97, 61, 60};
+  std::vector<SkyPoint> sky = cam.sky();
+  const double einstein = 0.15;  // rad
+  for (int j = 0; j < cam.height; ++j)
+    for (int i = 0; i < cam.width; ++i) {
+      SkyPoint& p = sky[static_cast<std::size_t>(j * cam.width + i)];
+      const Vec3 d = cam.at(i + p.dx, j + p.dy);
+      const double x = d[0] / d[2], y = d[1] / d[2], t = std::hypot(x, y);
+      if (t < 0.3 * einstein) {
+        p.theta = -1;  // the shadow
+        continue;
+      }
+      const double f = 1 - einstein * einstein / (t * t);  // source = image * f
+      const Vec3 s = unit3({x * f, y * f, 1});
+      p.theta = std::acos(s[2]);
+      p.phi = std::atan2(s[1], s[0]);
+      if (p.phi < 0) p.phi += two_pi;
+    }
+  std::vector<PointStar> stars;
+  unsigned long seed = 12345;
+  auto uniform = [&seed] {
+    seed = seed * 6364136223846793005UL + 1442695040888963407UL;
+    return static_cast<double>(seed >> 11) / 9007199254740992.0;
+  };
+  for (int k = 0; k < 3000; ++k)
+    stars.push_back({unit3({uniform() - 0.5, (uniform() - 0.5) * 0.7, 1}),
+                     Color{static_cast<float>(0.1 + uniform()), 1.0f, static_cast<float>(0.5 + uniform())}});
+  const StarField field(stars, nullptr, nullptr);
+  StarPassOptions o;
+  o.glare = 0.1;
+  o.glare_radius = 1.5;
+  auto draw = [&](int threads, long& images, double& cpu) {
+    std::vector<float> image(3 * static_cast<std::size_t>(cam.width * cam.height), 0.25f);
+    o.threads = threads;
+    cpu = 0.0;
+    images = add_point_stars(sky, cam.width, cam.height, field, [&](double x, double y) { return cam.at(x, y); }, o,
+                             image, &cpu);
+    return image;
+  };
+  long one_images = 0;
+  double one_cpu = 0.0;
+  const std::vector<float> one = draw(1, one_images, one_cpu);
+  EXPECT_GT(one_images, 1000) << "too few images to test anything";
+  EXPECT_GT(one_cpu, 0.0);
+  for (const int threads : {2, 3, 7, 64}) {
+    long images = 0;
+    double cpu = 0.0;
+    const std::vector<float> many = draw(threads, images, cpu);
+    EXPECT_EQ(images, one_images) << threads << " threads";
+    EXPECT_GT(cpu, 0.0) << threads << " threads";
+    EXPECT_EQ(std::memcmp(many.data(), one.data(), one.size() * sizeof(float)), 0) << threads << " threads";
+  }
 }
 
 }  // namespace
