@@ -1,6 +1,7 @@
-// Tests of what the shot-author API says about names it does not know:
-// lc.<name> for a name the library lacks (engine/script/engine_api.cpp,
-// scripts/lightcone.lua).
+// Tests of what the shot-author API says about names and fields it does not
+// know: lc.<name> for a name the library lacks (engine/script/engine_api.cpp,
+// scripts/lightcone.lua), and unknown fields before bad values, for every
+// constructor (engine/script/field_reader.hpp).
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "lua/sandbox.hpp"
+#include "lua/table_reader.hpp"
 #include "script/geodesic_spec.hpp"
 #include "script/shot.hpp"
 #include "scratch_dir.hpp"
@@ -18,6 +20,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using lc::lua::FieldError;
 using lc::lua::ScriptError;
 using lc::test::error_of;
 using lc::test::ScratchDir;
@@ -126,6 +129,44 @@ TEST(ScriptErrors, UnknownNameInAGeodesicSpecIsAnErrorAtItsLine) {
                       0),
             0u)
       << msg;
+}
+
+// lc.camera{fov = 180, projection = "fisheye"} said fov must be less than
+// 180: the unknown field, which the author most likely meant to matter, is
+// reported first, for every constructor and the shot table. A kind's own
+// extra fields (the sphere's placement) are no unknown ones.
+TEST(ScriptErrors, UnknownFieldsAreReportedBeforeBadValues) {
+  ScratchDir dir;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"lc.camera{fov = 180, projection = 'fisheye'}", "camera: unknown field 'projection'"},
+      {"lc.kerr{mass = -1, charge = 0.5}", "kerr: unknown field 'charge'"},
+      {"lc.dihole{m1 = -1, m2 = 1, distance = 2}", "dihole: unknown field 'distance'"},
+      {"lc.minkowski{mass = 1}", "minkowski: unknown field 'mass'"},
+      {"lc.sky_checker{rows = 0, colour = {{1, 1, 1}, {0, 0, 0}}}", "sky_checker: unknown field 'colour' (did you "
+                                                                    "mean 'colors'?)"},
+      {"lc.sky_stars{resolution = 1, sede = 3}", "sky_stars: unknown field 'sede' (did you mean 'seed'?)"},
+      {"lc.starfield{glare = 2, backgrnd = 'none'}", "starfield: unknown field 'backgrnd' (did you mean 'background'?)"},
+      {"lc.sky_image{file = '', brightnes = 1}", "sky_image: unknown field 'brightnes' (did you mean 'brightness'?)"},
+      {"lc.disk{inner = -1, outer = 5, ring = 3}", "disk: unknown field 'ring' (did you mean 'rings'?)"},
+      {"lc.sphere{radius = -1, position = {x = 0, y = 0, z = 5}, rows = 0, colums = 3}",
+       "sphere: unknown field 'colums' (did you mean 'columns'?)"},
+      {"lc.light{model = 'nonsense', doppler = true}", "light: unknown field 'doppler'"},
+  };
+  for (const auto& [call, expected] : cases) {
+    const fs::path file = shot_running(dir, "local x = " + call);
+    const std::string msg = first_line(error_of<ScriptError>([&] { lc::Shot shot(file); }));
+    EXPECT_EQ(msg, file.string() + ":2: " + expected) << call;
+  }
+  // A sphere placed as it must be, with no unknown field, reads.
+  EXPECT_NO_THROW(lc::Shot shot(shot_running(dir, "local s = lc.sphere{radius = 1, position = {x = 0, y = 0, z = 5}}")));
+
+  // The shot table.
+  const fs::path shot = write_file(dir, "table.lua",
+                                   std::string("local lc = require 'lightcone'\n"
+                                               "return {name = 'shot', frames = 0, width = 8, height = 8, sampels = 4,\n"
+                                               "  frame = function(i) return ") +
+                                       kScene + " end}\n");
+  EXPECT_EQ(error_of<FieldError>([&] { lc::Shot s(shot); }), shot.string() + ": unknown field 'sampels'");
 }
 
 }  // namespace
