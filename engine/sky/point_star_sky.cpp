@@ -122,7 +122,7 @@ PointStars PointStarSky::stars(const Params& p, ShotResources& res) {
 }
 
 PointStarSky::PointStarSky(const Params& p, ShotResources& res)
-    : rotate_(p.rotate), scale_(static_cast<float>(std::exp2(p.brightness))), stars_(stars(p, res)) {
+    : rotate_(p.rotate), scale_(brightness_scale(p.brightness)), stars_(stars(p, res)) {
   if (p.background == "generated")
     background_ = res.sky_glow(p.seed, glow_width);
   else if (is_image(p.background))
@@ -133,9 +133,7 @@ Color PointStarSky::color(double theta, double phi) const {
   if (!background_) return {0.0f, 0.0f, 0.0f};
   Color c;
   background_->sample(rotated_longitude(phi, rotate_) / two_pi, theta / pi, c.data());
-  if (scale_ != 1.0f)
-    for (float& v : c) v *= scale_;
-  return c;
+  return scaled(c, scale_);
 }
 
 }  // namespace lc
