@@ -1,10 +1,13 @@
 // Tests of the skies' light (engine/sky/): every sky's `brightness` scales
 // what its rays see by 2^brightness, so that a sky can be lifted to a scene
 // in physical units (docs/light.md), where a shot's exposure near -34 left
-// lc.sky_checker{}, which had no brightness, black.
+// lc.sky_checker{}, which had no brightness, black; and what lc.starfield{}
+// puts behind the stars by default: the generated glow for the generated
+// field, nothing for the real sky's stars.
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -101,6 +104,58 @@ TEST(Sky, CheckerSkyBrightnessIsADeclaredField) {
               std::string::npos)
         << e.what();
   }
+}
+
+// A catalogue of two stars typed for the test, named by
+// LIGHTCONE_STAR_CATALOGUE while it lives.
+class TypedCatalogue {
+ public:
+  TypedCatalogue() {
+    std::ofstream(dir_ / "stars.dat") << "064508.92 -164258.0 -000546.0-001223.100379.2 -1.4400.01A0 1, alp CMa, Sirius\n"
+                                      << "183656.34 +384701.3 000201.7 000286.9 00128.9 00.03-0.00A0 1, alp Lyr, Vega\n";
+    ::setenv("LIGHTCONE_STAR_CATALOGUE", (dir_ / "stars.dat").c_str(), 1);
+  }
+  ~TypedCatalogue() { ::unsetenv("LIGHTCONE_STAR_CATALOGUE"); }
+  TypedCatalogue(const TypedCatalogue&) = delete;
+  TypedCatalogue& operator=(const TypedCatalogue&) = delete;
+
+ private:
+  test::ScratchDir dir_;
+};
+
+// lc.starfield{catalogue = "kstars"} painted the generated field's band, in
+// a place that has nothing to do with the real Milky Way, behind the real
+// stars. By default the real sky's background is black now (its stars are
+// drawn after the pixels, not by the rays); the glow is there when asked.
+TEST(Sky, TheRealSkysDefaultBackgroundIsNoGeneratedGlow) {
+  const TypedCatalogue catalogue;
+  PointStarSky::Params real;
+  real.catalogue = StarCatalogue::kstars;
+  EXPECT_EQ(real.background, "auto");
+  EXPECT_EQ(PointStarSky::background(real), "none");
+  EXPECT_EQ(largest(sky_frame(real)), 0.0f);
+
+  PointStarSky::Params asked = real;
+  asked.background = "generated";
+  PointStarSky::Params generated;  // the generated field, its default background
+  const std::vector<Color> glow = sky_frame(asked);
+  EXPECT_GT(largest(glow), 0.0f);
+  EXPECT_EQ(glow, sky_frame(generated));  // the same glow as the generated field's
+}
+
+// The generated field keeps its glow by default: the frames of every shot
+// that uses it are what they were.
+TEST(Sky, TheGeneratedFieldsDefaultBackgroundIsItsGlow) {
+  PointStarSky::Params p;
+  EXPECT_EQ(PointStarSky::background(p), "generated");
+  PointStarSky::Params explicit_glow = p;
+  explicit_glow.background = "generated";
+  const std::vector<Color> frame = sky_frame(p);
+  EXPECT_GT(largest(frame), 0.0f);
+  EXPECT_EQ(frame, sky_frame(explicit_glow));
+  PointStarSky::Params none = p;
+  none.background = "none";
+  EXPECT_EQ(largest(sky_frame(none)), 0.0f);
 }
 
 }  // namespace
