@@ -151,6 +151,22 @@ TEST(ScriptErrors, UnknownFieldsAreReportedBeforeBadValues) {
       {"lc.sphere{radius = -1, position = {x = 0, y = 0, z = 5}, rows = 0, colums = 3}",
        "sphere: unknown field 'colums' (did you mean 'columns'?)"},
       {"lc.light{model = 'nonsense', doppler = true}", "light: unknown field 'doppler'"},
+      // Kinds read by hand check their keys first too.
+      {"lc.static_observer{r = -1, theta = 90, phi = 0, tilt = 3}", "static_observer: unknown field 'tilt'"},
+      {"lc.zamo{r = 'far', theta = 90, phi = 0, spin = 1}", "zamo: unknown field 'spin'"},
+      {"lc.worldline{spacetime = lc.kerr{mass = 1}, start = {r = 10, theta = 90, phi = 0}, duration = -1, "
+       "velocty = {phi = 0.3}}",
+       "worldline: unknown field 'velocty' (did you mean 'velocity'?)"},
+      {"lc.worldline{spacetime = lc.kerr{mass = 1}, start = {r = -10, theta = 90, phi = 0, z = 1}, duration = 5}",
+       "worldline.start: give either {r, theta, phi} (Boyer–Lindquist, degrees) or {x, y, z}, not both"},
+      {"lc.worldline{spacetime = lc.kerr{mass = 1}, start = {r = -10, theta = 90, phi = 0, q = 1}, duration = 5}",
+       "worldline.start: unknown field 'q'"},
+      {"lc.worldline{spacetime = lc.kerr{mass = 1}, start = {r = 10, theta = 90, phi = 0}, duration = 5, "
+       "velocity = {phi = 2, psi = 1}}",
+       "worldline.velocity: unknown field 'psi' (did you mean 'phi'?)"},
+      {"lc.free_fall{worldline = lc.worldline{spacetime = lc.kerr{mass = 1}, start = {r = 10, theta = 90, phi = 0}, "
+       "duration = 5}, proper_time = 9, tau = 1}",
+       "free_fall: unknown field 'tau'"},
   };
   for (const auto& [call, expected] : cases) {
     const fs::path file = shot_running(dir, "local x = " + call);
