@@ -313,17 +313,26 @@ constexpr int kLinelessRecursion = 100;
 // kFramesTail from the bottom: where the recursion started). Built without
 // pushing anything onto the full Lua stack (luaL_traceback would need
 // slots it no longer has, and fail as "error in error handling").
-std::string overflow_report(lua_State* L) {
+// `message` is the error as raised. On a shallow stack the overflow happened
+// elsewhere (in a coroutine, whose error the script raised again): its own
+// location, if it has one, is kept.
+std::string overflow_report(lua_State* L, std::string_view message) {
+  constexpr std::string_view kWhat =
+      "a function that calls itself without end, or a metamethod (__index, __newindex, __call, __tostring, "
+      "__concat, ...) that uses itself";
   const int depth = stack_depth(L);
   // The whole stack: a recursion through fast functions may leave its only
   // lines at the bottom (each lua_getstack walks from the top: quadratic,
   // but only on this error, and ~0.1 s at LuaJIT's deepest stack).
   const int at = nearest_script_level(L, 1, depth);
-  std::string out = at < 0 ? std::string("stack overflow") : fmt::format("{}: stack overflow", Sandbox::where(L, at));
-  out += fmt::format(
-      ": calls nested too deeply ({} levels fill the Lua stack): a function that calls itself without end, or a "
-      "metamethod (__index, __newindex, __call, __tostring, __concat, ...) that uses itself",
-      depth);
+  const bool here = depth >= kDeepLevels;
+  std::string out;
+  if (!here && message != "stack overflow")
+    out = std::string(message);
+  else
+    out = at < 0 ? std::string("stack overflow") : fmt::format("{}: stack overflow", Sandbox::where(L, at));
+  out += here ? fmt::format(": calls nested too deeply ({} levels fill the Lua stack): {}", depth, kWhat)
+              : fmt::format(": calls nested too deeply: {}", kWhat);
   if (at > kLinelessRecursion)
     out += "; the recursion runs through tail calls or library functions, which keep no line: the line named is the "
            "one that started it";
@@ -425,9 +434,10 @@ struct Sandbox::Impl {
     } else if (!s.stack_has_room(left)) {
       push_at_running_line(L, s.nesting_message(left));
     } else if (!s.lua_stack_has_room(L)) {
-      // LuaJIT's own words: the message handler locates and explains them
-      // (overflow_report), with the room this check kept for it.
-      lua_pushliteral(L, "stack overflow");
+      // LuaJIT's own words at the running line: the message handler
+      // explains them (overflow_report), with the room this check kept
+      // for it; in a coroutine (no handler) the line stays with them.
+      push_at_running_line(L, "stack overflow");
     } else {
       return;
     }
@@ -587,7 +597,7 @@ struct Sandbox::Impl {
     if (lua_rawequal(L, 1, 2)) return 1;
     lua_settop(L, 1);
     if (lua_type(L, 1) == LUA_TSTRING && is_stack_overflow(lua_tostring(L, 1))) {
-      s.overflow_text = overflow_report(L);
+      s.overflow_text = overflow_report(L, lua_tostring(L, 1));
       const CapLift lift(s);
       lua_pushlstring(L, s.overflow_text.data(), s.overflow_text.size());
       lua_pushvalue(L, -1);

@@ -147,8 +147,12 @@ int l_unknown_name(lua_State* L) {
     std::string shown;
     std::string suggestion;
     if (lua_type(L, 2) == LUA_TSTRING) {
-      const std::string key = lua_tostring(L, 2);
-      shown = "lc." + key;
+      std::size_t n = 0;
+      const char* p = lua_tolstring(L, 2, &n);
+      const std::string key(p, n);
+      // A script may index lc with a string of any length: a long one is cut.
+      constexpr std::size_t kShown = 64;
+      shown = n <= kShown ? "lc." + key : fmt::format("lc.{}...", key.substr(0, kShown));
       std::sort(all.begin(), all.end());
       if (const std::string near = lua::nearest(key, all); !near.empty())
         suggestion = fmt::format(" (did you mean lc.{}?)", near);

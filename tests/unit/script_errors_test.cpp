@@ -82,6 +82,9 @@ TEST(ScriptErrors, UnknownNameSuggestsTheNearestOne) {
   EXPECT_NE(error("local s = lc.sky_chekcer{}").find("(did you mean lc.sky_checker?)"), std::string::npos);
   EXPECT_NE(error("local c = lc.camrea{}").find("(did you mean lc.camera?)"), std::string::npos);
   EXPECT_NE(error("local x = lc[1]").find(":2: lc[1] is not a lightcone constructor or function"), std::string::npos);
+  const std::string long_name = error("local x = lc[string.rep('a', 100000)]");
+  EXPECT_NE(long_name.find(":2: lc." + std::string(64, 'a') + "... is not a lightcone"), std::string::npos);
+  EXPECT_LT(long_name.size(), 2000u);
 }
 
 // Inside frame(i) the error names the frame and the line.
