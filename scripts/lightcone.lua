@@ -11,8 +11,11 @@ local engine = __lightcone
 local M = {}
 
 -- Scene constructors live in the engine (validated where they are called, so
--- errors name your line); every function of the engine API is re-exported.
-for name, fn in pairs(engine) do M[name] = fn end
+-- errors name your line); every function of the engine API is re-exported
+-- (but its own "__" names).
+for name, fn in pairs(engine) do
+  if name:sub(1, 2) ~= "__" then M[name] = fn end
+end
 
 -- Cartesian components and polar angles (radians) of a position table
 -- {x, y, z} or {r, theta, phi} (degrees).
@@ -59,5 +62,10 @@ for name, value in pairs(require "lightcone.animation") do
   assert(M[name] == nil, "lightcone: duplicate name " .. name)
   M[name] = value
 end
+
+-- A name lc lacks (lc.fisheye{...}) is an error at the line that reads it,
+-- listing the names lc has and the nearest one, not "attempt to call a nil
+-- value" later.  rawget(lc, "name") tests for a name without the error.
+setmetatable(M, {__index = engine.__unknown_name})
 
 return M

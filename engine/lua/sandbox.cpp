@@ -72,6 +72,17 @@ constexpr std::size_t kFramesTail = 3;
 // matching, the message handler and its traceback.
 constexpr std::size_t kStackReserve = 384u << 10;
 
+// Lua stack slots kept free below LuaJIT's limit (65,500 slots, about
+// 22,000 levels of a small function): a recursion fails once fewer are
+// left, where the message handler still has room (time_hook). Below 8,000:
+// lua_checkstack refuses more at once.
+constexpr int kLuaStackReserve = 6000;
+
+// Levels of calls below which the Lua stack cannot be within
+// kLuaStackReserve of LuaJIT's limit: 200 frames of LuaJIT's largest (250
+// slots and 2 of the frame's own) are 50,400 slots.
+constexpr int kDeepLevels = 200;
+
 // The time an error object's __tostring gets from the message handler: it
 // only has to produce a line of text.
 constexpr double kTostringSeconds = 0.1;
@@ -124,13 +135,14 @@ std::string read_source_file(const std::filesystem::path& path, std::size_t max_
   return problem;
 }
 
-// The stack level of the nearest line of a script at `level` or below, or
-// -1 if there is none. Lines of the sandbox's own Lua (library_guards.cpp)
-// are skipped: an author knows nothing of them.
-int nearest_script_level(lua_State* L, int level) {
-  // Deep enough for a stack of C functions nested to the limit.
-  constexpr int kMaxLevels = 8 * detail::kMaxNestedCalls;
-  for (; level < kMaxLevels; ++level) {
+// Deep enough for a stack of C functions nested to the limit.
+constexpr int kMaxLevels = 8 * detail::kMaxNestedCalls;
+
+// The stack level of the nearest line of a script at `level` or below (up
+// to `max_level`), or -1 if there is none. Lines of the sandbox's own Lua
+// (library_guards.cpp) are skipped: an author knows nothing of them.
+int nearest_script_level(lua_State* L, int level, int max_level = kMaxLevels) {
+  for (; level < max_level; ++level) {
     lua_Debug ar;
     if (lua_getstack(L, level, &ar) == 0) break;
     const std::string loc = Sandbox::where(L, level);
@@ -183,7 +195,8 @@ std::string join(const std::vector<std::string>& parts, std::string_view sep) {
 // functions it cannot name: the C++ harness, and C functions reached by a
 // tail call (`return kerr{...}`), except `require`, which gets its name back.
 // Frames of the sandbox's own Lua ("[sandbox]:9: in function 'tostring'")
-// are dropped too: the script's line that called it follows.
+// are dropped too: the script's line that called it follows; so are fast
+// functions LuaJIT shows by address ("[builtin#89]: at 0x7feb...").
 std::string tidy_traceback(std::string_view message, std::uintptr_t require_address) {
   constexpr std::string_view kMarker = "\nstack traceback:";
   const std::size_t at = message.find(kMarker);
@@ -204,7 +217,10 @@ std::string tidy_traceback(std::string_view message, std::uintptr_t require_addr
       }
       continue;
     }
-    if (line.empty() || line == "\t[C]: in ?" || line.starts_with("\t[sandbox]:")) continue;
+    // LuaJIT shows a fast function it cannot name as "[builtin#89]: at
+    // 0x7feb...": an address, which means nothing to an author.
+    if (line.empty() || line == "\t[C]: in ?" || line.starts_with("\t[sandbox]:") || line.starts_with("\t[builtin#"))
+      continue;
     frames.emplace_back(line);
   }
   for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -243,6 +259,96 @@ std::uintptr_t this_threads_stack_floor() {
   return floor;
 }
 
+// Whether `message` is LuaJIT's error for a full Lua stack: "stack
+// overflow", with or without a location in front (LuaJIT adds none when the
+// overflow comes as a function is entered, which is most of the time).
+bool is_stack_overflow(std::string_view message) {
+  constexpr std::string_view kOverflow = "stack overflow";
+  return message == kOverflow || (message.ends_with(kOverflow) && message.size() > kOverflow.size() + 2 &&
+                                  message.substr(message.size() - kOverflow.size() - 2, 2) == ": ");
+}
+
+// How many levels the stack of L has (lua_getstack walks the frames from
+// the top, so the depth is found by doubling, then halving).
+int stack_depth(lua_State* L) {
+  lua_Debug ar;
+  int known = 0;  // a level that exists
+  int step = 1;
+  while (lua_getstack(L, known + step, &ar) != 0) {
+    known += step;
+    step *= 2;
+  }
+  for (step /= 2; step >= 1; step /= 2)
+    if (lua_getstack(L, known + step, &ar) != 0) known += step;
+  return known + 1;
+}
+
+// One traceback line for the function at `level`, as luaL_traceback writes
+// it, or "" for a C function without a name (which tidy_traceback drops
+// anyway). Pushes nothing: it runs where the Lua stack is full.
+std::string traceback_line(lua_State* L, int level) {
+  lua_Debug ar;
+  if (lua_getstack(L, level, &ar) == 0 || lua_getinfo(L, "Sln", &ar) == 0) return {};
+  const bool named = ar.namewhat != nullptr && *ar.namewhat != '\0' && ar.name != nullptr;
+  if (ar.what != nullptr && std::string_view(ar.what) == "C")
+    return named ? fmt::format("\n\t[C]: in function '{}'", ar.name) : std::string();
+  const std::string at = ar.currentline > 0 ? fmt::format("{}:{}:", ar.short_src, ar.currentline)
+                                            : fmt::format("{}:", ar.short_src);
+  if (named) return fmt::format("\n\t{} in function '{}'", at, ar.name);
+  if (ar.what != nullptr && std::string_view(ar.what) == "main") return fmt::format("\n\t{} in main chunk", at);
+  return fmt::format("\n\t{} in function <{}:{}>", at, ar.short_src, ar.linedefined);
+}
+
+// Frames scanned from the top for the head of an overflow's traceback: a
+// recursion through fast functions has thousands without a line.
+constexpr int kOverflowHeadScan = 64;
+
+// More levels than this above the deepest script line mean the recursion
+// ran where Lua keeps no line (tail calls, fast functions).
+constexpr int kLinelessRecursion = 100;
+
+// The report of a stack overflow seen from the message handler (level 0):
+// "file:LINE: stack overflow: ..." at the deepest script line on the stack,
+// what it means, and a short traceback (kFramesHead frames from the top,
+// kFramesTail from the bottom: where the recursion started). Built without
+// pushing anything onto the full Lua stack (luaL_traceback would need
+// slots it no longer has, and fail as "error in error handling").
+// `message` is the error as raised. On a shallow stack the overflow happened
+// elsewhere (in a coroutine, whose error the script raised again): its own
+// location, if it has one, is kept.
+std::string overflow_report(lua_State* L, std::string_view message) {
+  constexpr std::string_view kWhat =
+      "a function that calls itself without end, or a metamethod (__index, __newindex, __call, __tostring, "
+      "__concat, ...) that uses itself";
+  const int depth = stack_depth(L);
+  // The whole stack: a recursion through fast functions may leave its only
+  // lines at the bottom (each lua_getstack walks from the top: quadratic,
+  // but only on this error, and ~0.1 s at LuaJIT's deepest stack).
+  const int at = nearest_script_level(L, 1, depth);
+  const bool here = depth >= kDeepLevels;
+  std::string out;
+  if (!here && message != "stack overflow")
+    out = std::string(message);
+  else
+    out = at < 0 ? std::string("stack overflow") : fmt::format("{}: stack overflow", Sandbox::where(L, at));
+  out += here ? fmt::format(": calls nested too deeply ({} levels fill the Lua stack): {}", depth, kWhat)
+              : fmt::format(": calls nested too deeply: {}", kWhat);
+  if (at > kLinelessRecursion)
+    out += "; the recursion runs through tail calls or library functions, which keep no line: the line named is the "
+           "one that started it";
+  out += "\nstack traceback:";
+  std::size_t shown = 0;
+  int level = 1;
+  for (; level < std::min(depth - static_cast<int>(kFramesTail), kOverflowHeadScan) && shown < kFramesHead; ++level) {
+    const std::string line = traceback_line(L, level);
+    if (!line.empty()) ++shown, out += line;
+  }
+  if (level < depth - static_cast<int>(kFramesTail)) out += "\n\t...";
+  for (level = std::max(level, depth - static_cast<int>(kFramesTail)); level < depth; ++level)
+    out += traceback_line(L, level);
+  return out;
+}
+
 }  // namespace
 
 // Everything one sandboxed state needs. It is the allocator's user data, so
@@ -255,6 +361,7 @@ struct Sandbox::Impl {
   std::vector<std::filesystem::path> loaded;
 
   std::size_t heap_bytes = 0;  // live bytes handed out to Lua
+  std::size_t refused = 0;     // allocations the cap refused, ever
   bool cap_lifted = false;     // while the handler formats a traceback
   int depth = 0;               // nesting of run_file/call; >0 means evaluating
   Clock::time_point deadline;
@@ -269,6 +376,11 @@ struct Sandbox::Impl {
   int handler_ref = LUA_NOREF;     // the traceback message handler
   int modules_ref = LUA_NOREF;     // module name -> value of loaded modules
   int last_trace_ref = LUA_NOREF;  // the last message the handler produced
+  // The report of the last stack overflow the handler saw (overflow_report),
+  // kept in C++: pushing it may fail on the full stack, and then the call
+  // ends as "error in error handling" (LUA_ERRERR), which fail() replaces
+  // by it.
+  std::string overflow_text;
   // Its address, as a light userdata, stands for a memory error re-raised by
   // require (lua_error cannot raise LUA_ERRMEM itself).
   char memory_sentinel = 0;
@@ -299,6 +411,7 @@ struct Sandbox::Impl {
     }
     if (s.depth > 0 && !s.cap_lifted && nsize > osize &&
         s.heap_bytes - osize + nsize > s.limits.memory_bytes) {
+      ++s.refused;
       return nullptr;  // LuaJIT raises LUA_ERRMEM
     }
     void* p = std::realloc(ptr, nsize);
@@ -320,10 +433,32 @@ struct Sandbox::Impl {
       push_at_running_line(L, s.time_limit_message());
     } else if (!s.stack_has_room(left)) {
       push_at_running_line(L, s.nesting_message(left));
+    } else if (!s.lua_stack_has_room(L)) {
+      // LuaJIT's own words at the running line: the message handler
+      // explains them (overflow_report), with the room this check kept
+      // for it; in a coroutine (no handler) the line stays with them.
+      push_at_running_line(L, "stack overflow");
     } else {
       return;
     }
     lua_error(L);
+  }
+
+  // Whether the running coroutine's Lua stack can still grow by
+  // kLuaStackReserve slots. Checked by the hook, so that a recursion fails
+  // here, where the message handler has room to run: at LuaJIT's own limit
+  // a recursing metamethod (__index, __newindex, __call) fails without it
+  // ("stack overflow", no line). lua_checkstack grows the stack as the
+  // script's next calls would, and fails near the limit; a refusal by the
+  // memory cap is no overflow (the script's own allocations fail as usual).
+  // Only a stack of kDeepLevels levels is looked at: fewer, even of the
+  // largest frames, cannot come near the limit, and the stack of a shallow
+  // coroutine is not grown for nothing.
+  bool lua_stack_has_room(lua_State* L) {
+    lua_Debug ar;
+    if (lua_getstack(L, kDeepLevels, &ar) == 0) return true;
+    const std::size_t before = refused;
+    return lua_checkstack(L, kLuaStackReserve) != 0 || refused != before;
   }
 
   // Pushes "file:LINE: text" for the script line running (level 0 in a hook).
@@ -461,6 +596,14 @@ struct Sandbox::Impl {
     lua_rawgeti(L, LUA_REGISTRYINDEX, s.last_trace_ref);
     if (lua_rawequal(L, 1, 2)) return 1;
     lua_settop(L, 1);
+    if (lua_type(L, 1) == LUA_TSTRING && is_stack_overflow(lua_tostring(L, 1))) {
+      s.overflow_text = overflow_report(L, lua_tostring(L, 1));
+      const CapLift lift(s);
+      lua_pushlstring(L, s.overflow_text.data(), s.overflow_text.size());
+      lua_pushvalue(L, -1);
+      lua_rawseti(L, LUA_REGISTRYINDEX, s.last_trace_ref);
+      return 1;
+    }
     std::string text;
     if (lua_type(L, 1) == LUA_TSTRING || lua_type(L, 1) == LUA_TNUMBER) {
       std::size_t len = 0;
@@ -637,10 +780,20 @@ struct Sandbox::Impl {
   // stack is reset to `base`. `name` names the script for memory errors.
   [[noreturn]] void fail(int status, int base, const std::string& name) {
     std::string msg;
+    const std::string overflow = std::exchange(overflow_text, std::string());
     if (status == LUA_ERRMEM ||
         (lua_type(L, -1) == LUA_TLIGHTUSERDATA && lua_touserdata(L, -1) == &memory_sentinel)) {
       msg = fmt::format("{}: memory limit of {} exceeded (set by {})", name,
                         format_mib(limits.memory_bytes), limits.set_by);
+    } else if (!overflow.empty() && (status == LUA_ERRERR || (lua_type(L, -1) == LUA_TSTRING &&
+                                                              overflow == lua_tostring(L, -1)))) {
+      msg = tidy_traceback(overflow, reinterpret_cast<std::uintptr_t>(&Impl::require_entry));
+    } else if (status == LUA_ERRERR && lua_type(L, -1) == LUA_TSTRING && is_stack_overflow(lua_tostring(L, -1))) {
+      // LuaJIT's limit was reached between two looks of the hook (frames
+      // of hundreds of slots), where no handler runs: no line is left.
+      msg = fmt::format("{}: stack overflow: calls nested too deeply, too fast for the sandbox to see the line: a "
+                        "function that calls itself without end, or a metamethod that uses itself",
+                        name);
     } else if (lua_type(L, -1) == LUA_TSTRING) {
       std::size_t len = 0;
       const char* p = lua_tolstring(L, -1, &len);
@@ -659,6 +812,7 @@ struct Sandbox::Impl {
    public:
     explicit Evaluation(Impl& s) : s_(s) {
       if (s_.depth++ != 0) return;
+      s_.overflow_text.clear();
       const std::chrono::duration<double> budget(s_.limits.seconds);
       s_.deadline = budget < std::chrono::hours(24 * 365)
                         ? Clock::now() + std::chrono::duration_cast<Clock::duration>(budget)

@@ -6,6 +6,7 @@
 // only where the box its centre keeps over the step's time range (the
 // paper's spacetime tube) allows (objects/sphere_test.hpp).
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -54,8 +55,10 @@ class Sphere : public SphereBody {
         field("colors", &Params::colors, std::optional<Palette>{Palette{{0.95f, 0.95f, 0.95f}, {0.8f, 0.1f, 0.1f}}},
               std::nullopt, std::nullopt, "the two colours {{r, g, b}, {r, g, b}}, linear RGB"),
     };
-    // What the declared fields leave out: the placement, for the reference
-    // (lightcone fields) ...
+    // What the declared fields leave out: the placement, by name (for the
+    // reader's check of unknown fields: script/field_reader.hpp) ...
+    static constexpr std::array<std::string_view, 2> extra_fields = {"position", "worldline"};
+    // ... for the reference (lightcone fields) ...
     static constexpr std::string_view extra_doc =
         "And one of `position = {...}` (held at rest there; see Positions) or `worldline = w` (falling along the "
         "worldline w).";

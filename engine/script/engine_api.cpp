@@ -1,6 +1,12 @@
 #include "script/engine_api.hpp"
 
+#include <algorithm>
+#include <array>
 #include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include "lua/table_reader.hpp"
 #include "script/scene_reader.hpp"
@@ -102,28 +108,106 @@ int l_apocentres(lua_State* L) {
   });
 }
 
+// What the names of `lc` are, in the order the error for an unknown one
+// lists them.  Every constructor the engine makes has one of the first six;
+// the rest (lc.apocentres, lc.look_at, the animation helpers of
+// scripts/lightcone/animation.lua, a shot's own additions) are helpers.
+enum class NameGroup { spacetimes, observers, cameras, skies, objects, light, helpers };
+constexpr std::array<std::string_view, 7> kGroupTitles = {
+    "spacetimes", "observers and worldlines", "cameras", "skies", "objects", "light", "helpers"};
+
+// lc's __index (scripts/lightcone.lua): lc.<name> for a name lc lacks.
+// Arguments: lc and the key; upvalue 1 maps each constructor's name to its
+// NameGroup.  Raises, at the script line that reads the name, an error that
+// says it is no lightcone constructor or function, suggests the nearest
+// name and lists every name lc has by group, so `lc.fisheye{...}` fails
+// there instead of as "attempt to call field 'fisheye' (a nil value)".  A
+// script tests for a name without the error by rawget(lc, name).
+int l_unknown_name(lua_State* L) {
+  return lua::protect(L, [](lua_State* L) -> int {
+    std::array<std::vector<std::string>, kGroupTitles.size()> groups;
+    std::vector<std::string> all;
+    lua_settop(L, 2);
+    lua_pushnil(L);
+    while (lua_next(L, 1) != 0) {
+      lua_pop(L, 1);
+      if (lua_type(L, -1) != LUA_TSTRING) continue;
+      std::size_t n = 0;
+      const char* p = lua_tolstring(L, -1, &n);
+      std::string name(p, n);
+      if (name.starts_with("__")) continue;
+      lua_pushvalue(L, -1);
+      lua_rawget(L, lua_upvalueindex(1));
+      const auto group = lua_isnumber(L, -1) ? static_cast<std::size_t>(lua_tointeger(L, -1))
+                                             : static_cast<std::size_t>(NameGroup::helpers);
+      lua_pop(L, 1);
+      groups[std::min(group, groups.size() - 1)].push_back(name);
+      all.push_back(std::move(name));
+    }
+    std::string shown;
+    std::string suggestion;
+    if (lua_type(L, 2) == LUA_TSTRING) {
+      std::size_t n = 0;
+      const char* p = lua_tolstring(L, 2, &n);
+      const std::string key(p, n);
+      // A script may index lc with a string of any length: a long one is cut.
+      constexpr std::size_t kShown = 64;
+      shown = n <= kShown ? "lc." + key : fmt::format("lc.{}...", key.substr(0, kShown));
+      std::sort(all.begin(), all.end());
+      if (const std::string near = lua::nearest(key, all); !near.empty())
+        suggestion = fmt::format(" (did you mean lc.{}?)", near);
+    } else if (lua_type(L, 2) == LUA_TNUMBER) {
+      shown = fmt::format("lc[{}]", lua_tonumber(L, 2));
+    } else {
+      shown = fmt::format("lc[<a {}>]", luaL_typename(L, 2));
+    }
+    std::string listed;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      if (groups[g].empty()) continue;
+      std::sort(groups[g].begin(), groups[g].end());
+      std::string names;
+      for (const auto& name : groups[g]) names += fmt::format("{}lc.{}", names.empty() ? "" : ", ", name);
+      listed += fmt::format("{}{}: {}", listed.empty() ? "" : "; ", kGroupTitles[g], names);
+    }
+    throw lua::FieldError(fmt::format("{} is not a lightcone constructor or function{}; lc has {} (docs/shots.md)",
+                                      shown, suggestion, listed));
+  });
+}
+
 }  // namespace
 
 void install_engine_api(lua::Sandbox& sandbox, EngineMemo* memo) {
   lua_State* L = sandbox.state();
   lua_newtable(L);
-  auto add = [&](std::string_view kind, Validator validate) {
+  const int api = lua_gettop(L);
+  lua_newtable(L);  // constructor name -> NameGroup, for l_unknown_name
+  const int groups = lua_gettop(L);
+  auto add = [&](std::string_view kind, Validator validate, NameGroup group) {
+    const std::string name(kind);
     lua_pushlstring(L, kind.data(), kind.size());
     lua_pushlightuserdata(L, reinterpret_cast<void*>(validate));
     lua_pushcclosure(L, &construct, 2);
-    lua_setfield(L, -2, std::string(kind).c_str());
+    lua_setfield(L, api, name.c_str());
+    lua_pushinteger(L, static_cast<lua_Integer>(group));
+    lua_setfield(L, groups, name.c_str());
   };
   // Every registered spacetime (spacetime/spacetime.hpp) by its name.
-  for_each_spacetime_type([&](auto tag) { add(decltype(tag)::type::name, validate_spacetime); });
-  SkyRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_sky); });
-  for (const char* observer : {"static_observer", "zamo", "free_fall"}) add(observer, validate_observer);
-  CameraRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera); });
-  ObjectRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_object); });
-  add("worldline", validate_worldline);
-  add("light", validate_light);
+  for_each_spacetime_type([&](auto tag) { add(decltype(tag)::type::name, validate_spacetime, NameGroup::spacetimes); });
+  SkyRegistry::for_each(
+      [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_sky, NameGroup::skies); });
+  for (const char* observer : {"static_observer", "zamo", "free_fall"})
+    add(observer, validate_observer, NameGroup::observers);
+  CameraRegistry::for_each(
+      [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera, NameGroup::cameras); });
+  ObjectRegistry::for_each(
+      [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_object, NameGroup::objects); });
+  add("worldline", validate_worldline, NameGroup::observers);
+  add("light", validate_light, NameGroup::light);
+  lua_pushcclosure(L, &l_unknown_name, 1);  // takes the group table
+  lua_setfield(L, api, "__unknown_name");
   lua_pushlightuserdata(L, memo);
   lua_pushcclosure(L, l_apocentres, 1);
-  lua_setfield(L, -2, "apocentres");
+  lua_setfield(L, api, "apocentres");
   lua_setglobal(L, "__lightcone");
 }
 

@@ -2,11 +2,19 @@
 // Reads a struct with declared fields (core/fields.hpp) from a Lua table:
 // each field by its type, its default where it has one, its range checked,
 // every error naming the field ("disk: field 'rings' must be at least 1,
-// got 0").  The reader does not finish() the table: the caller may read
-// more fields by hand first.
+// got 0").  Before any value is read the table's keys are checked: an
+// unknown field (most likely a misspelt one, or one of another kind:
+// lc.camera{fov = 180, projection = "fisheye"}) is reported first, with
+// the nearest declared name, since a value's error would hide it.  Known
+// are the declared fields, the names in S::extra_fields (what a kind reads
+// by hand besides them, like the sphere's placement) and the keys the
+// caller marked known before (TableReader::mark_known).  The reader does
+// not finish() the table: the caller may read more fields by hand first,
+// and finishes it after.
 
 #include <algorithm>
 #include <cstdint>
+#include <string_view>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -40,6 +48,10 @@ inline Palette read_palette(lua::TableReader& list) {
 
 template <HasFields S>
 void read_fields(lua::TableReader& t, S& out) {
+  for_each_field<S>([&](const auto& f) { t.mark_known({f.name}); });
+  if constexpr (requires { S::extra_fields; })
+    for (const std::string_view name : S::extra_fields) t.mark_known({name});
+  t.finish();
   for_each_field<S>([&](const auto& f) {
     using T = typename std::decay_t<decltype(f)>::Value;
     T v;

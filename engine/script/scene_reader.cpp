@@ -77,6 +77,8 @@ double positive(TableReader& t, const char* key, std::optional<double> fallback 
 Vec3 read_leg_vector(TableReader& t, bool polar) {
   const char* k[3] = {"x", "y", "z"};
   if (polar) k[0] = "r", k[1] = "theta", k[2] = "phi";
+  t.mark_known({k[0], k[1], k[2]});
+  t.finish();  // unknown keys before bad values, as for declared fields (field_reader.hpp)
   Vec3 v = {t.number_or(k[0], 0.0), t.number_or(k[1], 0.0), t.number_or(k[2], 0.0)};
   t.finish();
   return v;
@@ -89,6 +91,8 @@ ScriptPosition read_position(TableReader& t) {
   const bool has_cart = t.has("x") || t.has("y") || t.has("z");
   if (has_polar && has_cart) fail(t, "give either {r, theta, phi} (Boyer–Lindquist, degrees) or {x, y, z}, not both");
   if (!has_polar && !has_cart) fail(t, "a position needs {r, theta, phi} (Boyer–Lindquist, degrees) or {x, y, z}");
+  t.mark_known({"t", "r", "theta", "phi", "x", "y", "z"});
+  t.finish();  // unknown keys before bad values, as for declared fields (field_reader.hpp)
   ScriptPosition p;
   p.polar = has_polar;
   if (p.polar) {
@@ -127,6 +131,8 @@ LightParams read_light(TableReader& t) {
 
 WorldlineSpec read_worldline(TableReader& t) {
   expect_kind(t, {"worldline"}, "lc.worldline{...}");
+  t.mark_known({"spacetime", "start", "velocity", "duration"});
+  t.finish();  // unknown keys before bad values, as for declared fields (field_reader.hpp)
   WorldlineSpec w;
   w.where = t.string_or("__where", t.context());
   auto st = t.table("spacetime");
@@ -184,6 +190,8 @@ ObserverSpec read_observer(TableReader& t, const Spacetime* st) {
   }
   if (k == "free_fall") {
     o.kind = ObserverKind::free_fall;
+    t.mark_known({"worldline", "proper_time"});
+    t.finish();  // unknown keys before bad values, as for declared fields (field_reader.hpp)
     auto w = t.table("worldline");
     o.worldline = read_worldline(w);
     o.proper_time = t.number("proper_time");

@@ -16,8 +16,8 @@ namespace lc {
 
 namespace {
 
-// Whether the background is an image the shot names (not one of the two
-// words).
+// Whether a resolved background (PointStarSky::background) is an image the
+// shot names.
 bool is_image(const std::string& background) { return background != "generated" && background != "none"; }
 
 // The generated field's glow is smooth: this width shows it whole.
@@ -77,8 +77,16 @@ std::string kstars_catalogue_path() {
   return set && *set ? std::string(set) : std::string(kstars_catalogue_file);
 }
 
+// The generated glow belongs to the generated field's stars: behind the
+// real sky's it would be a Milky Way in the wrong place, so the real sky's
+// default is black (docs/stars.md says why no real Milky Way is the default).
+std::string PointStarSky::background(const Params& p) {
+  if (p.background != "auto") return p.background;
+  return p.catalogue == StarCatalogue::generated ? "generated" : "none";
+}
+
 std::vector<std::string> PointStarSky::assets(const Params& p) {
-  if (is_image(p.background)) return {p.background};
+  if (const std::string b = background(p); is_image(b)) return {b};
   return {};
 }
 
@@ -122,20 +130,19 @@ PointStars PointStarSky::stars(const Params& p, ShotResources& res) {
 }
 
 PointStarSky::PointStarSky(const Params& p, ShotResources& res)
-    : rotate_(p.rotate), scale_(static_cast<float>(std::exp2(p.brightness))), stars_(stars(p, res)) {
-  if (p.background == "generated")
+    : rotate_(p.rotate), scale_(brightness_scale(p.brightness)), stars_(stars(p, res)) {
+  const std::string b = background(p);
+  if (b == "generated")
     background_ = res.sky_glow(p.seed, glow_width);
-  else if (is_image(p.background))
-    background_ = res.texture(p.background);
+  else if (is_image(b))
+    background_ = res.texture(b);
 }
 
 Color PointStarSky::color(double theta, double phi) const {
   if (!background_) return {0.0f, 0.0f, 0.0f};
   Color c;
   background_->sample(rotated_longitude(phi, rotate_) / two_pi, theta / pi, c.data());
-  if (scale_ != 1.0f)
-    for (float& v : c) v *= scale_;
-  return c;
+  return scaled(c, scale_);
 }
 
 }  // namespace lc

@@ -56,7 +56,7 @@ class PointStarSky {
     StarCatalogue catalogue = StarCatalogue::generated;
     double faintest = 8.0;
     std::uint32_t seed = 1;
-    std::string background = "generated";
+    std::string background = "auto";
     double rotate = 0.0, brightness = 0.0, glare = 0.1, glare_size = 0.002;
     static constexpr auto fields = std::tuple{
         field("catalogue", &Params::catalogue, std::optional<StarCatalogue>{StarCatalogue::generated}, std::nullopt,
@@ -68,10 +68,12 @@ class PointStarSky {
               "the faintest stars drawn", "magnitudes (V)"),
         field("seed", &Params::seed, std::optional<std::uint32_t>{1}, at_least(0), at_most(2147483647),
               "the generated field's seed (its stars and its band's glow)"),
-        field("background", &Params::background, std::optional<std::string_view>{"generated"}, std::nullopt,
+        field("background", &Params::background, std::optional<std::string_view>{"auto"}, std::nullopt,
               std::nullopt,
               "the diffuse light behind the stars: \"generated\" (the glow of the generated field's Milky-Way-like "
-              "band, for `seed`), \"none\", or an equirectangular image (a file, as lc.sky_image's)"),
+              "band, for `seed`), \"none\", or an equirectangular image (a file, as lc.sky_image's); \"auto\": "
+              "\"generated\" for the generated catalogue, \"none\" for kstars (whose sky the band is not: "
+              "docs/stars.md)"),
         field("rotate", &Params::rotate, std::optional<double>{0.0}, std::nullopt, std::nullopt,
               "added to the longitude of the stars and the background", "degrees"),
         field("brightness", &Params::brightness, std::optional<double>{0.0}, at_least(-64.0), at_most(64.0),
@@ -92,6 +94,9 @@ class PointStarSky {
   static std::vector<std::string> assets(const Params& p);
   // The KStars catalogue, when the stars are read from it.
   static std::vector<std::string> system_files(const Params& p);
+  // What p.background stands for: "generated", "none" or an image's file
+  // ("auto" resolved by the catalogue).
+  static std::string background(const Params& p);
 
   PointStarSky(const Params& p, ShotResources& res);
   // The stars alone, as the stage after the pixels needs them (without the

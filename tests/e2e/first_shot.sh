@@ -22,7 +22,7 @@ assert 'tetrad' in s[0]['evaluated']['observer'] and 'forward' in s[0]['evaluate
 PY
 line=$(grep -n "disk = lc.disk" myshots/circling.lua | cut -d: -f1)
 sed 's/inner = 6/iner = 6/' myshots/circling.lua >myshots/misspelt.lua
-expect_error misspelt "misspelt.lua:$line: disk: missing field 'inner' (there is a field 'iner': misspelt?)" -- \
+expect_error misspelt "misspelt.lua:$line: disk: unknown field 'iner' (did you mean 'inner'?)" -- \
   "$LIGHTCONE" inspect myshots/misspelt.lua --frames 0:1
 
 # 4. a few small frames in their own folder, and a contact sheet.

@@ -187,7 +187,7 @@ expect_error wide "wide.lua:5: camera: field 'fov' must be greater than 0 and le
 shot fov180 "$good_kerr camera = lc.camera{fov = 180},"
 expect_error fov180 "fov180.lua:5: camera: field 'fov' must be greater than 0 and less than 180 degrees, got 180" -- "$LIGHTCONE" render fov180.lua --out out
 shot typo "$good_kerr disk = lc.disk{iner = 6, outer = 10},"
-expect_error typo "typo.lua:5: disk: missing field 'inner' (there is a field 'iner': misspelt?)" -- "$LIGHTCONE" render typo.lua --out out
+expect_error typo "typo.lua:5: disk: unknown field 'iner' (did you mean 'inner'?)" -- "$LIGHTCONE" render typo.lua --out out
 shot scene_typo "spacetime = lc.kerr{mass = 1}, obsrver = lc.static_observer{r = 30, theta = 80, phi = 0},"
 expect_error scene_typo "scene_typo.lua: frame 0: missing field 'observer' (there is a field 'obsrver': misspelt?)" -- "$LIGHTCONE" render scene_typo.lua --out out
 shot scene_typo2 "$good_kerr camra = lc.camera{fov = 30},"
@@ -280,7 +280,7 @@ done
 cat >"$WORK/frame_count.lua" <<'LUA'
 return {name = "frame_count", frame_count = 1, width = 8, height = 8, frame = function(i) return {} end}
 LUA
-expect_error frame_count "frame_count.lua: missing field 'frames' (there is a field 'frame_count': misspelt?)" -- \
+expect_error frame_count "frame_count.lua: unknown field 'frame_count' (did you mean 'frames'?)" -- \
   "$LIGHTCONE" render frame_count.lua --out out
 # require followed a link out of the shot's folder, parsed the file and quoted it.
 ln -s /etc/passwd "$WORK/passwd.lua"

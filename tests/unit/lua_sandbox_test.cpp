@@ -616,6 +616,86 @@ TEST(LuaSandbox, NestedCallsThroughCFunctionsFailCleanly) {
   }
 }
 
+// Recursion that fills LuaJIT's own stack ("stack overflow"): each message
+// starts with the script's file and the deepest script line (the one that
+// recursed: where the fix goes), says what it means, and shows no internal
+// address ("[builtin#89]: at 0x7feb..."). The first four are the reported
+// ones; `line` is the deepest script line.
+struct Overflow {
+  std::string name, code;
+  int line;
+};
+const std::vector<Overflow> kOverflowScripts = {
+    {"recursion", "local function f(n) return 1 + f(n + 1) end\nf(1)\n", 1},
+    {"index", "local t = setmetatable({}, {__index = function(t, k) return t[k] end})\nlocal x = t.foo\n", 1},
+    {"tostring_format",
+     "local u = setmetatable({}, {__tostring = function(s) return string.format('%s', s) end})\nlocal s = tostring(u)\n",
+     1},
+    {"print_format",
+     "local u = setmetatable({}, {__tostring = function(s) return string.format('%s', s) end})\nprint(u)\n", 1},
+    {"tostring_concat",
+     "local u = setmetatable({}, {__tostring = function(s) return '<' .. tostring(s) .. '>' end})\n"
+     "local s = string.format('%s', u)\n",
+     1},
+    {"newindex", "local t = setmetatable({}, {__newindex = function(t, k, v) t[k] = v end})\nt.x = 1\n", 1},
+    {"call", "local c = setmetatable({}, {__call = function(self) return 1 + self() end})\nlocal x = c()\n", 1},
+    {"concat", "local m = {}\nm.__concat = function(a, b) return a .. b end\nlocal x = setmetatable({}, m) .. 'a'\n", 2},
+    {"index_chain", "local t = setmetatable({}, {__index = function(t, k)\n  return t[k .. '']\nend})\nlocal x = t.foo\n", 2},
+    {"pcall_rethrow", "local function f() local ok, e = pcall(f) if not ok then error(e, 0) end end\nf()\n", 1},
+    // In a coroutine (no message handler there), raised again outside it.
+    {"coroutine",
+     "local co = coroutine.create(function()\n  local function f() return 1 + f() end\n  f()\nend)\n"
+     "local ok, e = coroutine.resume(co)\nerror(e, 0)\n",
+     2},
+};
+
+TEST(LuaSandbox, StackOverflowNamesTheScriptLine) {
+  ScratchDir dir;
+  for (const auto& [name, code, line] : kOverflowScripts) {
+    const fs::path file = script(dir, name + ".lua", code);
+    Sandbox sandbox({});
+    const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
+    // The path as Lua spells it: whole, or "..." and its tail when long
+    // (an overflow caught and raised again keeps LuaJIT's own location).
+    const std::string rest = fmt::format(":{}: stack overflow", line);
+    const std::string where = msg.substr(0, msg.find(rest));
+    EXPECT_TRUE(msg.find(rest) != std::string::npos &&
+                (where == file.string() || (where.starts_with("...") && file.string().ends_with(where.substr(3)))))
+        << name << ":\n" << msg;
+    EXPECT_NE(msg.find("calls nested too deeply"), std::string::npos) << name << ":\n" << msg;
+    EXPECT_EQ(msg.find("0x"), std::string::npos) << name << ":\n" << msg;
+    EXPECT_EQ(msg.find("builtin#"), std::string::npos) << name << ":\n" << msg;
+    EXPECT_EQ(lua_gettop(sandbox.state()), 0);
+    sandbox.run_file(kData / "allowed_globals.lua");  // the state still works
+    EXPECT_TRUE(lua_toboolean(sandbox.state(), -1));
+  }
+}
+
+// The same inside a function the engine calls (a shot's frame(i)), and in a
+// required module: the module's line, and the requiring line in the
+// traceback.
+TEST(LuaSandbox, StackOverflowInCallsAndModulesNamesTheLine) {
+  ScratchDir dir;
+  const fs::path shot = script(dir, "shot.lua",
+                               "local function f(n) return 1 + f(n + 1) end\nreturn function(i)\n  local v = f(i)\n  return v\nend\n");
+  Sandbox sandbox({});
+  sandbox.run_file(shot, 1);
+  lua_pushinteger(sandbox.state(), 3);
+  const std::string msg = error_of<ScriptError>([&] { sandbox.call(1, 1); });
+  EXPECT_EQ(msg.rfind(shot.string() + ":1: stack overflow", 0), 0u) << msg;
+  EXPECT_NE(msg.find("shot.lua:3: in function <"), std::string::npos) << msg;  // the traceback's tail
+  EXPECT_EQ(msg.find("0x"), std::string::npos) << msg;
+
+  const fs::path module = script(dir, "deep.lua", "local function g(n) return 1 + g(n + 1) end\nreturn g(1)\n");
+  const fs::path main = script(dir, "main.lua", "local x = 1\nlocal d = require 'deep'\n");
+  Sandbox with_module({dir.path()});
+  const std::string m = error_of<ScriptError>([&] { with_module.run_file(main); });
+  EXPECT_EQ(m.rfind(module.string() + ":1: stack overflow", 0), 0u) << m;
+  EXPECT_NE(m.find("[C]: in function 'require'\n\t"), std::string::npos) << m;
+  EXPECT_NE(m.find("main.lua:2: in main chunk"), std::string::npos) << m;
+  EXPECT_EQ(m.find("0x"), std::string::npos) << m;
+}
+
 // The count makes the limit the same on every thread with room for it: a
 // script nesting 190 levels runs, one nesting 210 fails, on the main thread
 // as on a 2 MiB one. On a thread with less room the C stack check fails it

@@ -119,7 +119,8 @@ return {name = 'modules', frames = 4, width = 8, height = 8,
   EXPECT_TRUE(has_late());
 }
 
-// A misspelt frames suggested 'frame', a field of every shot.
+// A misspelt frames suggested 'frame', a field of every shot. (Unknown
+// fields are reported before the missing ones they most likely stand for.)
 TEST(Shot, MisspeltFramesSuggestsTheMissingField) {
   ScratchDir dir;
   const fs::path file = write_shot(dir, "shot.lua",
@@ -128,7 +129,7 @@ TEST(Shot, MisspeltFramesSuggestsTheMissingField) {
                                                "  frame = function(i) return ") +
                                        kScene + " end}\n");
   EXPECT_EQ(error_of<lc::lua::FieldError>([&] { lc::Shot shot(file); }),
-            file.string() + ": missing field 'frames' (there is a field 'frame_count': misspelt?)");
+            file.string() + ": unknown field 'frame_count' (did you mean 'frames'?)");
 }
 
 // A script can list one sphere a million times in a few MiB of Lua memory;
