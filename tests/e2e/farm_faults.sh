@@ -126,7 +126,7 @@ return {name = "ergo", frames = 3, width = 16, height = 8,
             observer = lc.static_observer{r = i == 2 and 1.8 or 30, theta = 90, phi = 0}}
   end}
 LUA
-expect_error worker_error "ergo.lua: frame 2: ergo.lua:6: observer: static observer: no static observer exists here" -- \
+expect_error worker_error "ergo.lua: frame 2: ergo.lua:5: observer: static observer: no static observer exists here" -- \
   timeout 120 mpirun --oversubscribe --bind-to none -n 3 "$LIGHTCONE" render ergo.lua --out ergo --progress 0
 grep -q "^lightcone: error: rank [12]: " worker_error.err || fail "the error does not name the rank: $(cat worker_error.err)"
 [ "$(grep -c 'lightcone: error' worker_error.err)" -eq 1 ] || fail "the error is printed more than once: $(cat worker_error.err)"
