@@ -292,9 +292,10 @@ TEST(DurableFile, WhatCannotBeAFileIsRefusedBeforeAnyWork) {
   EXPECT_EQ(error_of([&] { DurableFile out(dir / "to_sock"); }),
             "cannot write " + (dir / "to_sock").string() + ": it is a socket, which lightcone does not write to (" +
                 (dir / "sock").string() + ")");
-  if (::mknod((dir / "block").c_str(), S_IFBLK | 0600, makedev(7, 250)) == 0)
+  if (::mknod((dir / "block").c_str(), S_IFBLK | 0600, makedev(7, 250)) == 0) {
     EXPECT_EQ(error_of([&] { DurableFile out(dir / "block"); }),
               "cannot write " + (dir / "block").string() + ": it is a block device, which lightcone does not write to");
+  }
 }
 
 Names sorted(Names n) {
