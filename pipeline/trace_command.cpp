@@ -21,7 +21,7 @@ namespace lc {
 
 namespace {
 
-constexpr const char* kind_names[] = {"sky", "disk", "horizon", "object", "gave up"};
+constexpr const char* kind_names[] = {"sky", "disk", "horizon", "object", "gave up", "no ray"};
 
 // A float as JSON: its shortest exact spelling (the EXR's value to the
 // bit), null where JSON has no number.

@@ -2,7 +2,12 @@
 // A camera's orientation in the observer's frame: its forward, up and right
 // axes as components on the tetrad's spatial legs (1, 2, 3).
 
+#include <optional>
+#include <string_view>
+#include <tuple>
+
 #include "core/constants.hpp"
+#include "core/fields.hpp"
 #include "core/tensor.hpp"
 
 namespace lc {
@@ -27,6 +32,21 @@ inline CameraAxes turned_axes(double yaw, double pitch, double roll) {
   turn(f, u, pitch);
   turn(u, r, roll);
   return {f, u, r};
+}
+
+// The declared fields every camera turns its view with (yaw, pitch, roll
+// in degrees, in turned_axes' order), for a Params with members of those
+// names: a camera's fields are std::tuple_cat of its own and these.
+template <class P>
+constexpr auto orientation_fields() {
+  return std::tuple{
+      field("yaw", &P::yaw, std::optional<double>{0.0}, std::nullopt, std::nullopt, "turns forward towards right",
+            "degrees"),
+      field("pitch", &P::pitch, std::optional<double>{0.0}, std::nullopt, std::nullopt, "then forward towards up",
+            "degrees"),
+      field("roll", &P::roll, std::optional<double>{0.0}, std::nullopt, std::nullopt, "then up towards right",
+            "degrees"),
+  };
 }
 
 }  // namespace lc

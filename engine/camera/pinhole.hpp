@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "camera/camera_axes.hpp"
+#include "camera/camera_sample.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "core/tensor.hpp"
@@ -26,16 +27,10 @@ class PinholeCamera {
   struct Params {
     double fov = 60.0;  // horizontal, degrees
     double yaw = 0.0, pitch = 0.0, roll = 0.0;
-    static constexpr auto fields = std::tuple{
-        field("fov", &Params::fov, std::optional<double>{60.0}, above(0.0), below(180.0), "horizontal field of view",
-              "degrees"),
-        field("yaw", &Params::yaw, std::optional<double>{0.0}, std::nullopt, std::nullopt,
-              "turns forward towards right", "degrees"),
-        field("pitch", &Params::pitch, std::optional<double>{0.0}, std::nullopt, std::nullopt,
-              "then forward towards up", "degrees"),
-        field("roll", &Params::roll, std::optional<double>{0.0}, std::nullopt, std::nullopt,
-              "then up towards right", "degrees"),
-    };
+    static constexpr auto fields =
+        std::tuple_cat(std::tuple{field("fov", &Params::fov, std::optional<double>{60.0}, above(0.0), below(180.0),
+                                        "horizontal field of view", "degrees")},
+                       orientation_fields<Params>());
   };
 
   // Image size in pixels; the parameters' angles are in degrees.
@@ -43,6 +38,10 @@ class PinholeCamera {
       : tan_half_(std::tan(0.5 * p.fov * degree)), width_(width), height_(height) {
     axes_ = turned_axes(p.yaw, p.pitch, p.roll);
   }
+
+  // The ray through the sample's image point: every point has one, from
+  // the observer's own event.
+  std::optional<CameraRay> ray(const CameraSample& s) const { return CameraRay{direction(s.px, s.py), {}, s.time}; }
 
   // Direction (on the legs, unit length) through the image point (px, py) in
   // pixel units: pixel (i, j) spans [i, i+1] x [j, j+1], j = 0 at the top.

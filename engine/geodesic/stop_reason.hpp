@@ -14,6 +14,7 @@ enum class StopReason {
   hit,           // a scene object stopped the ray (disk, sphere)
   step_limit,    // the maximum number of steps was used up
   gave_up,       // the step size underflowed or the equations left their domain
+  no_ray,        // never traced: the camera has no ray through that image point
 };
 
 constexpr std::string_view to_string(StopReason r) {
@@ -24,6 +25,7 @@ constexpr std::string_view to_string(StopReason r) {
     case StopReason::hit: return "hit";
     case StopReason::step_limit: return "step_limit";
     case StopReason::gave_up: return "gave_up";
+    case StopReason::no_ray: return "no_ray";
   }
   return "unknown";
 }

@@ -39,7 +39,7 @@ struct DisplayTransform {
   // The image's colours through the transform (its layers dropped: the
   // PNG has none).
   FrameImage applied(const FrameImage& image) const {
-    FrameImage out{image.width, image.height, image.rgb, {}, {}};
+    FrameImage out{image.width, image.height, image.rgb, {}, {}, image.alpha};
     if (!identity()) std::transform(out.rgb.begin(), out.rgb.end(), out.rgb.begin(), *this);
     return out;
   }

@@ -29,6 +29,11 @@ struct FrameImage {
   // star pass reads them; render/renderer.hpp's prepare_frame makes room),
   // else empty.  Not written to the frame's files.
   std::vector<SkyPoint> sky;
+  // Per pixel, the share of its samples the camera had a ray for (0 outside
+  // a dome master's disc), where make_frame made room for it; empty: every
+  // pixel opaque.  The frame's files carry it only where some pixel is not
+  // (image_io).
+  std::vector<float> alpha;
 };
 
 }  // namespace lc

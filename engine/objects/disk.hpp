@@ -22,6 +22,7 @@
 #include "light/blackbody.hpp"
 #include "light/light.hpp"
 #include "light/novikov_thorne.hpp"
+#include "objects/surface_point.hpp"
 #include "objects/step_test.hpp"
 #include "spacetime/chart.hpp"
 
@@ -128,12 +129,15 @@ class Disk {
     return lz;
   }
 
+  // Where the ray that ended at the trace event y met it: the chart's r
+  // and phi.
   template <class S>
-  Color color_at(const S& st, const RayState& y, const SeenShift& shift) const {
+  SurfacePoint surface_at(const S& st, const RayState& y) const {
     double time, r, phi;
     scene_polar(st, {y[0], y[1], y[2], y[3]}, time, r, phi);
-    return color(r, phi, shift);
+    return {r, phi};
   }
+  Color color_at(const SurfacePoint& at, const SeenShift& shift) const { return color(at.u, at.v, shift); }
 
   // Its matter's 4-velocity at the trace event y: the spacetime's thin-disk
   // motion (SpacetimeModel::disk_velocity).

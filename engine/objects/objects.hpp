@@ -17,6 +17,7 @@
 #include "core/hit_kind.hpp"
 #include "core/registry.hpp"
 #include "objects/disk.hpp"
+#include "objects/surface_point.hpp"
 #include "objects/sphere.hpp"
 #include "objects/step_test.hpp"
 #include "spacetime/spacetime.hpp"
@@ -31,8 +32,10 @@ namespace lc {
 // frame's observer event), how far from the origin it reaches (for the
 // free-flight radius), the first hit within a step (before the earliest
 // found so far; objects/step_test.hpp), the 4-velocity of its matter where
-// a ray meets it (trace chart; for hit.g) and the colour there seen as the
-// light model says (light/light.hpp).
+// a ray meets it (trace chart; for hit.g), where on it a ray that ended at
+// a trace event met it (surface_at: a SurfacePoint in its own coordinates,
+// kept in the hit record) and its colour at such a point seen as the light
+// model says (color_at; light/light.hpp).
 template <class O, class S>
 concept ObjectKind = requires(const O& o, const typename O::Params& p, const S& st, ShotResources& res, const Vec4& x,
                               StepTest& t, const RayState& y, std::size_t index) {
@@ -43,7 +46,8 @@ concept ObjectKind = requires(const O& o, const typename O::Params& p, const S& 
   O(p, st, res, x);
   { o.reach(1.0) } -> std::same_as<double>;
   { o.first_hit(st, t, index) } -> std::same_as<std::optional<double>>;
-  { o.color_at(st, y, SeenShift{}) } -> std::same_as<Color>;
+  { o.surface_at(st, y) } -> std::same_as<SurfacePoint>;
+  { o.color_at(SurfacePoint{}, SeenShift{}) } -> std::same_as<Color>;
   { o.emitter_velocity(st, y) } -> std::same_as<Vec4>;
 };
 
@@ -86,6 +90,41 @@ template <class F>
 void for_each_object(const ObjectLists& lists, F&& f) {
   std::size_t index = 0;
   std::apply([&](const auto&... list) { ((void)[&] { for (const auto& o : list) f(o, index++); }(), ...); }, lists);
+}
+
+// The index for_each_object gives the i-th object of kind O.
+template <class O>
+std::size_t object_index(const ObjectLists& lists, std::size_t i) {
+  std::size_t before = 0;
+  bool past = false;
+  std::apply(
+      [&](const auto&... list) {
+        ((past = past || std::is_same_v<typename std::decay_t<decltype(list)>::value_type, O>,
+          before += past ? 0 : list.size()),
+         ...);
+      },
+      lists);
+  return before + i;
+}
+
+// f(object) for the object numbered `index` (for_each_object's numbering);
+// nothing if there is none.
+template <class F>
+void with_object(const ObjectLists& lists, std::size_t index, F&& f) {
+  bool found = false;
+  std::apply(
+      [&](const auto&... list) {
+        ((void)[&] {
+          if (found) return;
+          if (index < list.size()) {
+            f(list[index]);
+            found = true;
+          } else {
+            index -= list.size();
+          }
+        }(), ...);
+      },
+      lists);
 }
 
 // The object of `spec` built and added to its kind's list.

@@ -23,6 +23,7 @@
 #include "core/fields.hpp"
 #include "core/hit_kind.hpp"
 #include "core/json.hpp"
+#include "objects/surface_point.hpp"
 #include "objects/sphere_body.hpp"
 #include "objects/sphere_test.hpp"
 #include "objects/step_test.hpp"
@@ -145,16 +146,20 @@ class Sphere : public SphereBody {
     return std::nullopt;
   }
 
-  // Colour where the ray meets it (the trace event y), seen as `shift`
-  // says: checker in its own polar angles, pole along the frame's third leg.
+  // Where the ray meets it (the trace event y): its own polar angles, pole
+  // along the frame's third leg, phi in [0, 2 pi).
   template <class S>
-  Color color_at(const S& st, const RayState& y, const SeenShift& shift) const {
+  SurfacePoint surface_at(const S& st, const RayState& y) const {
     const Vec3 xi = detail::sphere_local(st, *this, {y[0], y[1], y[2], y[3]});
     const double th = std::acos(std::clamp(xi[2] / norm3(xi), -1.0, 1.0));
     double ph = std::atan2(xi[1], xi[0]);
     if (ph < 0) ph += two_pi;
+    return {th, ph};
+  }
+  // Its colour there, seen as `shift` says: a checker in those angles.
+  Color color_at(const SurfacePoint& at, const SeenShift& shift) const {
     return shift.texture(
-        checker(static_cast<long>(th / pi * p_.rows), static_cast<long>(ph / two_pi * p_.columns), p_.colors));
+        checker(static_cast<long>(at.u / pi * p_.rows), static_cast<long>(at.v / two_pi * p_.columns), p_.colors));
   }
 
   // Its matter's 4-velocity where the ray meets it (the trace event y): the

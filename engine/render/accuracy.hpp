@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "render/hit.hpp"
+#include "render/hit_record.hpp"
 #include "scene/scene_spec.hpp"
 
 namespace lc {

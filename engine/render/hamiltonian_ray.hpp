@@ -1,9 +1,10 @@
 #pragma once
 // One camera ray through a scene in the general path (render/trace.hpp):
 // Hamilton's equations in the spacetime's trace chart, with the visitor that
-// tests each step against the spheres and the disk, counts equatorial
-// crossings (hit.order) and, at the end, looks up the sky or reports the
-// horizon.
+// tests each step against the scene's objects, counts equatorial crossings
+// (hit.order) and, at the end, fills the ray's hit record
+// (render/hit_record.hpp): the object met and where, the sky direction or
+// the horizon.
 
 #include <algorithm>
 #include <array>
@@ -16,7 +17,8 @@
 #include "spacetime/weak_field_tail.hpp"
 #include "observer/ray_direction.hpp"
 #include "observer/tetrad.hpp"
-#include "render/hit.hpp"
+#include "render/hit_record.hpp"
+#include "render/ray_start.hpp"
 #include "render/scene.hpp"
 #include "spacetime/chart.hpp"
 
@@ -29,26 +31,21 @@ struct NoPath {
 
 namespace detail {
 
-// The sky seen by a ray that escaped at the trace-coordinate event x with
-// momentum p: fills out.kind and out.color, and sky's direction.
+// The direction at infinity (theta from +z, phi in [0, 2 pi)) of a ray that
+// escaped at the trace-coordinate event x with momentum p: the spatial
+// tangent, bent by the deflection still to come between here and infinity
+// (the spacetime's far field).
 template <class S>
-void sky_sample(const SceneIn<S>& sc, const Vec4& x, const Vec4& p, RayHit& out, SkyPoint& sky) {
-  const S& st = sc.spacetime;
-  // Escape direction: the spatial tangent, bent by the deflection still to
-  // come between here and infinity (the spacetime's far field).
+void sky_direction(const S& st, const Vec4& x, const Vec4& p, double& theta, double& phi) {
   Vec4 dx, dp;
   st.hamiltonian_rhs(x, p, dx, dp);
   Vec3 d = {dx[1], dx[2], dx[3]};
   const double dn = norm3(d);
   for (auto& c : d) c /= dn;
   d = st.escape_direction(x, d);
-  out.kind = HitKind::sky;
-  const double theta = std::acos(std::clamp(d[2], -1.0, 1.0));
-  double sphi = std::atan2(d[1], d[0]);
-  if (sphi < 0) sphi += two_pi;
-  out.color = sc.sky.color(theta, sphi);
-  sky.theta = theta;
-  sky.phi = sphi;
+  theta = std::acos(std::clamp(d[2], -1.0, 1.0));
+  phi = std::atan2(d[1], d[0]);
+  if (phi < 0) phi += two_pi;
 }
 
 
@@ -59,10 +56,12 @@ void sky_sample(const SceneIn<S>& sc, const Vec4& x, const Vec4& p, RayHit& out,
 template <class S, class OnStep>
 class HamiltonianRay {
  public:
-  HamiltonianRay(const SceneIn<S>& sc, const Vec3& n, OnStep& on_step)
-      : sc_(sc), on_step_(on_step), p0_(backward_ray_momentum(sc.metric, sc.frame, n)) {
-    // No other frame can reuse a ray of a frame without a still key.
-    if (sc.still_key.empty()) out_.reuse_window = 0.0f;
+  HamiltonianRay(const SceneIn<S>& sc, const RayStart& start, OnStep& on_step)
+      : sc_(sc), eye_(*start.eye), on_step_(on_step),
+        p0_(backward_ray_momentum(eye_.metric, eye_.frame, start.direction)) {
+    // No other frame can reuse a ray of a frame without a still key, nor
+    // one from an eye of its own.
+    if (sc.still_key.empty() || start.eye != &sc.eye) reuse_window_ = 0.0f;
   }
 
   const Vec4& momentum() const { return p0_; }
@@ -72,7 +71,7 @@ class HamiltonianRay {
   void track_reuse_windows(bool track) { track_windows_ = track && track_windows_; }
   // What run_rays starts the ray with.
   RayState start() const {
-    const Vec4& x0 = sc_.observer;
+    const Vec4& x0 = eye_.event;
     return {x0[0], x0[1], x0[2], x0[3], p0_[0], p0_[1], p0_[2], p0_[3]};
   }
   RayState slope() const {
@@ -81,7 +80,7 @@ class HamiltonianRay {
     return dy;
   }
   double first_step() const {
-    const Vec4& x0 = sc_.observer;
+    const Vec4& x0 = eye_.event;
     return 1e-2 * std::max(1.0, std::sqrt(x0[1] * x0[1] + x0[2] * x0[2] + x0[3] * x0[3]));
   }
 
@@ -93,7 +92,7 @@ class HamiltonianRay {
   bool visit(const RayStep& step, RayResult& res) {
     const S& st = sc_.spacetime;
     on_step_(step.start(), step.t0);
-    StepTest t(step, out_.reuse_window, track_windows_, warm_);
+    StepTest t(step, reuse_window_, track_windows_, warm_);
     std::size_t winner = no_object;
     for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
       if (const auto l = o.first_hit(st, t, index)) {
@@ -106,38 +105,34 @@ class HamiltonianRay {
       if (lz < t.best()) ++crossings_;
     }
     if (winner == no_object) return false;
-    hit_object(step.at(t.best()), t.best(), winner, res);
+    winner_ = winner;
+    res.reason = StopReason::hit;
+    res.y = step.at(t.best());
+    res.lambda = t.best();
     return true;
   }
 
-  // The sample, once the integration has ended with `res`.
-  // `sky` gets where a sky ray went (untouched otherwise).
-  RayHit finish(const RayResult& res, SkyPoint& sky) {
-    out_.steps = res.steps;
-    out_.reason = res.reason;
-    out_.end = res.y;
-    out_.lambda_end = res.lambda;
-    if (res.reason == StopReason::hit) return out_;
+  // The ray's record, once the integration has ended with `res`.
+  void finish(const RayResult& res, HitRecord& out) {
+    out = HitRecord{};
+    out.reuse_window = reuse_window_;
+    out.steps = res.steps;
+    out.reason = res.reason;
+    out.end = res.y;
+    out.lambda_end = res.lambda;
+    if (res.reason == StopReason::hit) return hit_object(res.y, out);
     const Vec4 x = {res.y[0], res.y[1], res.y[2], res.y[3]};
-    double t, r, phi;
-    scene_polar(sc_.spacetime, x, t, r, phi);
-    out_.r = r;
-    out_.phi = phi;
-    out_.t = t - sc_.observer_time;
-    out_.order = crossings_;
+    fill_event(x, out);
     if (res.reason == StopReason::horizon) {
-      out_.kind = HitKind::horizon;
-      return out_;
+      out.kind = HitKind::horizon;
+      return;
     }
-    if (res.reason != StopReason::escaped) return out_;  // gave up: black, kind 4
-    sky_sample(sc_, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out_, sky);
-    out_.g = 1.0 / res.y[4];  // the source at rest far away: p.u = p_t
+    if (res.reason != StopReason::escaped) return;  // gave up: black, kind 4
+    out.kind = HitKind::sky;
+    sky_direction(sc_.spacetime, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out.sky_theta, out.sky_phi);
+    out.g = 1.0 / res.y[4];  // the source at rest far away: p.u = p_t
     // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
-    const SeenShift shift = sc_.light.seen(out_.g, observer_reference() * out_.g);
-    out_.color = shift.texture(out_.color);
-    sky.color = static_cast<float>(shift.color);
-    sky.beaming = static_cast<float>(shift.beaming);
-    return out_;
+    out.g_gravity = observer_reference() * out.g;
   }
 
  private:
@@ -146,59 +141,55 @@ class HamiltonianRay {
   static double frequency_ratio(const RayState& y, const Vec4& u) {
     return 1.0 / (y[4] * u[0] + y[5] * u[1] + y[6] * u[2] + y[7] * u[3]);
   }
-  // p.u_ref at the observer, where the light model splits g (light/light.hpp).
+  // p.u_ref at the eye, where the light model splits g (light/light.hpp).
   double observer_reference() const {
     if (!sc_.light.splits()) return 1.0;
-    const Vec4& u = sc_.reference_observer;
+    const Vec4& u = eye_.reference;
     return p0_[0] * u[0] + p0_[1] * u[1] + p0_[2] * u[2] + p0_[3] * u[3];
   }
-  // How light of ratio g from the event y is seen.
-  SeenShift seen(double g, const RayState& y) const {
-    if (!sc_.light.splits()) return sc_.light.seen(g, g);
-    return seen_in_parts(g, y);
-  }
-  // The same where g is split: g_grav = D(u_ref,obs) / D(u_ref,em), the
-  // ZAMOs' at the two ends.  Kept out of line: the visitor is inlined into
-  // every step of the integration.
-  [[gnu::noinline]] SeenShift seen_in_parts(double g, const RayState& y) const {
+  // The gravitational part of the ratio g of light from the event y where
+  // the light model splits g: D(u_ref,obs) / D(u_ref,em), the ZAMOs' at the
+  // two ends; g itself where it does not.
+  double gravity_part(double g, const RayState& y) const {
+    if (!sc_.light.splits()) return g;
     const Vec4 x = {y[0], y[1], y[2], y[3]};
-    return sc_.light.seen(g, observer_reference() * frequency_ratio(y, zamo_velocity(sc_.spacetime, x)));
+    return observer_reference() * frequency_ratio(y, zamo_velocity(sc_.spacetime, x));
   }
-  // Ends the ray at the event y (affine parameter lambda) on the object
-  // numbered `winner`: its frequency ratio and colour.  Kept out of line:
-  // it runs once per ray, while the visitor is inlined into every step of
-  // the integration, where its size decides what else the compiler inlines.
-  [[gnu::noinline]] void hit_object(const RayState& y, double lambda, std::size_t winner, RayResult& res) {
+  // The end event's scene time (minus the frame's), r and phi, and the
+  // crossings before it.
+  void fill_event(const Vec4& x, HitRecord& out) const {
+    double t, r, phi;
+    scene_polar(sc_.spacetime, x, t, r, phi);
+    out.r = r;
+    out.phi = phi;
+    out.t = t - sc_.eye.time;
+    out.order = crossings_;
+  }
+  // The record of a hit at the event y on the object numbered winner_: the
+  // frequency ratio, where on the object.  Kept out of line: it runs once
+  // per ray, while the visitor is inlined into every step of the
+  // integration, where its size decides what else the compiler inlines.
+  [[gnu::noinline]] void hit_object(const RayState& y, HitRecord& out) const {
     const S& st = sc_.spacetime;
     for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
-      if (index == winner) {
-        const double g = frequency_ratio(y, o.emitter_velocity(st, y));
-        hit(std::decay_t<decltype(o)>::hit_kind, o.color_at(st, y, seen(g, y)), g, y, lambda, res);
+      if (index == winner_) {
+        out.kind = std::decay_t<decltype(o)>::hit_kind;
+        out.object = static_cast<std::uint32_t>(index);
+        out.g = frequency_ratio(y, o.emitter_velocity(st, y));
+        out.g_gravity = gravity_part(out.g, y);
+        out.surface = o.surface_at(st, y);
       }
     });
-  }
-  // Ends the ray at the event y (affine parameter lambda) on an object.
-  bool hit(HitKind kind, const Color& color, double g, const RayState& y, double lambda, RayResult& res) {
-    double t, r, phi;
-    scene_polar(sc_.spacetime, {y[0], y[1], y[2], y[3]}, t, r, phi);
-    out_.kind = kind;
-    out_.color = color;
-    out_.g = g;
-    out_.r = r;
-    out_.phi = phi;
-    out_.t = t - sc_.observer_time;
-    out_.order = crossings_;
-    res.reason = StopReason::hit;
-    res.y = y;
-    res.lambda = lambda;
-    return true;
+    fill_event({y[0], y[1], y[2], y[3]}, out);
   }
 
   const SceneIn<S>& sc_;
+  const Eye& eye_;
   OnStep& on_step_;
   Vec4 p0_;
-  RayHit out_;
+  float reuse_window_ = std::numeric_limits<float>::infinity();  // HitRecord::reuse_window, as the steps narrow it
   int crossings_ = 0;
+  std::size_t winner_ = no_object;  // the object hit
   bool track_windows_ = true;
   static constexpr std::size_t no_object = static_cast<std::size_t>(-1);
   ObjectWarmStarts warm_ = no_warm_starts();  // per object (the first few), carried along the ray

@@ -1,7 +1,7 @@
 #pragma once
 // The data layers a frame can carry besides colour (docs/layers.md), one
 // line each in the table below: a name (the EXR channel), what it holds,
-// and how to read it from a traced ray's sample.  The frame image, the
+// and how to read it from a ray's hit record.  The frame image, the
 // pixel loop, the sample memo, `lightcone trace`'s report, the help text and
 // docs/layers.md (checked by a test) all read this table and nothing else.
 
@@ -9,52 +9,52 @@
 #include <cstddef>
 #include <string_view>
 
-#include "render/hit.hpp"
+#include "render/hit_record.hpp"
 
 namespace lc {
 
 struct LayerSpec {
   std::string_view name;
   std::string_view what;
-  float (*value)(const RaySample&);
+  float (*value)(const HitRecord&);
 };
 
 inline constexpr std::array layers = {
     LayerSpec{"hit.kind",
               "what the ray found: 0 sky, 1 disk, 2 horizon, 3 object (sphere), 4 gave up (integration failed; the "
-              "pixel is black)",
-              [](const RaySample& s) { return static_cast<float>(static_cast<int>(s.kind)); }},
+              "pixel is black), 5 no ray (the camera has none through the pixel centre: black, alpha 0)",
+              [](const HitRecord& s) { return static_cast<float>(static_cast<int>(s.kind)); }},
     LayerSpec{"hit.r",
               "radius of the event where the ray ended: Boyer–Lindquist r for Kerr, distance from the origin "
               "otherwise (where exactly, for the sky and the horizon: below)",
-              [](const RaySample& s) { return static_cast<float>(s.r); }},
+              [](const HitRecord& s) { return static_cast<float>(s.r); }},
     LayerSpec{"hit.phi", "longitude of that event in [0, 2π): Boyer–Lindquist φ for Kerr, atan2(y, x) otherwise",
-              [](const RaySample& s) { return static_cast<float>(s.phi); }},
+              [](const HitRecord& s) { return static_cast<float>(s.phi); }},
     LayerSpec{"hit.t",
               "coordinate time of that event minus the observer's: negative, light left it earlier (Boyer–Lindquist "
               "t for Kerr)",
-              [](const RaySample& s) { return static_cast<float>(s.t); }},
+              [](const HitRecord& s) { return static_cast<float>(s.t); }},
     LayerSpec{"hit.g",
               "frequency ratio ν_observed / ν_emitted of the light: above 1 blueshifted, below 1 redshifted; the "
               "disk's matter orbits, a sphere moves with its worldline, the sky's light left a source at rest far "
               "away; 0 for the horizon and gave-up pixels (docs/light.md)",
-              [](const RaySample& s) { return static_cast<float>(s.g); }},
+              [](const HitRecord& s) { return static_cast<float>(s.g); }},
     LayerSpec{"hit.order",
               "number of crossings of the equatorial plane (z = 0) before the end: 0 for the direct image of the "
               "disk, 1 for the first image seen under/over the hole, …",
-              [](const RaySample& s) { return static_cast<float>(s.order); }},
+              [](const HitRecord& s) { return static_cast<float>(s.order); }},
 };
 inline constexpr std::size_t layer_count = layers.size();
 
 // A sample's values of every layer, in table order.
 using LayerValues = std::array<float, layer_count>;
-inline LayerValues layer_values(const RaySample& s) {
+inline LayerValues layer_values(const HitRecord& s) {
   LayerValues v;
   for (std::size_t k = 0; k < layer_count; ++k) v[k] = layers[k].value(s);
   return v;
 }
 
-// What a frame uses of a traced ray: its colour, its hit kind (adaptive
+// What a frame uses of a shaded sample: its colour, its hit kind (adaptive
 // sampling compares those), its layer values (for the pixel's centre) and
 // where it went on the sky (for point stars).
 struct FrameSample {
@@ -64,5 +64,14 @@ struct FrameSample {
   SkyPoint sky{};
 };
 inline FrameSample frame_sample(const RaySample& s) { return {s.color, layer_values(s), s.kind, s.sky}; }
+
+// The sample of an image point the camera has no ray through: black, kind
+// no_ray, never traced.
+inline RaySample no_ray_sample() {
+  RaySample s;
+  s.kind = HitKind::no_ray;
+  s.reason = StopReason::no_ray;
+  return s;
+}
 
 }  // namespace lc

@@ -3,17 +3,19 @@
 // (render/trace.hpp): the Boyer–Lindquist–Mino equations
 // (geodesic/kerr_mino.hpp), with the visitor that finds disk hits,
 // equatorial crossings, the escape and capture events and the direction at
-// infinity.
+// infinity, and fills the ray's hit record as the general path does.
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <type_traits>
 
 #include "geodesic/crossing.hpp"
 #include "geodesic/kerr_mino.hpp"
 #include "observer/ray_direction.hpp"
 #include "render/hamiltonian_ray.hpp"
-#include "render/hit.hpp"
+#include "render/hit_record.hpp"
 #include "render/scene.hpp"
 
 namespace lc::detail {
@@ -41,12 +43,19 @@ inline double mino_capture_radius(const SceneIn<Kerr>& sc) {
 template <class OnStep>
 class MinoRay {
  public:
-  // observer_jacobian: Kerr–Schild over Boyer–Lindquist at the observer
-  // (trace_jacobian of sc.observer_scene), worked out once for a batch.
-  MinoRay(const SceneIn<Kerr>& sc, const Mat4& observer_jacobian, const Vec3& n, OnStep& on_step)
-      : sc_(sc), on_step_(on_step), start_(make_start(sc, observer_jacobian, n)), clock_(start_.k, start_.y0[1]),
-        u_escape_(1.0 / sc.rays.escape_radius), u_capture_(capture_radius() > 0.0 ? 1.0 / capture_radius() : 1e300),
-        at_escape_{start_.y0, start_.y0[0]}, observer_reference_(observer_reference(sc, n)) {}
+  // observer_jacobian: Kerr–Schild over Boyer–Lindquist at the frame's eye
+  // (trace_jacobian of sc.eye.scene_event), worked out once for a batch;
+  // a ray from another eye works out its own.
+  MinoRay(const SceneIn<Kerr>& sc, const Mat4& observer_jacobian, const RayStart& ray, OnStep& on_step)
+      : sc_(sc), on_step_(on_step),
+        start_(make_start(sc, *ray.eye,
+                          ray.eye == &sc.eye ? observer_jacobian : sc.spacetime.trace_jacobian(ray.eye->scene_event),
+                          ray.direction)),
+        clock_(start_.k, start_.y0[1]), u_escape_(1.0 / sc.rays.escape_radius),
+        u_capture_(capture_radius() > 0.0 ? 1.0 / capture_radius() : 1e300), at_escape_{start_.y0, start_.y0[0]},
+        observer_reference_(observer_reference(sc, *ray.eye, ray.direction)) {
+    if (ray.eye != &sc.eye) reuse_window_ = 0.0f;
+  }
 
   // What run_rays starts the ray with.
   const KerrMinoConstants& constants() const { return start_.k; }
@@ -72,12 +81,11 @@ class MinoRay {
     if ((c0 > 0.0) != (c1 > 0.0) && c0 != 0.0) {
       const double lz = locate_crossing(step, [](const MinoState& y) { return y[2]; }, step.t0, l1, c0, c1);
       const Event e = event_at(step, lz);
-      fill_event(e);
-      for (const Disk& disk : std::get<std::vector<Disk>>(sc_.objects))
-        if (disk.covers(out_.r)) {
-          out_.kind = Disk::hit_kind;
-          out_.g = disk_frequency_ratio(e);
-          out_.color = disk.color(out_.r, out_.phi, seen_from_disk(e, out_.g));
+      const std::vector<Disk>& disks = std::get<std::vector<Disk>>(sc_.objects);
+      const double r = disk_radius(e);
+      for (std::size_t i = 0; i < disks.size(); ++i)
+        if (disks[i].covers(r)) {
+          disk_ = i;
           res.reason = StopReason::hit;
           res.y = e.y;
           res.lambda = lz;
@@ -107,11 +115,12 @@ class MinoRay {
     return false;
   }
 
-  // The sample, once the integration has ended with `res`.
-  // `sky` gets where a sky ray went (untouched otherwise).
-  RayHit finish(const MinoResult& res, SkyPoint& sky) {
-    out_.steps = res.steps;
-    out_.reason = res.reason;
+  // The ray's record, once the integration has ended with `res`.
+  void finish(const MinoResult& res, HitRecord& out) {
+    out = HitRecord{};
+    out.reuse_window = reuse_window_;
+    out.steps = res.steps;
+    out.reason = res.reason;
     const Event last = res.reason == StopReason::escaped   ? at_escape_
                        : res.reason == StopReason::horizon ? at_capture_
                        : res.reason == StopReason::hit     ? at_hit_
@@ -119,30 +128,33 @@ class MinoRay {
     // The end in trace coordinates costs a Jacobian, its inverse and two
     // logarithms: only `lightcone trace` (a path recorder) reads it.
     if constexpr (!std::is_same_v<std::decay_t<OnStep>, NoPath>) {
-      out_.end = trace_state(last);
-      out_.lambda_end = last.y[7];
+      out.end = trace_state(last);
+      out.lambda_end = last.y[7];
     }
-    if (res.reason == StopReason::hit) return out_;
-    fill_event(last);
+    fill_event(last, out);
+    if (res.reason == StopReason::hit) {
+      // The disk through the object seam: its kind, index and surface point.
+      out.kind = Disk::hit_kind;
+      out.object = static_cast<std::uint32_t>(object_index<Disk>(sc_.objects, disk_));
+      out.g = disk_frequency_ratio(at_hit_);
+      out.g_gravity = disk_gravity_part(at_hit_, out.g);
+      out.surface = {out.r, out.phi};
+      return;
+    }
     if (res.reason == StopReason::horizon) {
-      out_.kind = HitKind::horizon;
-      return out_;
+      out.kind = HitKind::horizon;
+      return;
     }
-    if (res.reason != StopReason::escaped) return out_;  // gave up: black, kind 4
-    out_.kind = HitKind::sky;
+    if (res.reason != StopReason::escaped) return;  // gave up: black, kind 4
+    out.kind = HitKind::sky;
     const double n2 = norm3(direction_);
-    const double theta = std::acos(std::clamp(direction_[2] / n2, -1.0, 1.0));
+    out.sky_theta = std::acos(std::clamp(direction_[2] / n2, -1.0, 1.0));
     double sphi = std::atan2(direction_[1], direction_[0]);
     if (sphi < 0) sphi += two_pi;
-    out_.g = -1.0 / start_.k.E;  // the source at rest far away: p.u = p_t = -E
+    out.sky_phi = sphi;
+    out.g = -1.0 / start_.k.E;  // the source at rest far away: p.u = p_t = -E
     // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
-    const SeenShift shift = sc_.light.seen(out_.g, observer_reference_ * out_.g);
-    out_.color = shift.texture(sc_.sky.color(theta, sphi));
-    sky.theta = theta;
-    sky.phi = sphi;
-    sky.color = static_cast<float>(shift.color);
-    sky.beaming = static_cast<float>(shift.beaming);
-    return out_;
+    out.g_gravity = observer_reference_ * out.g;
   }
 
  private:
@@ -158,9 +170,10 @@ class MinoRay {
     return {y, clock_.time(y, lambda)};
   }
 
-  static KerrMinoStart make_start(const SceneIn<Kerr>& sc, const Mat4& observer_jacobian, const Vec3& n) {
+  static KerrMinoStart make_start(const SceneIn<Kerr>& sc, const Eye& eye, const Mat4& observer_jacobian,
+                                  const Vec3& n) {
     const Kerr& st = sc.spacetime;
-    const Vec4 p_ks = backward_ray_momentum(sc.metric, sc.frame, n);
+    const Vec4 p_ks = backward_ray_momentum(eye.metric, eye.frame, n);
     auto bl_momentum = [&](const Vec4& s) {
       const Mat4 J = st.trace_jacobian(s);
       Vec4 p{};
@@ -168,7 +181,7 @@ class MinoRay {
         for (int mu = 0; mu < 4; ++mu) p[nu] += p_ks[mu] * J[mu][nu];
       return p;
     };
-    Vec4 s0 = sc.observer_scene;
+    Vec4 s0 = eye.scene_event;
     Vec4 p_bl{};
     for (int nu = 0; nu < 4; ++nu)
       for (int mu = 0; mu < 4; ++mu) p_bl[nu] += p_ks[mu] * observer_jacobian[mu][nu];
@@ -203,30 +216,31 @@ class MinoRay {
       for (int nu = 0; nu < 4; ++nu) pk[mu] += p[nu] * Ji[nu][mu];
     return RayState{x[0], x[1], x[2], x[3], pk[0], pk[1], pk[2], pk[3]};
   }
-  // p.u_ref at the observer, where the light model splits g
-  // (light/light.hpp).
-  static double observer_reference(const SceneIn<Kerr>& sc, const Vec3& n) {
+  // p.u_ref at the eye, where the light model splits g (light/light.hpp).
+  static double observer_reference(const SceneIn<Kerr>& sc, const Eye& eye, const Vec3& n) {
     if (!sc.light.splits()) return 1.0;
-    const Vec4 p = backward_ray_momentum(sc.metric, sc.frame, n);
-    const Vec4& u = sc.reference_observer;
+    const Vec4 p = backward_ray_momentum(eye.metric, eye.frame, n);
+    const Vec4& u = eye.reference;
     return p[0] * u[0] + p[1] * u[1] + p[2] * u[2] + p[3] * u[3];
   }
-  // How light of ratio g from the disk at e is seen.
-  SeenShift seen_from_disk(const Event& e, double g) const {
-    if (!sc_.light.splits()) return sc_.light.seen(g, g);
-    return seen_in_parts(e, g);
-  }
-  // The same where g is split: g_grav = D(u_ref,obs) / D(u_ref,em), the
-  // ZAMO at e in Boyer–Lindquist, u^mu = -g^{mu t} / sqrt(-g^{tt}).  Kept
-  // out of line: the visitor is inlined into every step.
-  [[gnu::noinline]] SeenShift seen_in_parts(const Event& e, double g) const {
+  // The gravitational part of the ratio g of light from the disk at e where
+  // the light model splits g: D(u_ref,obs) / D(u_ref,em), the ZAMO at e in
+  // Boyer–Lindquist, u^mu = -g^{mu t} / sqrt(-g^{tt}); g where it does not.
+  double disk_gravity_part(const Event& e, double g) const {
+    if (!sc_.light.splits()) return g;
     Vec4 s, p;
     kerr_mino_event(start_.k, e.y, s, p);
     const Mat4 m = sc_.spacetime.bl_metric(s);
     const double det = m[0][0] * m[3][3] - m[0][3] * m[0][3];
     const double gtt = m[3][3] / det, gtp = -m[0][3] / det;
     const double d_ref = -(p[0] * gtt + p[3] * gtp) / std::sqrt(-gtt);
-    return sc_.light.seen(g, observer_reference_ / d_ref);
+    return observer_reference_ / d_ref;
+  }
+  // Boyer–Lindquist r at the event e (where the disk is looked for).
+  double disk_radius(const Event& e) const {
+    Vec4 s, p;
+    kerr_mino_event(start_.k, e.y, s, p);
+    return s[1];
   }
   // nu_observed / nu_emitted for light that left the disk at e: 1 / (p_mu
   // u^mu) in Boyer–Lindquist, the matter's u from Kerr::disk_velocity_bl.
@@ -236,13 +250,13 @@ class MinoRay {
     const Vec4 u = sc_.spacetime.disk_velocity_bl(s[1]);
     return 1.0 / (p[0] * u[0] + p[1] * u[1] + p[3] * u[3]);
   }
-  void fill_event(const Event& e) {
+  void fill_event(const Event& e, HitRecord& out) const {
     Vec4 s, p;
     kerr_mino_event(start_.k, e.y, s, p);
-    out_.r = s[1];
-    out_.phi = s[3];
-    out_.t = e.t - sc_.observer_time;
-    out_.order = crossings_;
+    out.r = s[1];
+    out.phi = s[3];
+    out.t = e.t - sc_.eye.time;
+    out.order = crossings_;
   }
 
   const SceneIn<Kerr>& sc_;
@@ -255,9 +269,10 @@ class MinoRay {
   Event at_capture_{};  // where r passed the capture radius (the same for the horizon)
   Event at_hit_{};      // where the ray met the disk
   Vec3 direction_{};  // at infinity, in the Kerr–Schild Cartesian frame
-  double observer_reference_;  // p.u_ref at the observer (1 where g is not split)
-  RayHit out_;
+  double observer_reference_;  // p.u_ref at the eye (1 where g is not split)
+  float reuse_window_ = std::numeric_limits<float>::infinity();  // HitRecord::reuse_window (no moving objects here)
   int crossings_ = 0;
+  std::size_t disk_ = 0;  // which disk the ray hit (its index in the disks' list)
 };
 
 }  // namespace lc::detail

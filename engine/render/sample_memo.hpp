@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "render/hit.hpp"
+#include "render/hit_record.hpp"
 #include "render/layers.hpp"
 #include "render/renderer.hpp"
 

@@ -14,6 +14,7 @@
 
 #include "geodesic/null_ray.hpp"
 #include "camera/camera.hpp"
+#include "observer/eye.hpp"
 #include "light/light.hpp"
 #include "objects/objects.hpp"
 #include "sky/sky.hpp"
@@ -23,23 +24,18 @@ namespace lc {
 template <class S>
 struct SceneIn {
   S spacetime;
-  Vec4 observer{};       // trace coordinates
-  double observer_time;  // scene time of the observer (BL t for Kerr)
-  Mat4 metric{};         // at the observer
-  Tetrad frame{};
+  // The observer at the frame's moment: where its camera's rays start
+  // unless a sample has an eye or a time of its own (render/ray_start.hpp).
+  Eye eye{};
   Camera camera;
   Sky sky;
   ObjectLists objects;
   RayOptions rays;
-  Vec4 observer_scene{};  // the observer's event in scene coordinates, exact where the shot gave it (on the axis)
   // still_key() of the frame's scene where the spacetime is stationary, else
   // empty: frames with equal non-empty keys may share the samples of rays
   // that stay clear of moving objects (render/sample_memo.hpp).
   std::string still_key{};
   Light light{};  // how hits' light is shown
-  // The ZAMO's 4-velocity at the observer (trace coordinates), where the
-  // light model splits g into its parts (light/light.hpp).
-  Vec4 reference_observer{};
 };
 
 // A scene in any registered spacetime (spacetime/spacetime.hpp).

@@ -46,7 +46,8 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
           w.where, what, w.where, describe(w.spacetime), here));
   };
 
-  SceneIn<S> sc{st, {}, 0.0, {}, {}, Camera(fs.camera, width, height), Sky(fs.sky, res), {}, rays};
+  SceneIn<S> sc{st, {}, Camera(fs.camera, width, height), Sky(fs.sky, res), {}, rays};
+  Eye& eye = sc.eye;
   const ObserverSpec& ob = fs.observer;
   // Where the observer stands is checked before its frame is made: there
   // the reason would show only as "not timelike" or "degenerates".
@@ -72,30 +73,30 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
       check_same(*ob.worldline, "the observer");
       const auto w = res.worldline(*ob.worldline);
       const WorldlineEvent ev = w->at_proper_time(ob.proper_time);
-      sc.observer = ev.x;
-      sc.frame = ev.frame;
-      sc.observer_scene = st.scene_from_trace(ev.x);
-      check_distance(sc.observer_scene);
+      eye.event = ev.x;
+      eye.frame = ev.frame;
+      eye.scene_event = st.scene_from_trace(ev.x);
+      check_distance(eye.scene_event);
     } else {
-      sc.observer = st.trace_from_scene(ob.position);
-      sc.observer_scene = ob.position;
-      sc.frame = ob.kind == ObserverKind::zamo ? zamo_polar_tetrad(st, ob.position)
+      eye.event = st.trace_from_scene(ob.position);
+      eye.scene_event = ob.position;
+      eye.frame = ob.kind == ObserverKind::zamo ? zamo_polar_tetrad(st, ob.position)
                                                : static_polar_tetrad(st, ob.position);
     }
   } catch (const ObserverError& e) {
     throw std::invalid_argument(fmt::format("{}: observer: {}", where_of(ob), e.what()));
   }
-  if (st.captured(sc.observer))
+  if (st.captured(eye.event))
     throw std::invalid_argument(fmt::format(
         "{}: observer: too close to a horizon (inside the capture region where rays are stopped{})", where_of(ob),
         ob.kind == ObserverKind::free_fall ? "; a fall can be shown up to just outside the horizon" : ""));
-  sc.metric = st.metric(sc.observer);
+  eye.metric = st.metric(eye.event);
   double r_unused, phi_unused;
-  scene_polar(st, sc.observer, sc.observer_time, r_unused, phi_unused);
+  scene_polar(st, eye.event, eye.time, r_unused, phi_unused);
 
-  for (const ObjectSpec& o : fs.objects) add_object(sc.objects, o, st, res, sc.observer);
+  for (const ObjectSpec& o : fs.objects) add_object(sc.objects, o, st, res, eye.event);
   if (fs.light.model != LightModel::geometric) sc.light = Light(fs.light, res.spectral_shift());
-  if (sc.light.splits()) sc.reference_observer = zamo_velocity(st, sc.observer);
+  if (sc.light.splits()) eye.reference = zamo_velocity(st, eye.event);
   sc.rays.free_radius = free_radius(sc);
   // Where the spacetime's far field is known (far_field_radius), rays
   // escape there, or beyond the objects; the sky lookup adds the rest of

@@ -1,20 +1,26 @@
 #pragma once
-// Camera rays through a scene: trace_sample follows one (for `lightcone
-// trace` and tests, with a path recorder), trace_batch a row's worth for the
-// renderer and the bench, lane_count at a time (core/lanes.hpp).  Both run
-// the one ray loop (geodesic/ray_loop.hpp), and which formulation of the ray
-// equations a scene's rays take is chosen here, in one place.
+// The trace stage: ray starts (render/ray_start.hpp) -> hit records
+// (render/hit_record.hpp).  trace_records follows a batch lane_count at a
+// time (core/lanes.hpp) for the renderer; trace_sample follows one from the
+// frame's eye, with a path recorder, and trace_batch a list of directions
+// from it (for `lightcone trace`, the bench and tests: both shade what they
+// traced, render/shade.hpp).  All run the one ray loop
+// (geodesic/ray_loop.hpp), and which formulation of the ray equations a
+// scene's rays take is chosen here, in one place.
 
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <type_traits>
+#include <vector>
 
 #include "core/lanes.hpp"
 #include "geodesic/ray_loop.hpp"
 #include "render/hamiltonian_ray.hpp"
 #include "render/mino_ray.hpp"
+#include "render/ray_start.hpp"
 #include "render/scene.hpp"
+#include "render/shade.hpp"
 
 namespace lc {
 
@@ -33,33 +39,29 @@ bool takes_mino_path(const SceneIn<S>& sc) {
 
 namespace detail {
 
-// The rays of local directions `dirs` (on the observer's legs) into `out`,
-// W at a time; on_step records paths (NoPath: none).  An out[k] whose
-// reuse_window is 0 on entry asks its ray not to work out its window
-// (HamiltonianRay::track_reuse_windows).
+// The records of the rays `starts` into `out`, W at a time; on_step records
+// paths (NoPath: none).  An out[k] whose reuse_window is 0 on entry asks its
+// ray not to work out its window (HamiltonianRay::track_reuse_windows).
 template <int W, class S, class OnStep>
-void trace_rays(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out, OnStep& on_step) {
+void trace_rays(const SceneIn<S>& sc, std::span<const RayStart> starts, std::span<HitRecord> out, OnStep& on_step) {
   // path: the formulation; args: what each ray is made from besides the
   // scene, its direction and the path recorder.
   auto run = [&](const auto& path, const auto&... args) {
     using Ray = typename std::decay_t<decltype(path)>::Ray;
     run_rays<W>(
-        path, sc.rays.control, sc.rays.max_steps, dirs.size(),
+        path, sc.rays.control, sc.rays.max_steps, starts.size(),
         [&](std::size_t k, std::optional<Ray>& slot) {
-          slot.emplace(sc, args..., dirs[k], on_step);
+          slot.emplace(sc, args..., starts[k], on_step);
           if constexpr (requires(Ray& r) { r.track_reuse_windows(true); })
             slot->track_reuse_windows(out[k].reuse_window > 0.0f);
         },
-        [&](std::size_t k, Ray& ray, const RayResult& res) {
-          out[k].sky = SkyPoint{};
-          static_cast<RayHit&>(out[k]) = ray.finish(res, out[k].sky);
-        });
+        [&](std::size_t k, Ray& ray, const RayResult& res) { ray.finish(res, out[k]); });
   };
   if constexpr (std::is_same_v<S, Kerr>) {
     if (takes_mino_path(sc)) {
       const double cr = mino_capture_radius(sc);
       return run(MinoPath<MinoRay<OnStep>>{cr > 0.0 ? 1.0 / cr : 1e300},
-                 sc.spacetime.trace_jacobian(sc.observer_scene));
+                 sc.spacetime.trace_jacobian(sc.eye.scene_event));
     }
   }
   run(HamiltonianPath<S, HamiltonianRay<S, OnStep>>(sc.spacetime, sc.rays));
@@ -84,26 +86,47 @@ template <class F>
 
 }  // namespace detail
 
-// Traces the camera ray along local direction n (on the observer's legs).
-// OnStep(const RayState& y, double sigma) sees the start of every accepted
-// step in trace coordinates with its affine parameter (for `lightcone
-// trace`; NoPath when rendering).
+// Traces the rays `starts` into the records `out` (same size), lane_count at
+// a time: each record as one ray alone gives it
+// (Render.LanesGiveWhatOneRayGives).  Colours are the shade stage's.
+template <class S>
+void trace_records(const SceneIn<S>& sc, std::span<const RayStart> starts, std::span<HitRecord> out) {
+  detail::on_pinned_stack([&]() __attribute__((noinline)) {
+    NoPath no_path;
+    detail::trace_rays<lane_count>(sc, starts, out, no_path);
+  });
+}
+
+// Traces the camera ray along local direction n from the frame's eye and
+// shades it.  OnStep(const RayState& y, double sigma) sees the start of
+// every accepted step in trace coordinates with its affine parameter (for
+// `lightcone trace`; NoPath when rendering).
 template <class S, class OnStep>
 RaySample trace_sample(const SceneIn<S>& sc, const Vec3& n, OnStep&& on_step) {
   RaySample out;
-  detail::trace_rays<1>(sc, std::span<const Vec3>(&n, 1), std::span<RaySample>(&out, 1), on_step);
+  const RayStart start{&sc.eye, n};
+  HitRecord& record = out;
+  detail::trace_rays<1>(sc, std::span<const RayStart>(&start, 1), std::span<HitRecord>(&record, 1), on_step);
+  shade(sc, out);
   return out;
 }
 
-// Traces the camera rays of local directions `dirs` into `out` (same size),
-// lane_count at a time: each sample as trace_sample gives it
-// (Render.LanesGiveWhatOneRayGives).
+// Traces the camera rays of local directions `dirs` from the frame's eye
+// into `out` (same size) and shades them: each sample as trace_sample gives
+// it.
 template <class S>
 void trace_batch(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out) {
-  detail::on_pinned_stack([&]() __attribute__((noinline)) {
-    NoPath no_path;
-    detail::trace_rays<lane_count>(sc, dirs, out, no_path);
-  });
+  std::vector<RayStart> starts(dirs.size());
+  std::vector<HitRecord> records(dirs.size());
+  for (std::size_t k = 0; k < dirs.size(); ++k) {
+    starts[k] = {&sc.eye, dirs[k]};
+    records[k].reuse_window = out[k].reuse_window;
+  }
+  trace_records(sc, std::span<const RayStart>(starts), std::span<HitRecord>(records));
+  for (std::size_t k = 0; k < dirs.size(); ++k) {
+    static_cast<HitRecord&>(out[k]) = records[k];
+    shade(sc, out[k]);
+  }
 }
 
 }  // namespace lc

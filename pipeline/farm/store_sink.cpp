@@ -23,7 +23,7 @@ void StoreSink::store(const CompletedFrame& cf) {
   if (cf.pass == Pass::preview) {
     // Previews show no point stars: their missing rows are copies, and
     // copied rays make no patches of sky.
-    FrameImage preview{cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}};
+    FrameImage preview{cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}, cf.image.alpha};
     store_.write_preview(cf.frame, std::move(preview), preview_rows_, display_);
     return;
   }
@@ -38,7 +38,7 @@ void StoreSink::store(const CompletedFrame& cf) {
   // cores with the render threads, so wall time would count their waits.
   if (const auto stars = cf.image.sky.empty() ? std::nullopt : sky_point_stars(facts.sky, resources_)) {
     const auto start = std::chrono::steady_clock::now();
-    with_stars = {cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}};
+    with_stars = {cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}, cf.image.alpha};
     double cpu = 0.0;
     draw_point_stars(*stars, Camera(facts.camera, with_stars.width, with_stars.height), cf.image.sky, with_stars,
                      star_threads_, &cpu);
