@@ -10,6 +10,7 @@
 #include "command_output.hpp"
 #include "core/json.hpp"
 #include "frame_range.hpp"
+#include "render/hit_kinds.hpp"
 #include "geodesic_csv.hpp"
 #include "render/scene_builder.hpp"
 #include "image_size.hpp"
@@ -21,7 +22,6 @@ namespace lc {
 
 namespace {
 
-constexpr const char* kind_names[] = {"sky", "disk", "horizon", "object", "gave up", "no ray"};
 
 // A float as JSON: its shortest exact spelling (the EXR's value to the
 // bit), null where JSON has no number.
@@ -33,7 +33,7 @@ std::string text_report(int f, int i, int j, const RaySample& s) {
   std::string values;
   for (const LayerSpec& l : layers) values += fmt::format("{}{} {:.9g}", values.empty() ? "" : ", ", l.name, l.value(s));
   return fmt::format("trace: frame {} pixel {},{}: hit {}, stop reason {}, {} steps; {}; colour {:.4g} {:.4g} {:.4g}\n", f,
-                     i, j, kind_names[static_cast<int>(s.kind)], to_string(s.reason), s.steps, values, s.color[0],
+                     i, j, hit_kind_name(s.kind), to_string(s.reason), s.steps, values, s.color[0],
                      s.color[1], s.color[2]);
 }
 
@@ -46,7 +46,7 @@ std::string json_report(int f, int i, int j, const RaySample& s) {
   return fmt::format(
       "{{\"frame\": {}, \"pixel\": [{}, {}], \"hit\": {}, \"stop_reason\": {}, \"steps\": {}, \"layers\": {{{}}}, "
       "\"colour\": [{}, {}, {}]}}\n",
-      f, i, j, json_string(kind_names[static_cast<int>(s.kind)]), json_string(std::string(to_string(s.reason))), s.steps,
+      f, i, j, json_string(std::string(hit_kind_name(s.kind))), json_string(std::string(to_string(s.reason))), s.steps,
       values, json_float(s.color[0]), json_float(s.color[1]), json_float(s.color[2]));
 }
 

@@ -33,7 +33,7 @@ class ShotResources;
 class Disk {
  public:
   static constexpr std::string_view name = "disk";
-  static constexpr HitKind hit_kind = HitKind::disk;
+  static constexpr HitKind hit_kind = HitKind{1};  // hit.kind 1
   // The BL–Mino path finds it at its own equatorial crossings (render/mino_ray.hpp).
   static constexpr bool in_fast_path = true;
 

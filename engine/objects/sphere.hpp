@@ -36,7 +36,7 @@ namespace lc {
 class Sphere : public SphereBody {
  public:
   static constexpr std::string_view name = "sphere";
-  static constexpr HitKind hit_kind = HitKind::object;
+  static constexpr HitKind hit_kind = HitKind{3};  // hit.kind 3
   // Its worldline and frame live in the trace chart: only the general path.
   static constexpr bool in_fast_path = false;
 

@@ -34,7 +34,7 @@ AccuracyReport compare_samples(const std::vector<RaySample>& reference, const st
     const Disk::Params* d = nullptr;
     for (const ObjectSpec& o : scene.objects)
       if (!d) d = std::get_if<Disk::Params>(&o);
-    if (a.kind == HitKind::disk && d) {
+    if (a.kind == Disk::hit_kind && d) {
       auto cell = [&](const RaySample& s) {
         return std::pair{static_cast<long>(std::floor((s.r - d->inner) / (d->outer - d->inner) * d->rings)),
                          static_cast<long>(std::floor(s.phi / two_pi * d->sectors))};

@@ -21,8 +21,9 @@ struct LayerSpec {
 
 inline constexpr std::array layers = {
     LayerSpec{"hit.kind",
-              "what the ray found: 0 sky, 1 disk, 2 horizon, 3 object (sphere), 4 gave up (integration failed; the "
-              "pixel is black), 5 no ray (the camera has none through the pixel centre: black, alpha 0)",
+              "what the ray found: 0 sky, 2 horizon, 4 gave up (integration failed; the pixel is black), 5 no ray (the "
+              "camera has none through the pixel centre: black, alpha 0), or the object kind's own number: 1 disk, "
+              "3 sphere (`lightcone trace` names it)",
               [](const HitRecord& s) { return static_cast<float>(static_cast<int>(s.kind)); }},
     LayerSpec{"hit.r",
               "radius of the event where the ray ended: Boyer–Lindquist r for Kerr, distance from the origin "

@@ -103,7 +103,7 @@ int check_disk_against_cunningham(double a, double theta_deg, KerrChart chart) {
             return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), [](const RayState&, double) {});
           },
           scene);
-      if (s.kind != HitKind::disk) continue;
+      if (s.kind != Disk::hit_kind) continue;
       const auto& y = s.end;
       const double p_t = y[4], p_phi = y[1] * y[6] - y[2] * y[5];
       const double lambda = -p_phi / p_t;
@@ -182,7 +182,7 @@ TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
   sp.position = Vec4{0, 0, 0, 0};
   rest.objects.push_back(sp);
   const RaySample at_rest = centre_sample(rest);
-  ASSERT_EQ(at_rest.kind, HitKind::object);
+  ASSERT_EQ(at_rest.kind, Sphere::hit_kind);
   EXPECT_EQ(at_rest.g, 1.0);
 
   // Moving at v = 0.6 straight at the observer: sqrt((1 + v) / (1 - v)) = 2
@@ -192,7 +192,7 @@ TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
     SceneSpec moving = fs;
     moving.objects.push_back(test::falling_sphere(Minkowski{}, {-300, 0, -180 * v / 0.6, 0}, {0, v, 0}, 400, 1.0));
     const RaySample s = centre_sample(moving);
-    ASSERT_EQ(s.kind, HitKind::object) << "v " << v;
+    ASSERT_EQ(s.kind, Sphere::hit_kind) << "v " << v;
     EXPECT_NEAR(s.g, std::sqrt((1 + v) / (1 - v)), 1e-9) << "v " << v;
   }
 
@@ -294,7 +294,7 @@ TEST(GlowingDisk, InPhysicalUnitsItsLightIsInCandelasPerSquareMetre) {
     for (int i = 0; i < 12; ++i) {
       const RaySample s = std::visit(
           [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{}); }, scene);
-      if (s.kind != HitKind::disk) continue;
+      if (s.kind != Disk::hit_kind) continue;
       const double expected = 683 * blackbody_xyz(flux.temperature(s.r, 4.3e6, 1e-8)).Y;
       EXPECT_NEAR(luminance(s.color), expected, 1e-3 * expected) << i << "," << j;
       ++disk;

@@ -137,14 +137,14 @@ TEST(Light, AZamoOnTheAxisSeesTheDiskShiftedByTheLapses) {
     fs.light = shifted(0, 1, 1, 0);
     int disk = 0;
     for (const RaySample& s : samples(fs, 12, chart))
-      if (s.kind == HitKind::disk) {
+      if (s.kind == Disk::hit_kind) {
         expect_beamed(s.color, alpha_disk(s.r) / alpha_obs, "gravitational");
         ++disk;
       }
     EXPECT_GT(disk, 30);
     fs.light = shifted(0, 1, 0, 1);
     for (const RaySample& s : samples(fs, 12, chart))
-      if (s.kind == HitKind::disk) expect_beamed(s.color, s.g * alpha_obs / alpha_disk(s.r), "kinematic");
+      if (s.kind == Disk::hit_kind) expect_beamed(s.color, s.g * alpha_obs / alpha_disk(s.r), "kinematic");
   }
 }
 
@@ -173,7 +173,7 @@ TEST(Light, ARunnersShiftIsAllKinematic) {
   fs.objects.push_back(ball);
   fs.light = shifted(0, 1, 0, 1);
   const RaySample hit = samples(fs, 1)[0];
-  ASSERT_EQ(hit.kind, HitKind::object);
+  ASSERT_EQ(hit.kind, Sphere::hit_kind);
   EXPECT_NEAR(hit.g, 2.0, 1e-9);
   expect_beamed(hit.color, 2.0, "kinematic");
   fs.light = shifted(0, 1, 1, 0);

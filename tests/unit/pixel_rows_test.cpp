@@ -185,7 +185,7 @@ TEST(PixelRows, AMovedEyeSeesTheImageShiftAsFlatSpaceSays) {
     EXPECT_EQ(stats.gave_up, 0);
     int first = -1, last = -1;
     for (int i = 0; i < rs.width; ++i)
-      if (img.layers[0].values[static_cast<std::size_t>(i)] == static_cast<float>(HitKind::object)) {
+      if (img.layers[0].values[static_cast<std::size_t>(i)] == static_cast<float>(Sphere::hit_kind)) {
         if (first < 0) first = i;
         last = i;
       }

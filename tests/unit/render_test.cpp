@@ -72,7 +72,7 @@ TEST(Render, KerrFastPathAgreesWithKerrSchild) {
     RecordProperty(theta == 0 ? "axis_dr_max" : "inclined_dr_max", std::to_string(a.dr_max));
     double worst_t = 0;
     for (std::size_t k = 0; k < ks.size(); ++k) {
-      if (ks[k].kind == HitKind::disk || ks[k].kind == HitKind::horizon) worst_t = std::max(worst_t, std::abs(ks[k].t - bl[k].t));
+      if (ks[k].kind == Disk::hit_kind || ks[k].kind == HitKind::horizon) worst_t = std::max(worst_t, std::abs(ks[k].t - bl[k].t));
       EXPECT_EQ(ks[k].order, bl[k].order) << "pixel " << k;
       if (ks[k].kind == HitKind::sky) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(ks[k].color[c], bl[k].color[c], 1e-6) << "pixel " << k;
@@ -145,7 +145,7 @@ TEST(Render, FlatSpaceDiskIsTheExactProjection) {
           continue;
         }
         ++disk_pixels;
-        ASSERT_EQ(s.kind, HitKind::disk) << i << "," << j;
+        ASSERT_EQ(s.kind, Disk::hit_kind) << i << "," << j;
         EXPECT_NEAR(s.r, r, bound * r) << "tolerance " << tolerance;
         double phi = std::atan2(y, x);
         if (phi < 0) phi += two_pi;
@@ -339,7 +339,7 @@ TEST(Render, LanesGiveWhatOneRayGives) {
             ASSERT_EQ(one.kind, batch[k].kind) << name << " ray " << k;
             EXPECT_NEAR(one.r, batch[k].r, 1e-6 * std::abs(batch[k].r)) << name << " ray " << k;
             EXPECT_NEAR(one.t, batch[k].t, 1e-6 * (1 + std::abs(batch[k].t))) << name << " ray " << k;
-            hits += batch[k].kind == HitKind::object || batch[k].kind == HitKind::disk;
+            hits += batch[k].kind == Sphere::hit_kind || batch[k].kind == Disk::hit_kind;
           }
           EXPECT_GT(hits, 0) << name << ": no ray met an object";
         },
@@ -365,13 +365,13 @@ TEST(Render, SphereInFlatSpaceHasItsAngularSize) {
   const double t = std::tan(6 * degree);
   auto px_of = [&](double angle) { return W / 2.0 * (1 + std::tan(angle) / t); };
   const double centre = std::atan2(-5.0, 80.0), half = std::asin(1.0 / std::hypot(5.0, 80.0));
-  EXPECT_EQ(sample_at(scene, px_of(centre), 0.5).kind, HitKind::object);
+  EXPECT_EQ(sample_at(scene, px_of(centre), 0.5).kind, Sphere::hit_kind);
   // Bisect the right edge (limb) of the disc in the image.
   double lo = px_of(centre), hi = px_of(centre + 2 * half);
   ASSERT_EQ(sample_at(scene, hi, 0.5).kind, HitKind::sky);
   for (int it = 0; it < 40; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (sample_at(scene, mid, 0.5).kind == HitKind::object ? lo : hi) = mid;
+    (sample_at(scene, mid, 0.5).kind == Sphere::hit_kind ? lo : hi) = mid;
   }
   // The limb is where the line of sight is tangent: angle centre + half.
   EXPECT_NEAR(std::atan((2 * lo / W - 1) * t), centre + half, 1e-6);
@@ -386,7 +386,7 @@ double extent(const Scene& scene, double cx, double cy, double dx, double dy, do
     double lo = 0.0, hi = reach;
     for (int it = 0; it < 50; ++it) {
       const double mid = 0.5 * (lo + hi);
-      (sample_at(scene, cx + sgn * mid * dx, cy + sgn * mid * dy).kind == HitKind::object ? lo : hi) = mid;
+      (sample_at(scene, cx + sgn * mid * dx, cy + sgn * mid * dy).kind == Sphere::hit_kind ? lo : hi) = mid;
     }
     edges[side] = lo;
   }
@@ -536,7 +536,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   // Find the sphere on the middle row (it moves in the plane z = 0).
   double first = -1, last = -1;
   for (int i = 0; i < W; ++i)
-    if (sample_at(scene, i + 0.5, H / 2.0).kind == HitKind::object) {
+    if (sample_at(scene, i + 0.5, H / 2.0).kind == Sphere::hit_kind) {
       if (first < 0) first = i + 0.5;
       last = i + 0.5;
     }
