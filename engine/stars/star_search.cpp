@@ -22,7 +22,7 @@ void StarSearch::make_nodes(int ti, int tj, int i1, int j1) {
   nodes_origin_i_ = ti;
   nodes_origin_j_ = tj;
   nodes_width_ = i1 - ti + 1;
-  nodes_.assign(static_cast<std::size_t>(nodes_width_ * (j1 - tj + 1)), GridNode{});
+  nodes_.resize(static_cast<std::size_t>(nodes_width_ * (j1 - tj + 1)));
   for (int j = tj; j <= j1; ++j)
     for (int i = ti; i <= i1; ++i) nodes_[static_cast<std::size_t>((j - tj) * nodes_width_ + (i - ti))] = grid_.at(i, j);
 }
@@ -57,7 +57,8 @@ void StarSearch::tile(int ti, int tj, const PatchStars& report) {
 
 void StarSearch::search_in_plane(int ti, int tj, int i1, int j1, const Vec3& centre, double least,
                                  const PatchStars& report) {
-  std::vector<std::size_t> found;
+  std::vector<std::size_t>& found = found_;
+  found.clear();
   field_.bins().near(centre, std::acos(least), [&](std::size_t s) {
     if (dot3(field_.stars()[s].direction, centre) >= least) found.push_back(s);
   });
@@ -68,16 +69,12 @@ void StarSearch::search_in_plane(int ti, int tj, int i1, int j1, const Vec3& cen
     const double h = dot3(v, centre);
     return std::array<double, 2>{dot3(v, e1) / h, dot3(v, e2) / h};
   };
-  std::vector<std::array<double, 2>> flat(nodes_.size());
+  std::vector<std::array<double, 2>>& flat = flat_;
+  flat.resize(nodes_.size());
   for (std::size_t k = 0; k < nodes_.size(); ++k)
     if (nodes_[k].known) flat[k] = project(nodes_[k].sky);
-  // The stars found, by their x in the plane.
-  struct Placed {
-    double x, y;
-    std::size_t star;
-  };
-  std::vector<Placed> at;
-  at.reserve(found.size());
+  std::vector<Placed>& at = placed_;
+  at.clear();
   for (const std::size_t s : found) {
     const auto p = project(field_.stars()[s].direction);
     at.push_back({p[0], p[1], s});
@@ -86,7 +83,7 @@ void StarSearch::search_in_plane(int ti, int tj, int i1, int j1, const Vec3& cen
   auto flat_at = [&](int i, int j) -> const std::array<double, 2>& {
     return flat[static_cast<std::size_t>((j - tj) * nodes_width_ + (i - ti))];
   };
-  std::vector<std::size_t> here;
+  std::vector<std::size_t>& here = here_;
   for (int j = tj; j < j1; ++j)
     for (int i = ti; i < i1; ++i) {
       if (!node(i, j).known || !node(i + 1, j).known || !node(i + 1, j + 1).known || !node(i, j + 1).known) continue;
@@ -113,7 +110,7 @@ void StarSearch::search_across_jump(int ti, int tj, int i1, int j1, const PatchS
     for (int i = ti; i < i1; ++i) patch(i, j) = make_patch(node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1), cos_max_);
   // A wide patch (the lens spreads it over more than a bin) asks the bins
   // alone, so that the blocks' caps stay as small as their patches are.
-  std::vector<std::size_t> near;
+  std::vector<std::size_t>& near = here_;
   for (int j = tj; j < j1; ++j)
     for (int i = ti; i < i1; ++i) {
       auto& q = patch(i, j);

@@ -17,6 +17,7 @@
 // SkyPatch::may_hold and place_in_patch, stars/star_image.hpp); every star
 // inside is offered, once per patch.
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -68,6 +69,17 @@ class StarSearch {
   int nodes_origin_i_ = 0, nodes_origin_j_ = 0, nodes_width_ = 0;
   std::vector<GridNode> nodes_;
   std::vector<std::optional<SkyPatch>> patches_;  // the tile's, star_tile x star_tile (across a jump)
+  // A star found in a tile's tangent plane, at (x, y) there.
+  struct Placed {
+    double x, y;
+    std::size_t star;
+  };
+  // Working buffers, kept from tile to tile: the stars in a tile's cap, its
+  // nodes in the tangent plane, the stars by their x there, one patch's.
+  std::vector<std::size_t> found_;
+  std::vector<std::array<double, 2>> flat_;
+  std::vector<Placed> placed_;
+  std::vector<std::size_t> here_;
 };
 
 }  // namespace lc
