@@ -7,10 +7,6 @@ namespace lc {
 
 namespace {
 
-Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 // 2D cross product.
 double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 

@@ -12,6 +12,11 @@
 
 namespace lc {
 
+// The cross product a x b.
+inline Vec3 cross3(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
 // Solid angle (sr) of the spherical triangle of unit vectors a, b, c: Van
 // Oosterom & Strackee (1983, IEEE Trans. Biomed. Eng. 30, 125), tan(Omega/2)
 // = |a.(b x c)| / (1 + a.b + b.c + c.a).  Accurate for tiny triangles too.

@@ -1,26 +1,36 @@
 #pragma once
 // Stars as points, added to a finished frame (docs/stars.md; the pipeline's
-// stage after the pixels): the rays of a frame form a grid, one per pixel
-// at a known point of it (core/sky_point.hpp), and each quad of four
-// neighbouring rays that all reached the sky sees a patch of it
-// (stars/sky_quad.hpp).  A star in that patch has an image there: its
-// place on the image is the patch's bilinear map of the star back onto the
-// quad's four image points, its magnification mu = Omega_camera /
-// Omega_sky is interpolated at the star from the grid's points (each the
-// ratio of the camera's to the sky's solid angle of the quads around it:
-// second order, where one quad's ratio alone was off by percents on a
-// demagnified image), and its light F mu is spread over the 2 x 2 pixels
-// nearest that place with a tent filter.  The weights sum to 1, so a
-// star's light is conserved as it moves across pixels (no flicker), and a
-// star has as many images as patches that hold it, each with its own
+// stage after the pixels).  The pass is a chain of stages, each in its own
+// file, in the order the data flows:
+//  1. stars/ray_grid.hpp: the frame's rays (one per pixel, at a known point
+//     of it: core/sky_point.hpp) as a grid of nodes, extrapolated one pixel
+//     beyond the image's edge;
+//  2. stars/sky_patch.hpp: each quad of four neighbouring nodes that all
+//     reached the sky sees a patch of it (stars/sky_quad.hpp);
+//  3. stars/magnification.hpp: mu = Omega_camera / Omega_sky at each node,
+//     from the solid angles of the quads around it (second order, where one
+//     quad's ratio alone was off by percents on a demagnified image);
+//  4. stars/star_search.hpp: which stars may be in each patch, a tile of
+//     quads at a time;
+//  5. stars/star_image.hpp: a star in a patch has an image there: its place
+//     is the patch's bilinear map of the star back onto the quad's four image
+//     points, its mu and the light model's ratios interpolated there, its
+//     light seen through them;
+//  6. stars/pixel_deposits.hpp: the image's light F mu spread over the 2 x 2
+//     pixels nearest its place with a tent filter (weights summing to 1, so
+//     a star's light is conserved as it moves across pixels: no flicker),
+//     summed per pixel;
+//  7. stars/pixel_light.hpp: each lit pixel's radiance and its glare's halo
+//     (stars/glare_kernel.hpp) added to the image.
+// A star has as many images as patches that hold it, each with its own
 // magnification.  Only pixels the camera saw sky through get stars: a star
 // behind the disk's edge in a quad that touches the disk is not drawn.
 
-#include <functional>
 #include <span>
 
 #include "core/sky_point.hpp"
 #include "core/tensor.hpp"
+#include "stars/camera_directions.hpp"
 #include "stars/star_field.hpp"
 
 namespace lc {
@@ -37,10 +47,6 @@ struct StarPassOptions {
   // worked out apart and joined in a fixed order.
   int threads = 1;
 };
-
-// The camera's unit direction through image point (x, y) in pixel units
-// (the observer's local frame): the pixels' and the quads' solid angles.
-using CameraDirections = std::function<Vec3(double x, double y)>;
 
 // Adds the stars' light to `rgb` (linear RGB, 3 floats per pixel, row by
 // row, width x height); `sky` holds each pixel's ray (width x height).

@@ -18,41 +18,13 @@
 #include <vector>
 
 #include "core/constants.hpp"
+#include "star_test_sky.hpp"
 #include "stars/sky_quad.hpp"
 
 namespace lc {
 namespace {
 
-// A pinhole camera looking along +z: the direction through image point
-// (x, y) in pixels (centres at i + 0.5), horizontal field fov.
-struct Pinhole {
-  int width, height;
-  double fov;
-  Vec3 at(double x, double y) const {
-    const double t = std::tan(0.5 * fov * degree);
-    return unit3({(2 * x / width - 1) * t, (2 * y - height) / width * t, 1});
-  }
-  // Each pixel's ray: through its centre, or (`adaptive`) through
-  // (0.25, 0.25) and (0.75, 0.75) of it alternately along the row.
-  std::vector<SkyPoint> sky(bool adaptive = false) const {
-    std::vector<SkyPoint> s;
-    for (int j = 0; j < height; ++j)
-      for (int i = 0; i < width; ++i) {
-        SkyPoint p;
-        p.dx = p.dy = adaptive ? (i % 2 == 0 ? 0.25f : 0.75f) : 0.5f;
-        const Vec3 d = at(i + p.dx, j + p.dy);
-        p.theta = std::acos(d[2]);
-        p.phi = std::atan2(d[1], d[0]);
-        if (p.phi < 0) p.phi += two_pi;
-        s.push_back(p);
-      }
-    return s;
-  }
-  // The solid angle of pixel (i, j): its corners' spherical quad.
-  double pixel_solid_angle(int i, int j) const {
-    return SkyQuad{{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}}.area();
-  }
-};
+using test::Pinhole;
 
 struct Seen {
   double total = 0.0, x = 0.0, y = 0.0;  // sum of radiance x pixel solid angle (first channel), its centroid
@@ -142,23 +114,7 @@ TEST(StarPass, StarsAtTheImagesEdgeAndBehindObjects) {
 // glare, on an odd-sized image (rows of tiles cut short at its edge).
 TEST(StarPass, TheImageIsTheSameToTheBitOnAnyNumberOfThreads) {
   const Pinhole cam{97, 61, 60};
-  std::vector<SkyPoint> sky = cam.sky();
-  const double einstein = 0.15;  // rad
-  for (int j = 0; j < cam.height; ++j)
-    for (int i = 0; i < cam.width; ++i) {
-      SkyPoint& p = sky[static_cast<std::size_t>(j * cam.width + i)];
-      const Vec3 d = cam.at(i + p.dx, j + p.dy);
-      const double x = d[0] / d[2], y = d[1] / d[2], t = std::hypot(x, y);
-      if (t < 0.3 * einstein) {
-        p.theta = -1;  // the shadow
-        continue;
-      }
-      const double f = 1 - einstein * einstein / (t * t);  // source = image * f
-      const Vec3 s = unit3({x * f, y * f, 1});
-      p.theta = std::acos(s[2]);
-      p.phi = std::atan2(s[1], s[0]);
-      if (p.phi < 0) p.phi += two_pi;
-    }
+  const std::vector<SkyPoint> sky = test::point_lens_sky(cam, 0.15);  // Einstein angle 0.15 rad
   std::vector<PointStar> stars;
   unsigned long seed = 12345;
   auto uniform = [&seed] {
