@@ -16,6 +16,7 @@
 #include "camera/camera.hpp"
 #include "light/light.hpp"
 #include "objects/objects.hpp"
+#include "observers/observers.hpp"
 #include "sky/sky.hpp"
 
 namespace lc {
@@ -40,6 +41,11 @@ struct SceneIn {
   // The ZAMO's 4-velocity at the observer (trace coordinates), where the
   // light model splits g into its parts (light/light.hpp).
   Vec4 reference_observer{};
+  // The observer as a path: the eye at a time offset within the frame
+  // (observers/observers.hpp).  observer_path.at(0) is the frame's own eye:
+  // the fields above (observer, observer_scene, observer_time, metric,
+  // frame, reference_observer) hold it too, bit for bit.
+  ObserverPath<S> observer_path{};
 };
 
 // A scene in any registered spacetime (spacetime/spacetime.hpp).
