@@ -17,6 +17,7 @@
 #include "observer/eye.hpp"
 #include "light/light.hpp"
 #include "objects/objects.hpp"
+#include "observers/observers.hpp"
 #include "sky/sky.hpp"
 
 namespace lc {
@@ -36,6 +37,9 @@ struct SceneIn {
   // that stay clear of moving objects (render/sample_memo.hpp).
   std::string still_key{};
   Light light{};  // how hits' light is shown
+  // The observer as a path: the eye at a time offset within the frame
+  // (observers/observers.hpp); observer_path.at(0) is `eye`, bit for bit.
+  ObserverPath<S> observer_path{};
 };
 
 // A scene in any registered spacetime (spacetime/spacetime.hpp).

@@ -9,13 +9,7 @@ namespace lc {
 std::string to_json(const SceneSpec& fs, int frame, const std::string& evaluated) {
   const bool polar = has_polar_scene(fs.spacetime);
   std::string out = fmt::format("{{\"frame\": {}, \"spacetime\": {}, ", frame, spacetime_json(fs.spacetime));
-  const ObserverSpec& o = fs.observer;
-  if (o.kind == ObserverKind::free_fall)
-    out += fmt::format("\"observer\": {{\"kind\": \"free_fall\", \"proper_time\": {}, \"worldline\": {}}}, ",
-                       json_number(o.proper_time), o.worldline->json());
-  else
-    out += fmt::format("\"observer\": {{\"kind\": \"{}\", \"position\": {}}}, ",
-                       o.kind == ObserverKind::zamo ? "zamo" : "static", json_position(o.position, polar));
+  out += "\"observer\": " + ObserverRegistry::json(fs.observer, polar) + ", ";
   out += "\"camera\": " + CameraRegistry::json(fs.camera) + ", ";
   out += "\"sky\": " + SkyRegistry::json(fs.sky) + ", ";
   out += "\"objects\": [";

@@ -17,6 +17,7 @@
 #include "core/color.hpp"
 #include "light/light.hpp"
 #include "objects/objects.hpp"
+#include "observers/observers.hpp"
 #include "sky/sky.hpp"
 #include "core/tensor.hpp"
 #include "scene/shot_info.hpp"
@@ -25,19 +26,9 @@
 
 namespace lc {
 
-enum class ObserverKind { static_observer, zamo, free_fall };
-
-struct ObserverSpec {
-  ObserverKind kind = ObserverKind::static_observer;
-  Vec4 position{};  // static / zamo: the event (t is the scene time)
-  std::optional<WorldlineSpec> worldline;  // free_fall
-  double proper_time = 0.0;                // free_fall: where on the worldline
-  std::string where;  // "shot.lua:12", where the script made it (for errors; not part of the picture)
-};
-
 struct SceneSpec {
   Spacetime spacetime = Minkowski{};
-  ObserverSpec observer;
+  ObserverSpec observer;            // a registry's variant (observers/observers.hpp)
   CameraSpec camera;
   SkySpec sky;
   std::vector<ObjectSpec> objects;  // the scene's `disk`, then its `objects`

@@ -8,6 +8,7 @@
 #include "core/fields.hpp"
 #include "light/light.hpp"
 #include "objects/objects.hpp"
+#include "observers/observers.hpp"
 #include "scene/shot_info.hpp"
 #include "sky/sky.hpp"
 #include "spacetime/spacetime.hpp"
@@ -37,13 +38,13 @@ std::string cell(std::string_view s) {
 }
 
 // "#### lc.name{...}" and a table of the fields of P (and what P reads
-// besides them, if it says: extra_doc).
+// besides them, if it says: extra_doc; where that is all, it alone).
 template <class P>
 std::string table(std::string_view name, std::string_view heading = {}) {
   std::string out = heading.empty() ? fmt::format("#### `lc.{}{{...}}`\n\n", name) : fmt::format("{}:\n\n", heading);
   bool any = false;
   for_each_field<P>([&](const auto&) { any = true; });
-  if (!any) out += "No fields.\n\n";
+  if (!any && !requires { P::extra_doc; }) out += "No fields.\n\n";
   if (any) out += "| field | default | range | meaning |\n| --- | --- | --- | --- |\n";
   for_each_field<P>([&](const auto& f) {
     const std::string unit = f.unit.empty() ? std::string() : fmt::format(" {}", f.unit);
@@ -77,6 +78,7 @@ std::string constructor_tables() {
       out += table<typename K::Params>(K::name);
     });
   };
+  kinds("Observers", ObserverRegistry{});
   kinds("Cameras", CameraRegistry{});
   kinds("Skies", SkyRegistry{});
   kinds("Objects", ObjectRegistry{});

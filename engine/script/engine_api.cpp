@@ -195,8 +195,8 @@ void install_engine_api(lua::Sandbox& sandbox, EngineMemo* memo) {
   for_each_spacetime_type([&](auto tag) { add(decltype(tag)::type::name, validate_spacetime, NameGroup::spacetimes); });
   SkyRegistry::for_each(
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_sky, NameGroup::skies); });
-  for (const char* observer : {"static_observer", "zamo", "free_fall"})
-    add(observer, validate_observer, NameGroup::observers);
+  ObserverRegistry::for_each(
+      [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_observer, NameGroup::observers); });
   CameraRegistry::for_each(
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera, NameGroup::cameras); });
   ObjectRegistry::for_each(

@@ -43,7 +43,8 @@ void expect_kind(TableReader& t, std::initializer_list<const char*> kinds, const
 }
 
 // The parameters of whichever kind of registry R (core/registry.hpp) made
-// the table: its declared fields read and checked, then extra(params) for
+// the table: its declared fields read and checked, the script line that
+// made it where the kind keeps one (`where`), then extra(params) for
 // what a kind holds besides them, then the kind's own validate() where it
 // has one.  `what` and `more` name the constructors in the error for a table
 // none of them made.
@@ -58,6 +59,7 @@ typename R::Spec read_kind(TableReader& t, const char* what, const char* more = 
     if (out || k != K::name) return;
     typename K::Params p;
     read_fields(t, p);
+    if constexpr (requires { p.where; }) p.where = t.string_or("__where", t.context());
     extra(&p);
     if constexpr (requires { p.validate(); }) validate_at(t, p);
     t.finish();
@@ -153,8 +155,10 @@ WorldlineSpec read_worldline(TableReader& t) {
 
 namespace {
 
-// What a sphere holds besides its declared fields: where it is held at rest
-// (`position`) or the worldline it falls along (`worldline`), one of the two.
+// What a kind holds besides its declared fields, read by hand, each in one
+// place: a sphere's placement (held at rest at `position` or falling along
+// `worldline`, one of the two), an observer at rest's position (the table's
+// own {t, r, theta, phi} or {t, x, y, z}), a free fall's worldline.
 // Positions resolve against `st` when given.  Other kinds hold nothing more.
 void read_placement(TableReader& t, Sphere::Params& s, const Spacetime* st) {
   const bool has_pos = t.has("position"), has_wl = t.has("worldline");
@@ -168,6 +172,15 @@ void read_placement(TableReader& t, Sphere::Params& s, const Spacetime* st) {
     s.worldline = read_worldline(w);
   }
 }
+template <class Kind>
+void read_placement(TableReader& t, AtRestParams<Kind>& o, const Spacetime* st) {
+  const ScriptPosition p = read_position(t);  // reads and finishes t
+  o.position = st ? resolve_position(p, *st, t.context()) : p.coords;
+}
+void read_placement(TableReader& t, FreeFall::Params& o, const Spacetime*) {
+  auto w = t.table("worldline");
+  o.worldline = read_worldline(w);
+}
 template <class P>
 void read_placement(TableReader&, P&, const Spacetime*) {}
 
@@ -179,28 +192,8 @@ ObjectSpec read_object(TableReader& t, const Spacetime* st) {
 }
 
 ObserverSpec read_observer(TableReader& t, const Spacetime* st) {
-  const std::string k = kind_of(t);
-  ObserverSpec o;
-  o.where = t.string_or("__where", t.context());
-  if (k == "static_observer" || k == "zamo") {
-    o.kind = k == "zamo" ? ObserverKind::zamo : ObserverKind::static_observer;
-    const ScriptPosition p = read_position(t);  // reads and finishes t
-    o.position = st ? resolve_position(p, *st, t.context()) : p.coords;
-    return o;
-  }
-  if (k == "free_fall") {
-    o.kind = ObserverKind::free_fall;
-    t.mark_known({"worldline", "proper_time"});
-    t.finish();  // unknown keys before bad values, as for declared fields (field_reader.hpp)
-    auto w = t.table("worldline");
-    o.worldline = read_worldline(w);
-    o.proper_time = t.number("proper_time");
-    if (o.proper_time < 0.0 || o.proper_time > o.worldline->duration)
-      fail(t, fmt::format("proper_time {} is outside the worldline's [0, {}]", o.proper_time, o.worldline->duration));
-    t.finish();
-    return o;
-  }
-  fail(t, "expected a value made by lc.static_observer{...}, lc.zamo{...} or lc.free_fall{...}");
+  return read_kind<ObserverRegistry>(t, "an observer constructor", "",
+                                     [&](auto* p) { read_placement(t, *p, st); });
 }
 
 SceneSpec read_scene_spec(TableReader& t) {
@@ -211,11 +204,8 @@ SceneSpec read_scene_spec(TableReader& t) {
     auto o = t.table("observer");
     fs.observer = read_observer(o, &fs.spacetime);
   }
-  if (auto time = t.optional_number("time")) {
-    if (fs.observer.kind == ObserverKind::free_fall)
-      fail(t, "a free-falling observer's time comes from its worldline; remove 'time'");
-    fs.observer.position[0] = *time;
-  }
+  if (auto time = t.optional_number("time"))
+    if (const std::string refused = set_scene_time(fs.observer, *time); !refused.empty()) fail(t, refused);
   if (auto c = t.optional_table("camera")) fs.camera = read_camera(*c);
   if (auto d = t.optional_table("disk")) fs.objects.push_back(read_object(*d, &fs.spacetime));
   if (auto s = t.optional_table("sky")) fs.sky = read_sky(*s);

@@ -26,13 +26,14 @@ ScriptPosition read_position(lua::TableReader& t);
 // the form does not match the spacetime.
 Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::string& context);
 
-// A table made by a constructor of the camera, sky or object registries.
+// A table made by a constructor of the camera or sky registries.
 CameraSpec read_camera(lua::TableReader& t);
 SkySpec read_sky(lua::TableReader& t);
 WorldlineSpec read_worldline(lua::TableReader& t);
 // lc.light{...}.
 LightParams read_light(lua::TableReader& t);
-// Object (a sphere's) and observer positions resolve against `st` when given.
+// A table made by a constructor of the object or observer registries:
+// object (a sphere's) and observer positions resolve against `st` when given.
 ObjectSpec read_object(lua::TableReader& t, const Spacetime* st);
 ObserverSpec read_observer(lua::TableReader& t, const Spacetime* st);
 

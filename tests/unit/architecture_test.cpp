@@ -30,7 +30,7 @@ const std::vector<std::vector<std::string>> engine_levels = {
     {"geodesic"},
     {"worldline"},
     {"assets"},
-    {"camera", "sky", "objects"},
+    {"camera", "sky", "objects", "observers"},
     {"scene"},
     {"render", "script"},
 };

@@ -85,7 +85,7 @@ TEST(FrequencyShift, DiskMatterFollowsKeplerOutsideTheIscoAndPlungesInside) {
 int check_disk_against_cunningham(double a, double theta_deg, KerrChart chart) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, a);
-  fs.observer.position = {0, 50, theta_deg * degree, 0};
+  fs.observer = StaticObserver::Params{{0, 50, theta_deg * degree, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 40;
   fs.objects.push_back(Disk::Params{Kerr(1, a).isco_radius(), 18, 4, 12});
   ShotResources res;
@@ -133,7 +133,7 @@ TEST(FrequencyShift, TheSkyIsBlueshiftedByTheStaticObserversLapse) {
   for (const KerrChart chart : {KerrChart::boyer_lindquist_mino, KerrChart::kerr_schild}) {
     SceneSpec fs;
     fs.spacetime = Kerr(1, 0);
-    fs.observer.position = {0, 10, 60 * degree, 0};
+    fs.observer = StaticObserver::Params{{0, 10, 60 * degree, 0}};
     std::get<PinholeCamera::Params>(fs.camera).fov = 120;
     ShotResources res;
     RayOptions o;
@@ -153,7 +153,7 @@ TEST(FrequencyShift, TheSkyIsBlueshiftedByTheStaticObserversLapse) {
   }
   SceneSpec di;
   di.spacetime = Dihole(0.4, 0.4, 1.0);
-  di.observer.position = {0, 6, 2, 1};
+  di.observer = StaticObserver::Params{{0, 6, 2, 1}};
   ShotResources res;
   const Scene scene = build_scene(di, 1, 1, res);
   const RaySample s =
@@ -172,7 +172,7 @@ RaySample centre_sample(const SceneSpec& fs) {
 TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
   // A static observer at y = 100 looks along -y at the origin.
   SceneSpec fs;
-  fs.observer.position = {0, 0, 100, 0};
+  fs.observer = StaticObserver::Params{{0, 0, 100, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 10;
 
   // A sphere at rest: no shift at all (exact: p_t = 1 and u = e_t).
@@ -203,7 +203,6 @@ TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
   // 1 / gamma = 0.8 at the image centre, where the light arrives
   // perpendicular to the motion in its own frame.
   SceneSpec runner;
-  runner.observer.kind = ObserverKind::free_fall;
   WorldlineSpec w;
   w.spacetime = Minkowski{};
   w.start = {0, 0, 100, 0};
@@ -211,8 +210,10 @@ TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
   w.where = "test";
   for (const auto& [velocity, expected] : {std::pair{Vec3{-0.6, 0, 0}, 2.0}, std::pair{Vec3{0, 0.6, 0}, 0.8}}) {
     w.velocity = velocity;
-    runner.observer.worldline = w;
-    runner.observer.proper_time = 0;
+    FreeFall::Params ride;
+    ride.worldline = w;
+    ride.proper_time = 0;
+    runner.observer = ride;
     const RaySample s = centre_sample(runner);
     ASSERT_EQ(s.kind, HitKind::sky);
     EXPECT_NEAR(s.g, expected, 1e-12);
@@ -230,7 +231,7 @@ namespace {
 std::vector<Color> glowing_disk(double a, KerrChart chart) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, a);
-  fs.observer.position = {0, 30, 75 * degree, 0};
+  fs.observer = StaticObserver::Params{{0, 30, 75 * degree, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 50;
   Disk::Params d{2, 20, 4, 12};
   d.temperature = 8000;
@@ -280,7 +281,7 @@ TEST(GlowingDisk, InPhysicalUnitsItsLightIsInCandelasPerSquareMetre) {
   // interpolation (1e-4) and the sRGB matrices' rounding.
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0.9);
-  fs.observer.position = {0, 30, 20 * degree, 0};
+  fs.observer = StaticObserver::Params{{0, 30, 20 * degree, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 50;
   Disk::Params d{2.4, 12, 4, 12};
   d.solar_masses = 4.3e6;
@@ -307,7 +308,7 @@ TEST(GlowingDisk, PhysicalUnitsBeyondWhatCanBeShownAreRefused) {
   // far below 1 K.  A clear error naming both fields, no scene.
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0.5);
-  fs.observer.position = {0, 30, 80 * degree, 0};
+  fs.observer = StaticObserver::Params{{0, 30, 80 * degree, 0}};
   Disk::Params d{3, 12, 4, 12};
   d.solar_masses = 1e12;
   d.accretion_rate = 1e-30;
@@ -329,10 +330,10 @@ TEST(GlowingDisk, NeedsAKerrHole) {
   // edge would be on the horizon): a clear error, no scene.
   SceneSpec di;
   di.spacetime = Dihole(0.4, 0.4, 1.0);
-  di.observer.position = {0, 0, 30, 0};
+  di.observer = StaticObserver::Params{{0, 0, 30, 0}};
   SceneSpec extremal;
   extremal.spacetime = Kerr(1, 1);
-  extremal.observer.position = {0, 30, 80 * degree, 0};
+  extremal.observer = StaticObserver::Params{{0, 30, 80 * degree, 0}};
   for (SceneSpec fs : {di, extremal}) {
     Disk::Params d{2, 20, 4, 12};
     d.temperature = 8000;

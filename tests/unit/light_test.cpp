@@ -93,7 +93,7 @@ TEST(Light, AStaticObserversSkyShiftIsAllGravitational) {
   // g = 1 / sqrt(1 - 2M/r) is gravitational, the kinematic part 1.
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0);
-  fs.observer.position = {0, 10, 60 * degree, 0};
+  fs.observer = StaticObserver::Params{{0, 10, 60 * degree, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 120;
   std::get<CheckerSky::Params>(fs.sky).colors = {plain, plain};
   const double lapse_shift = 1 / std::sqrt(1 - 2.0 / 10);
@@ -127,8 +127,7 @@ TEST(Light, AZamoOnTheAxisSeesTheDiskShiftedByTheLapses) {
   };
   SceneSpec fs;
   fs.spacetime = Kerr(1, a);
-  fs.observer.kind = ObserverKind::zamo;
-  fs.observer.position = {0, r_o, 0, 0};
+  fs.observer = Zamo::Params{{0, r_o, 0, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 40;
   Disk::Params d{2.5, 15, 4, 12};
   d.colors = {plain, plain};
@@ -152,14 +151,15 @@ TEST(Light, ARunnersShiftIsAllKinematic) {
   // Flat space: an observer running at 0.6 towards where it looks sees the
   // sky ahead, and a sphere at rest ahead, at g = 2, all of it kinematic.
   SceneSpec fs;
-  fs.observer.kind = ObserverKind::free_fall;
   WorldlineSpec w;
   w.spacetime = Minkowski{};
   w.start = {0, 0, 100, 0};
   w.velocity = {-0.6, 0, 0};
   w.duration = 10;
   w.where = "test";
-  fs.observer.worldline = w;
+  FreeFall::Params ride;
+  ride.worldline = w;
+  fs.observer = ride;
   std::get<PinholeCamera::Params>(fs.camera).fov = 1;
   std::get<CheckerSky::Params>(fs.sky).colors = {plain, plain};
   fs.light = shifted(0, 1, 0, 1);
@@ -185,7 +185,7 @@ TEST(Light, ShiftedTexturesAreSeenThroughTheSpectra) {
   // in Schwarzschild is the table's colour at g, in both integrators.
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0);
-  fs.observer.position = {0, 10, 60 * degree, 0};
+  fs.observer = StaticObserver::Params{{0, 10, 60 * degree, 0}};
   std::get<CheckerSky::Params>(fs.sky).colors = {plain, plain};
   fs.light = shifted(1, 1, 1, 1);
   const Color expected = SpectralShift()(plain, 1 / std::sqrt(1 - 2.0 / 10));

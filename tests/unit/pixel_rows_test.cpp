@@ -69,7 +69,7 @@ TEST(PixelRows, RecordsShadeToTheSamePixels) {
   for (const bool sphere : {false, true}) {
     SceneSpec fs;
     fs.spacetime = Kerr(1, 0.9);
-    fs.observer.position = {0, 30, 80 * degree, 0};
+    fs.observer = StaticObserver::Params{{0, 30, 80 * degree, 0}};
     std::get<PinholeCamera::Params>(fs.camera).fov = 40;
     fs.objects.push_back(Disk::Params{6, 15, 9, 24});
     if (sphere) fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 10, 90 * degree, 0}, {0, 0, 0.3}, 60, 1.0));
@@ -114,7 +114,7 @@ struct HalfCamera {
 TEST(PixelRows, PointsWithoutARayAreBlackTransparentAndNeverTraced) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0.5);
-  fs.observer.position = {0, 30, 80 * degree, 0};
+  fs.observer = StaticObserver::Params{{0, 30, 80 * degree, 0}};
   fs.objects.push_back(Disk::Params{6, 15, 9, 24});
   ShotResources res;
   const RenderSettings rs{16, 8, 2, true, true};
@@ -167,7 +167,7 @@ TEST(PixelRows, AMovedEyeSeesTheImageShiftAsFlatSpaceSays) {
   // image column W/2 (1 + tan a / tan(fov/2)).
   SceneSpec fs;
   fs.spacetime = Dihole(0.0, 0.0, 1.0);
-  fs.observer.position = {0, 0, 80, 0};
+  fs.observer = StaticObserver::Params{{0, 0, 80, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 12;
   Sphere::Params sp;
   sp.radius = 1.0;

@@ -26,7 +26,7 @@ TEST(PointStarStage, AStarsLightHoldsStillThroughASlowPan) {
   const double fov = 20, step = 0.1 * fov / W;  // a tenth of a pixel (near the centre), degrees
   SceneSpec fs;
   fs.spacetime = Minkowski{};
-  fs.observer.position = {0, 0, 40, 0};
+  fs.observer = StaticObserver::Params{{0, 0, 40, 0}};
   PointStarSky::Params sky;
   sky.background = "none";
   fs.sky = sky;

@@ -22,8 +22,7 @@ namespace {
 SceneSpec kerr_scene(double M, double a, double r, double theta_deg, double fov, bool disk) {
   SceneSpec fs;
   fs.spacetime = Kerr(M, a);
-  fs.observer.kind = ObserverKind::static_observer;
-  fs.observer.position = {0, r, theta_deg * degree, 0};
+  fs.observer = StaticObserver::Params{{0, r, theta_deg * degree, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = fov;
   if (disk) fs.objects.push_back(Disk::Params{6, 15, 9, 24});
   return fs;
@@ -192,9 +191,9 @@ TEST(Render, ObserverOnTheSouthAxisSeesTheNorthViewUpsideDown) {
   RenderSettings rs{W, W, 1, true};
   const FrameImage north = render_frame(build_scene(kerr_scene(1, 0.9, 30, 0, 60, true), W, W, res), rs, 1);
   for (const double theta : {180.0, -180.0}) {
-    for (const ObserverKind kind : {ObserverKind::static_observer, ObserverKind::zamo}) {
+    for (const bool zamo : {false, true}) {
       SceneSpec fs = kerr_scene(1, 0.9, 30, theta, 60, true);
-      fs.observer.kind = kind;
+      if (zamo) fs.observer = Zamo::Params{std::get<StaticObserver::Params>(fs.observer).position};
       RenderStats stats;
       const FrameImage south = render_frame(build_scene(fs, W, W, res), rs, 1, &stats);
       EXPECT_EQ(stats.gave_up, 0) << "theta " << theta;
@@ -258,7 +257,7 @@ TEST(Render, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
   auto along_y = [&](double y) { return y + 4 * m * std::asinh(y) + 4 * m * m * std::atan(y); };
   SceneSpec di;
   di.spacetime = Dihole(m, m, 1.0);
-  di.observer.position = {0, 0, 80, 0};
+  di.observer = StaticObserver::Params{{0, 0, 80, 0}};
   const RaySample away = centre_ray(di, 180, KerrChart::kerr_schild);
   ASSERT_EQ(away.kind, HitKind::sky);
   EXPECT_NEAR(away.t, -(along_y(away.r) - along_y(80)), 2e-6 * std::abs(away.t));
@@ -270,7 +269,7 @@ TEST(Render, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
     return z - m * m / (z - 1) - m * m / (z + 1) + 2 * m * std::log(z - 1) + 2 * m * std::log(z + 1) +
            m * m * std::log((z - 1) / (z + 1));
   };
-  di.observer.position = {0, 0, 0, 80};
+  di.observer = StaticObserver::Params{{0, 0, 0, 80}};
   const RaySample down = centre_ray(di, 0, KerrChart::kerr_schild);
   ASSERT_EQ(down.kind, HitKind::horizon);
   EXPECT_LT(down.r, 1.0 + m);
@@ -289,7 +288,7 @@ std::vector<std::pair<std::string, SceneSpec>> scenes_of_every_path() {
   std::vector<std::pair<std::string, SceneSpec>> out;
   SceneSpec flat;
   flat.spacetime = Minkowski{};
-  flat.observer.position = {0, 0, 30, 5};
+  flat.observer = StaticObserver::Params{{0, 0, 30, 5}};
   flat.objects.push_back(test::falling_sphere(flat.spacetime, {0, 3, 0, 0}, {0, 0.1, 0}, 100, 1.0));
   out.emplace_back("minkowski", flat);
   out.emplace_back("kerr bl-mino", kerr_scene(1, 0.9, 30, 80, 40, true));
@@ -298,7 +297,7 @@ std::vector<std::pair<std::string, SceneSpec>> scenes_of_every_path() {
   out.emplace_back("kerr kerr-schild", kerr_sphere);
   SceneSpec di;
   di.spacetime = Dihole(0.4, 0.4, 1.0);
-  di.observer.position = {90, 0, 40, 0};
+  di.observer = StaticObserver::Params{{90, 0, 40, 0}};
   std::get<PinholeCamera::Params>(di.camera).fov = 30;
   di.objects.push_back(test::falling_sphere(di.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
   out.emplace_back("dihole", di);
@@ -350,7 +349,7 @@ TEST(Render, LanesGiveWhatOneRayGives) {
 TEST(Render, SphereInFlatSpaceHasItsAngularSize) {
   SceneSpec fs;
   fs.spacetime = Dihole(0.0, 0.0, 1.0);
-  fs.observer.position = {0, 0, 80, 0};
+  fs.observer = StaticObserver::Params{{0, 0, 80, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 12;
   Sphere::Params sp;
   sp.radius = 1.0;
@@ -398,7 +397,7 @@ double extent(const Scene& scene, double cx, double cy, double dx, double dy, do
 Scene falling_sphere_scene(const Spacetime& spacetime, const Vec3& velocity, double radius, ShotResources& res) {
   SceneSpec fs;
   fs.spacetime = spacetime;
-  fs.observer.position = {200, 0, 80, 0};
+  fs.observer = StaticObserver::Params{{200, 0, 80, 0}};
   fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, velocity, 200, radius));
   return build_scene(fs, 8, 8, res);
 }
@@ -527,7 +526,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   // that got either wrong would see an ellipse.
   SceneSpec fs;
   fs.spacetime = Minkowski{};
-  fs.observer.position = {150, 0, 60, 0};  // at t = 150, on the y axis, looking at the origin
+  fs.observer = StaticObserver::Params{{150, 0, 60, 0}};  // at t = 150, on the y axis, looking at the origin
   std::get<PinholeCamera::Params>(fs.camera).fov = 90;
   fs.objects.push_back(test::falling_sphere(Minkowski{}, {0, -70, 0, 0}, {0.6, 0, 0}, 300, 3.0));
   ShotResources res;
@@ -554,7 +553,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   std::get<Sphere::Params>(still.objects[0]).worldline.reset();
   // Apparent position: straight back along the centre ray of the moving image.
   const Vec3 n = std::get<SceneIn<Minkowski>>(scene).camera.direction(cx0, H / 2.0);
-  const Tetrad rest = static_polar_tetrad(Minkowski{}, fs.observer.position);
+  const Tetrad rest = static_polar_tetrad(Minkowski{}, std::get<StaticObserver::Params>(fs.observer).position);
   double dir[3] = {0, 0, 0};
   for (int k = 0; k < 3; ++k)
     for (int leg = 0; leg < 3; ++leg) dir[k] += n[leg] * rest.e[leg + 1][k + 1];
@@ -582,9 +581,10 @@ TEST(Render, MovingObserverSeesAberration) {
   w.velocity = {-0.5, 0, 0};
   w.duration = 10;
   w.where = "test";
-  fs.observer.kind = ObserverKind::free_fall;
-  fs.observer.worldline = w;
-  fs.observer.proper_time = 0;
+  FreeFall::Params ride;
+  ride.worldline = w;
+  ride.proper_time = 0;
+  fs.observer = ride;
   std::get<PinholeCamera::Params>(fs.camera).fov = 120;
   ShotResources res;
   const int W = 64;

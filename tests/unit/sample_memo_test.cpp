@@ -20,7 +20,7 @@ namespace {
 SceneSpec dihole_at(double t) {
   SceneSpec fs;
   fs.spacetime = Dihole(0.4, 0.4, 1.0);
-  fs.observer.position = {t, 0, 40, 0};
+  fs.observer = StaticObserver::Params{{t, 0, 40, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 30;
   fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
   return fs;
@@ -100,9 +100,9 @@ TEST(SampleMemo, AnotherSceneReusesNothing) {
   EXPECT_EQ(r.image.rgb, render(turned, rs, res, nullptr).image.rgb);
   // A flat, empty scene (a hold) reuses every sample of the next frame.
   SceneSpec flat;
-  flat.observer.position = {0, 0, 40, 0};
+  flat.observer = StaticObserver::Params{{0, 0, 40, 0}};
   render(flat, rs, res, &memo);
-  flat.observer.position[0] = 50;
+  std::get<StaticObserver::Params>(flat.observer).position[0] = 50;
   const Rendered hold = render(flat, rs, res, &memo);
   EXPECT_EQ(hold.stats.rays, 0);
   EXPECT_GT(hold.stats.reused, 0);

@@ -33,8 +33,7 @@ namespace fs = std::filesystem;
 std::vector<Color> sky_frame(const SkySpec& sky, int W = 24, int H = 12) {
   SceneSpec fs;
   fs.spacetime = Minkowski();
-  fs.observer.kind = ObserverKind::static_observer;
-  fs.observer.position = {0, 3, 4, 7};
+  fs.observer = StaticObserver::Params{{0, 3, 4, 7}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 150;
   fs.sky = sky;
   ShotResources res;

@@ -27,7 +27,7 @@ TEST(StarLensing, ASchwarzschildHolesTwoImagesFollowThePointLens) {
   const double D = 1e5, theta_e = std::sqrt(4 / D);
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0);
-  fs.observer.position = {0, D, 90 * degree, 0};
+  fs.observer = StaticObserver::Params{{0, D, 90 * degree, 0}};
   std::get<PinholeCamera::Params>(fs.camera).fov = 4 * std::sqrt(1e4 / D);
   ShotResources res;
   RayOptions rays;

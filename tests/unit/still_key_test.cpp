@@ -13,7 +13,7 @@ namespace {
 SceneSpec scene() {
   SceneSpec fs;
   fs.spacetime = Kerr(1.0, 0.9);
-  fs.observer.position = {10.0, 30.0, 1.2, 0.3};
+  fs.observer = StaticObserver::Params{{10.0, 30.0, 1.2, 0.3}};
   fs.objects.emplace_back(std::in_place_type<Disk::Params>);
   Sphere::Params sp;
   sp.position = Vec4{0.0, 12.0, 1.5, 0.0};
@@ -24,9 +24,9 @@ SceneSpec scene() {
 TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
   const std::string key = still_key(scene());
   SceneSpec later = scene();
-  later.observer.position[0] = 250.0;
+  std::get<StaticObserver::Params>(later.observer).position[0] = 250.0;
   EXPECT_EQ(still_key(later), key);
-  later.observer.kind = ObserverKind::zamo;
+  later.observer = Zamo::Params{std::get<StaticObserver::Params>(later.observer).position};
   EXPECT_NE(still_key(later), key);
 
   auto differs = [&](auto change) {
@@ -34,7 +34,9 @@ TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
     change(fs);
     return still_key(fs) != key;
   };
-  EXPECT_TRUE(differs([](SceneSpec& fs) { fs.observer.position[1] = std::nextafter(30.0, 31.0); }));
+  EXPECT_TRUE(differs([](SceneSpec& fs) {
+    std::get<StaticObserver::Params>(fs.observer).position[1] = std::nextafter(30.0, 31.0);
+  }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.spacetime = Kerr(1.0, std::nextafter(0.9, 1.0)); }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<PinholeCamera::Params>(fs.camera).roll = 1e-12; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Disk::Params>(fs.objects[0]).sectors = 25; }));
@@ -54,9 +56,10 @@ TEST(StillKey, AFreeFallingObserverHasNone) {
   w.spacetime = fs.spacetime;
   w.start = {0.0, 30.0, 1.2, 0.0};
   w.duration = 100.0;
-  fs.observer.kind = ObserverKind::free_fall;
-  fs.observer.worldline = w;
-  fs.observer.proper_time = 5.0;
+  FreeFall::Params ride;
+  ride.worldline = w;
+  ride.proper_time = 5.0;
+  fs.observer = ride;
   EXPECT_EQ(still_key(fs), "");  // its frames never share rays
 }
 

@@ -69,7 +69,7 @@ TEST(WeakFieldTail, RaysEscapeWhereTheRestIsKnown) {
   auto escape_radius = [](double m1, double m2, EscapeRule rule) {
     SceneSpec fs;
     fs.spacetime = Dihole(m1, m2, 1.0);
-    fs.observer.position = {0, 0, 80, 0};
+    fs.observer = StaticObserver::Params{{0, 0, 80, 0}};
     ShotResources res;
     RayOptions o;
     o.escape = rule;
