@@ -22,7 +22,7 @@
 #include "light/blackbody.hpp"
 #include "light/light.hpp"
 #include "light/novikov_thorne.hpp"
-#include "objects/step_test.hpp"
+#include "objects/step_query.hpp"
 #include "spacetime/chart.hpp"
 
 namespace lc {

@@ -18,7 +18,7 @@
 #include "core/registry.hpp"
 #include "objects/disk.hpp"
 #include "objects/sphere.hpp"
-#include "objects/step_test.hpp"
+#include "objects/step_query.hpp"
 #include "spacetime/spacetime.hpp"
 
 namespace lc {
@@ -30,7 +30,7 @@ namespace lc {
 // fields, a constructor from them (with the shot's resources and the
 // frame's observer event), how far from the origin it reaches (for the
 // free-flight radius), the first hit within a step (before the earliest
-// found so far; objects/step_test.hpp), the 4-velocity of its matter where
+// found so far; objects/step_query.hpp), the 4-velocity of its matter where
 // a ray meets it (trace chart; for hit.g) and the colour there seen as the
 // light model says (light/light.hpp).
 template <class O, class S>

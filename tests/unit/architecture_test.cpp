@@ -107,4 +107,16 @@ TEST(Architecture, DocsNameEveryEngineFolder) {
   }
 }
 
+// Engine code is named for what it is: a header named like a test
+// (*_test.hpp) is taken for one (objects/ had sphere_test.hpp and
+// step_test.hpp, the sphere's intersection and the step objects query).
+TEST(Architecture, NoEngineOrPipelineFileIsNamedLikeATest) {
+  for (const char* dir : {"engine", "pipeline"})
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(LIGHTCONE_SOURCE_DIR) / dir)) {
+      const std::string stem = e.path().stem().string();
+      EXPECT_FALSE(e.is_regular_file() && (stem.ends_with("_test") || stem.starts_with("test_")))
+          << e.path() << " is engine or pipeline code with a test's name";
+    }
+}
+
 }  // namespace
