@@ -51,21 +51,6 @@ concept ObjectKind = requires(const O& o, const typename O::Params& p, const S& 
 using ObjectRegistry = Registry<Disk, Sphere>;
 
 namespace detail {
-// One assertion per kind and spacetime, so that the compiler's notes name
-// the pair that fails and the requirement it misses.
-template <class O, class S>
-constexpr bool satisfies_object_kind() {
-  static_assert(ObjectKind<O, S>, "a registered object kind must satisfy ObjectKind in every registered spacetime");
-  return true;
-}
-template <class S, class... O>
-constexpr bool all_objects_in(Registry<O...>*) {
-  return (satisfies_object_kind<O, S>() && ...);
-}
-template <class... S>
-constexpr bool all_objects(std::variant<S...>*) {
-  return (all_objects_in<S>(static_cast<ObjectRegistry*>(nullptr)) && ...);
-}
 template <class R>
 struct ListsOf;
 template <class... O>
@@ -73,7 +58,13 @@ struct ListsOf<Registry<O...>> {
   using type = std::tuple<std::vector<O>...>;
 };
 }  // namespace detail
-static_assert(detail::all_objects(static_cast<Spacetime*>(nullptr)));
+// One assertion per kind and spacetime: the compiler's notes name the pair
+// that fails and the requirement it misses.
+static_assert(every_kind<Spacetime>([]<class S>() {
+  every_kind<ObjectRegistry>([]<class O>() {
+    static_assert(ObjectKind<O, S>, "a registered object kind must satisfy ObjectKind in every registered spacetime");
+  });
+}));
 
 // An object a shot asked for: one of the registered kinds' parameters.
 using ObjectSpec = ObjectRegistry::Spec;
