@@ -114,9 +114,35 @@ TEST(Architecture, NoEngineOrPipelineFileIsNamedLikeATest) {
   for (const char* dir : {"engine", "pipeline"})
     for (const auto& e : fs::recursive_directory_iterator(fs::path(LIGHTCONE_SOURCE_DIR) / dir)) {
       const std::string stem = e.path().stem().string();
-      EXPECT_FALSE(e.is_regular_file() && (stem.ends_with("_test") || stem.starts_with("test_")))
+      EXPECT_FALSE(e.is_regular_file() && (stem.ends_with("_test") || stem.starts_with("test_")) &&
+                   e.path().filename() != "test_pause.hpp" && e.path().filename() != "test_pause.cpp")
           << e.path() << " is engine or pipeline code with a test's name";
     }
+}
+
+// The test hook is read in one place: pipeline/farm/test_pause.cpp, the
+// only file of engine/ and pipeline/ that names a LIGHTCONE_TEST_ variable
+// in code (comments aside), and docs/architecture.md says so.
+TEST(Architecture, TheTestHookIsReadInOnePlace) {
+  static const std::regex test_variable(R"re("LIGHTCONE_TEST_\w*")re");
+  for (const char* dir : {"engine", "pipeline"})
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(LIGHTCONE_SOURCE_DIR) / dir)) {
+      const auto ext = e.path().extension();
+      if (!e.is_regular_file() || (ext != ".hpp" && ext != ".cpp")) continue;
+      std::ifstream in(e.path());
+      std::string text;
+      for (int n = 1; std::getline(in, text); ++n) {
+        const auto comment = text.find("//");
+        if (std::regex_search(text.substr(0, comment), test_variable))
+          EXPECT_EQ(e.path().filename(), "test_pause.hpp")
+              << e.path() << ":" << n << " names a test variable outside pipeline/farm/test_pause.hpp";
+      }
+    }
+  std::ifstream in(std::string(LIGHTCONE_SOURCE_DIR) + "/docs/architecture.md");
+  std::stringstream doc;
+  doc << in.rdbuf();
+  EXPECT_NE(doc.str().find("pipeline/farm/test_pause"), std::string::npos)
+      << "docs/architecture.md does not say where the test hook lives";
 }
 
 }  // namespace
