@@ -18,6 +18,7 @@
 #include "farm/mpi_worker.hpp"
 #include "farm/progress.hpp"
 #include "farm/resume_plan.hpp"
+#include "farm/scene_stripe_renderer.hpp"
 #include "farm/shot_inputs.hpp"
 #include "farm/store_sink.hpp"
 #include "farm/test_pause.hpp"

@@ -31,7 +31,8 @@ constexpr int order_of_visits() {
 TEST(Registry, EveryKindVisitsEachKindOfAVariantOrARegistryInOrder) {
   static_assert(order_of_visits() == 21);
   int n = 0;
-  EXPECT_TRUE(every_kind<std::variant<KindA, KindB, KindA>>([&]<class K>() { ++n; }));
+  const bool all = every_kind<std::variant<KindA, KindB, KindA>>([&]<class K>() { ++n; });
+  EXPECT_TRUE(all);
   EXPECT_EQ(n, 3);
 }
 

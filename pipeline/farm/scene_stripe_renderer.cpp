@@ -1,4 +1,6 @@
-#include "farm/stripe_renderer.hpp"
+#include "farm/scene_stripe_renderer.hpp"
+
+#include "render/renderer.hpp"
 
 #include "core/cpu_time.hpp"
 
