@@ -18,66 +18,21 @@
 #include "farm/mpi_worker.hpp"
 #include "farm/progress.hpp"
 #include "farm/resume_plan.hpp"
+#include "farm/scene_stripe_renderer.hpp"
 #include "farm/shot_inputs.hpp"
 #include "farm/store_sink.hpp"
+#include "farm/test_pause.hpp"
 #include "farm/threads.hpp"
 #include "frame_range.hpp"
 #include "image_size.hpp"
 #include "interrupt.hpp"
+#include "render_job.hpp"
 #include "script/shot.hpp"
 #include "video/encode_options.hpp"
 
 namespace lc {
 
 namespace {
-
-using farm::StripeLayout;
-
-// What every rank derives alike from the flags and the shot script.
-struct Job {
-  std::unique_ptr<Shot> shot;
-  RenderSettings rs;
-  std::vector<int> frames;
-  std::optional<FrameRange> range;  // from --frames
-  StripeLayout layout{1, 1};
-  int preview = 0;
-  std::uint64_t digest = 0;
-};
-
-// Loads the shot and checks the flags.  Throws std::invalid_argument naming
-// the flag, or the script's own error.
-Job load_job(const RenderCommand& cmd) {
-  Job job;
-  if (cmd.stripes && (*cmd.stripes < 1 || *cmd.stripes > 16384))
-    throw std::invalid_argument(fmt::format("--stripes {}: must be between 1 and 16384", *cmd.stripes));
-  if (!(cmd.progress >= 0) || !std::isfinite(cmd.progress))
-    throw std::invalid_argument(fmt::format("--progress {}: must be 0 (off) or a number of seconds", cmd.progress));
-  job.shot = std::make_unique<Shot>(cmd.shot);
-  const ShotInfo& info = job.shot->info();
-  if (!cmd.frame_list.empty()) {
-    job.frames = cmd.frame_list;
-    for (std::size_t k = 0; k < job.frames.size(); ++k)
-      if (job.frames[k] < 0 || job.frames[k] >= info.frames || (k > 0 && job.frames[k] <= job.frames[k - 1]))
-        throw std::invalid_argument(fmt::format("frame list: frame {} is out of order or outside the shot's 0-{}",
-                                                job.frames[k], info.frames - 1));
-  } else {
-    job.range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
-    job.frames = job.range->frames();
-  }
-  std::tie(job.rs.width, job.rs.height) = output_size(info.width, info.height, cmd.size, cmd.scale);
-  job.rs.supersample = cmd.supersample.value_or(info.supersample);
-  if (job.rs.supersample < 1 || job.rs.supersample > 16)
-    throw std::invalid_argument(fmt::format("--supersample {}: must be between 1 and 16", job.rs.supersample));
-  job.rs.layers = cmd.layers;
-  job.rs.adaptive = !cmd.full_supersample;
-  job.layout = StripeLayout(job.rs.height, cmd.stripes.value_or(farm::default_stripes));
-  job.preview = cmd.preview;
-  if (job.preview != 0 && (job.preview < 2 || job.preview > job.layout.stripes()))
-    throw std::invalid_argument(fmt::format(
-        "--preview {}: must be between 2 and the number of stripes ({}; see --stripes)", cmd.preview, job.layout.stripes()));
-  job.digest = farm::job_digest(*job.shot, job.rs, job.layout.stripes(), job.preview);
-  return job;
-}
 
 // Says so when frames of this size cannot become a video with `lightcone
 // encode`'s default codec, or a video only some players play.  A warning,
@@ -122,17 +77,6 @@ double master_cpu_seconds() {
   return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
-// `renderer` wrapped in the test hook's pause when LIGHTCONE_TEST_PAUSE_AFTER
-// asks for one, else nullptr.  `released` ends the pause: once the render
-// has noticed a signal, so an interrupted test render ends as any other
-// (the sets in hand are finished, no new one is begun).
-std::unique_ptr<farm::PausingStripeRenderer> paused_for_a_test(farm::StripeRenderer& renderer, const std::string& who,
-                                                               std::function<bool()> released) {
-  const auto sets = farm::test_pause_after();
-  if (!sets) return nullptr;
-  return std::make_unique<farm::PausingStripeRenderer>(renderer, *sets, who, std::move(released));
-}
-
 // Stops the MPI workers once, on whichever way the master leaves (they
 // wait for its word however it fails).
 class WorkerStop {
@@ -159,7 +103,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   // outlives the workers' stop, which waits for them.
   InterruptGuard interrupts;
   WorkerStop stop_workers(mpi);
-  Job job = load_job(cmd);
+  RenderJob job = load_render_job(cmd);
   warn_if_not_encodable(job.rs);
   if (job.range && job.range->last_taken() != job.range->last) {
     const std::vector<int>& taken = job.frames;
@@ -215,7 +159,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
       const auto refusal = cmd.no_reuse ? std::nullopt : farm::memo_refusal(job.rs, 1);
       if (refusal) fmt::print(stderr, "render: {}\n", *refusal);
       farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout, !cmd.no_reuse && !refusal);
-      const auto paused = paused_for_a_test(renderer, "render", [&run] { return run.interrupted() != 0 || run.error(); });
+      const auto paused = farm::paused_for_a_test(renderer, job.test_pause, "render", [&run] { return run.interrupted() != 0 || run.error(); });
       farm::run_local_farm(queue, run, paused ? *paused : static_cast<farm::StripeRenderer&>(renderer), threads, progress);
     }
     run.close();
@@ -264,10 +208,9 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
   // the master and waits for its stop, so neither hangs nor is cut off.
   InterruptGuard interrupts;
   std::optional<std::string> setup_error;
-  Job job;
+  RenderJob job;
   try {
-    job = load_job(cmd);
-    farm::test_pause_after();  // a bad value is this rank's setup error
+    job = load_render_job(cmd);  // a bad test-pause value too is this rank's setup error
   } catch (const std::exception& e) {
     setup_error = e.what();
   }
@@ -284,7 +227,7 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
   }
   // A worker drops the sets it holds as soon as it sees the signal, so the
   // signal itself may end its pause.
-  const auto paused = renderer ? paused_for_a_test(*renderer, fmt::format("rank {}", mpi.rank()),
+  const auto paused = renderer ? farm::paused_for_a_test(*renderer, job.test_pause, fmt::format("rank {}", mpi.rank()),
                                                    [&interrupts] { return interrupts.signal() != 0; })
                                : nullptr;
   farm::StripeRenderer* used = paused ? static_cast<farm::StripeRenderer*>(paused.get()) : renderer.get();

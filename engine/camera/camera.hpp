@@ -39,20 +39,11 @@ concept CameraModel = requires(const C& c, const typename C::Params& p, const Ca
 // Every camera kind, one line each.
 using CameraRegistry = Registry<PinholeCamera>;
 
-namespace detail {
-// One assertion per camera, so that the compiler's notes name the one that
-// fails and the requirement it misses.
-template <class C>
-constexpr bool satisfies_camera_model() {
+// One assertion per camera: the compiler's notes name the one that fails
+// and the requirement it misses.
+static_assert(every_kind<CameraRegistry>([]<class C>() {
   static_assert(CameraModel<C>, "a registered camera must satisfy CameraModel");
-  return true;
-}
-template <class... C>
-constexpr bool all_cameras(Registry<C...>*) {
-  return (satisfies_camera_model<C>() && ...);
-}
-}  // namespace detail
-static_assert(detail::all_cameras(static_cast<CameraRegistry*>(nullptr)));
+}));
 
 // The camera a shot asked for: one of the registered kinds' parameters.
 using CameraSpec = CameraRegistry::Spec;

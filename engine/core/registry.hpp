@@ -5,7 +5,8 @@
 // declared fields (core/fields.hpp).  From that list come the variant of
 // parameters a scene holds (Spec), the variant of built kinds (Kinds), the
 // names, the exact key and the JSON of a spec, and building a kind from its
-// spec: nothing else lists the kinds.
+// spec: nothing else lists the kinds.  every_kind checks each kind of a
+// list against its concept, one assertion per kind.
 
 #include <array>
 #include <string>
@@ -68,5 +69,28 @@ struct Registry {
     return T(std::get<I>(spec), static_cast<Args&&>(args)...);
   }
 };
+
+namespace detail {
+template <template <class...> class List, class... K, class Check>
+constexpr bool every_kind_of(List<K...>*, Check check) {
+  (check.template operator()<K>(), ...);
+  return true;
+}
+}  // namespace detail
+
+// Calls check.template operator()<K>() for each kind K of `List` (a
+// Registry<K...> or a std::variant<K...>), in order, and returns true: for
+// a registry's one assertion of its concept, written as
+//   static_assert(every_kind<CameraRegistry>([]<class C>() {
+//     static_assert(CameraModel<C>, "a registered camera must satisfy CameraModel");
+//   }));
+// A concept cannot be a template argument, so the check is a lambda with
+// the static_assert inside: the compiler then instantiates it once per
+// kind, and its notes name the kind ("with C = ...") and the requirement
+// it misses ("the required expression '...' is invalid").
+template <class List, class Check>
+constexpr bool every_kind(Check check) {
+  return detail::every_kind_of(static_cast<List*>(nullptr), check);
+}
 
 }  // namespace lc

@@ -22,8 +22,8 @@
 #include "light/blackbody.hpp"
 #include "light/light.hpp"
 #include "light/novikov_thorne.hpp"
+#include "objects/step_query.hpp"
 #include "objects/surface_point.hpp"
-#include "objects/step_test.hpp"
 #include "spacetime/chart.hpp"
 
 namespace lc {

@@ -19,7 +19,7 @@
 #include "objects/disk.hpp"
 #include "objects/surface_point.hpp"
 #include "objects/sphere.hpp"
-#include "objects/step_test.hpp"
+#include "objects/step_query.hpp"
 #include "spacetime/spacetime.hpp"
 
 namespace lc {
@@ -31,7 +31,7 @@ namespace lc {
 // fields, a constructor from them (with the shot's resources and the
 // frame's observer event), how far from the origin it reaches (for the
 // free-flight radius), the first hit within a step (before the earliest
-// found so far; objects/step_test.hpp), the 4-velocity of its matter where
+// found so far; objects/step_query.hpp), the 4-velocity of its matter where
 // a ray meets it (trace chart; for hit.g), where on it a ray that ended at
 // a trace event met it (surface_at: a SurfacePoint in its own coordinates,
 // kept in the hit record) and its colour at such a point seen as the light
@@ -55,21 +55,6 @@ concept ObjectKind = requires(const O& o, const typename O::Params& p, const S& 
 using ObjectRegistry = Registry<Disk, Sphere>;
 
 namespace detail {
-// One assertion per kind and spacetime, so that the compiler's notes name
-// the pair that fails and the requirement it misses.
-template <class O, class S>
-constexpr bool satisfies_object_kind() {
-  static_assert(ObjectKind<O, S>, "a registered object kind must satisfy ObjectKind in every registered spacetime");
-  return true;
-}
-template <class S, class... O>
-constexpr bool all_objects_in(Registry<O...>*) {
-  return (satisfies_object_kind<O, S>() && ...);
-}
-template <class... S>
-constexpr bool all_objects(std::variant<S...>*) {
-  return (all_objects_in<S>(static_cast<ObjectRegistry*>(nullptr)) && ...);
-}
 template <class R>
 struct ListsOf;
 template <class... O>
@@ -77,7 +62,13 @@ struct ListsOf<Registry<O...>> {
   using type = std::tuple<std::vector<O>...>;
 };
 }  // namespace detail
-static_assert(detail::all_objects(static_cast<Spacetime*>(nullptr)));
+// One assertion per kind and spacetime: the compiler's notes name the pair
+// that fails and the requirement it misses.
+static_assert(every_kind<Spacetime>([]<class S>() {
+  every_kind<ObjectRegistry>([]<class O>() {
+    static_assert(ObjectKind<O, S>, "a registered object kind must satisfy ObjectKind in every registered spacetime");
+  });
+}));
 
 // An object a shot asked for: one of the registered kinds' parameters.
 using ObjectSpec = ObjectRegistry::Spec;

@@ -4,7 +4,7 @@
 // freely along `worldline`; the checker's pole is the frame's third leg (z
 // for a sphere at rest in a Cartesian scene).  Rays are tested against it
 // only where the box its centre keeps over the step's time range (the
-// paper's spacetime tube) allows (objects/sphere_test.hpp).
+// paper's spacetime tube) allows (objects/sphere_intersection.hpp).
 
 #include <array>
 #include <cmath>
@@ -25,8 +25,8 @@
 #include "core/json.hpp"
 #include "objects/surface_point.hpp"
 #include "objects/sphere_body.hpp"
-#include "objects/sphere_test.hpp"
-#include "objects/step_test.hpp"
+#include "objects/sphere_intersection.hpp"
+#include "objects/step_query.hpp"
 #include "assets/shot_resources.hpp"
 #include "worldline/worldline_spec.hpp"
 #include "spacetime/chart.hpp"

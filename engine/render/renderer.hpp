@@ -8,40 +8,13 @@
 #include <span>
 
 #include "image/image.hpp"
+#include "render/render_settings.hpp"
 #include "render/scene.hpp"
 
 namespace lc {
 
-struct RenderSettings {
-  int width = 0, height = 0;
-  int supersample = 1;  // N: N x N samples per pixel
-  bool layers = false;  // also fill the data layers (render/layers.hpp)
-  // N >= 2: trace one corner sample of each pixel first (alternating
-  // top-left and bottom-right along the row) and the rest of its N x N grid
-  // only if it disagrees with a row neighbour's (another hit kind, or a
-  // colour more than adaptive_sample_threshold apart in sRGB).
-  bool adaptive = true;
-};
-
-struct RenderStats {
-  long rays = 0, steps = 0, gave_up = 0;  // rays traced
-  long reused = 0;                        // samples taken from a SampleMemo instead
-  double seconds = 0.0;                   // CPU time spent on them (core-seconds), where measured
-  RenderStats& operator+=(const RenderStats& o) {
-    rays += o.rays;
-    steps += o.steps;
-    gave_up += o.gave_up;
-    reused += o.reused;
-    seconds += o.seconds;
-    return *this;
-  }
-};
-
 class SampleMemo;
 
-
-// An empty frame of the right size (and layers, if asked for).
-FrameImage make_frame(const RenderSettings& rs);
 
 // Makes room in `image` (made by make_frame) for its rays' sky points when
 // the scene's sky has stars drawn as points (FrameImage::sky; the star pass

@@ -45,20 +45,11 @@ concept SkyModel = requires(const K& k, const typename K::Params& p, ShotResourc
 // Every sky kind, one line each.
 using SkyRegistry = Registry<CheckerSky, ImageSky, StarSky, PointStarSky>;
 
-namespace detail {
-// One assertion per sky, so that the compiler's notes name the one that
-// fails and the requirement it misses.
-template <class K>
-constexpr bool satisfies_sky_model() {
+// One assertion per sky: the compiler's notes name the one that fails and
+// the requirement it misses.
+static_assert(every_kind<SkyRegistry>([]<class K>() {
   static_assert(SkyModel<K>, "a registered sky must satisfy SkyModel");
-  return true;
-}
-template <class... K>
-constexpr bool all_skies(Registry<K...>*) {
-  return (satisfies_sky_model<K>() && ...);
-}
-}  // namespace detail
-static_assert(detail::all_skies(static_cast<SkyRegistry*>(nullptr)));
+}));
 
 // The sky a shot asked for: one of the registered kinds' parameters.
 using SkySpec = SkyRegistry::Spec;

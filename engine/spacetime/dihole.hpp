@@ -16,7 +16,8 @@
 
 namespace lc {
 
-class Dihole : public CartesianScene {
+// No thin-disk theory is worked out for two holes (NoDiskTheory).
+class Dihole : public CartesianScene, public HamiltonianFromRhs<Dihole>, public NoDiskTheory {
  public:
   static constexpr std::string_view name = "dihole";
   static constexpr SceneChart chart = SceneChart::cartesian;
@@ -66,8 +67,6 @@ class Dihole : public CartesianScene {
   // ignored).  At rest where no such orbit exists (it would be faster than
   // light, or the pull points outwards) and on the axis.
   Vec4 disk_velocity(const Vec4& x) const;
-  // No thin-disk theory is worked out for two holes.
-  std::optional<NovikovThorneFlux> thin_disk_flux() const { return std::nullopt; }
 
   // U and its gradient at a spatial point.
   double potential(const Vec4& x, Vec3* grad = nullptr) const {
@@ -108,13 +107,6 @@ class Dihole : public CartesianScene {
     dy[5] = k * gx;
     dy[6] = k * gy;
     dy[7] = k * gz;
-  }
-  // The same for one ray with x and p apart.
-  void hamiltonian_rhs(const Vec4& x, const Vec4& p, Vec4& dx, Vec4& dp) const {
-    std::array<double, 8> d;
-    rhs<double>({x[0], x[1], x[2], x[3], p[0], p[1], p[2], p[3]}, d);
-    dx = {d[0], d[1], d[2], d[3]};
-    dp = {d[4], d[5], d[6], d[7]};
   }
 
   bool captured(const Vec4& x) const { return potential(x) > dihole_capture_potential; }

@@ -37,7 +37,7 @@ enum class KerrSchildSense { ingoing, outgoing };
 // dr*/dr = (r^2 + a^2) / Delta.  Integration constants in docs/physics.md.
 double kerr_radial_time(double M, double a, double r);
 
-class Kerr {
+class Kerr : public HamiltonianFromRhs<Kerr> {
  public:
   static constexpr std::string_view name = "kerr";
   static constexpr SceneChart chart = SceneChart::polar;  // Boyer–Lindquist
@@ -134,13 +134,6 @@ class Kerr {
     dy[5] = dfdr * drx * half_L2 + fL * (drx * A + Bx);
     dy[6] = dfdr * dry * half_L2 + fL * (dry * A + By);
     dy[7] = (dfdr * drz + dfz_r) * half_L2 + fL * (drz * A + Bz);
-  }
-  // The same for one ray with x and p apart.
-  void hamiltonian_rhs(const Vec4& x, const Vec4& p, Vec4& dx, Vec4& dp) const {
-    std::array<double, 8> d;
-    rhs<double>({x[0], x[1], x[2], x[3], p[0], p[1], p[2], p[3]}, d);
-    dx = {d[0], d[1], d[2], d[3]};
-    dp = {d[4], d[5], d[6], d[7]};
   }
 
   // Captured: inside the capture radius (see constants.hpp).  Kerr–Schild point.

@@ -9,7 +9,10 @@
 
 namespace lc {
 
-class Minkowski : public CartesianScene {
+class Minkowski : public CartesianScene,
+                  public HamiltonianFromRhs<Minkowski>,
+                  public NoHorizon,
+                  public NoDiskTheory {
  public:
   static constexpr std::string_view name = "minkowski";
   static constexpr SceneChart chart = SceneChart::cartesian;
@@ -31,18 +34,10 @@ class Minkowski : public CartesianScene {
   void rhs(const std::array<T, 8>& y, std::array<T, 8>& dy) const {
     dy = {-y[4], y[5], y[6], y[7], T{}, T{}, T{}, T{}};
   }
-  void hamiltonian_rhs(const Vec4&, const Vec4& p, Vec4& dx, Vec4& dp) const {
-    dx = {-p[0], p[1], p[2], p[3]};
-    dp = {0.0, 0.0, 0.0, 0.0};
-  }
   double asymptotic_mass() const { return 0.0; }
-  // Thin-disk matter: nothing pulls it into orbit, so it is at rest.
+  // Thin-disk matter: nothing pulls it into orbit, so it is at rest (and
+  // nothing heats it: NoDiskTheory).
   Vec4 disk_velocity(const Vec4&) const { return {1.0, 0.0, 0.0, 0.0}; }
-  // Nothing heats a disk at rest.
-  std::optional<NovikovThorneFlux> thin_disk_flux() const { return std::nullopt; }
-  bool captured(const Vec4&) const { return false; }
-  double capture_margin(const Vec4&) const { return 1.0; }
-  bool inside_horizon(const Vec4&) const { return false; }
   Mat4 metric(const Vec4&) const { return {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
   Vec4 diagonal_metric(const Vec4&) const { return {-1, 1, 1, 1}; }
   Mat4 inverse_metric(const Vec4& x) const { return metric(x); }

@@ -17,8 +17,10 @@
 //   rhs<T>(y, dy)             Hamilton's equations in the trace chart on
 //                             y = (x^mu, p_mu), T double or lanes
 //   hamiltonian_rhs(x, p, dx, dp)   the same for one ray, x and p apart
+//                             (HamiltonianFromRhs below writes it)
 //   metric, inverse_metric, metric_derivatives   in the trace chart
 //   captured(x), capture_margin(x), inside_horizon(x)   where rays stop
+//                             (none stop: NoHorizon below)
 //   asymptotic_mass()         the mass seen from far away
 //   photon_reach()            a coordinate radius within which all of its
 //                             photon orbits lie (rays beyond it, moving out,
@@ -34,6 +36,7 @@
 //                             the equatorial plane (for hit.g, docs/light.md)
 //   thin_disk_flux()          the Novikov–Thorne flux of its thin disk, where it
 //                             has one (a glowing disk needs it), else nullopt
+//                             (NoDiskTheory below)
 //   trace_from_scene, scene_from_trace, scene_vector, scene_time_gradient,
 //   polar_basis               scene <-> trace coordinates
 //   for_tracing(direction)    itself in the chart regular where curves traced
@@ -42,6 +45,11 @@
 //   so that a ray's p_t is its energy there: the sky's hit.g reads it)
 //   examples()                parameter sets with the radii between which
 //                             the generic self-test may sample events
+//
+// What most spacetimes would write alike comes from bases they name
+// (below), each a choice the class states rather than a default it falls
+// into: HamiltonianFromRhs<S> (hamiltonian_rhs from rhs<double>), NoHorizon
+// (rays are never captured) and NoDiskTheory (no Novikov–Thorne flux).
 
 #include <array>
 #include <concepts>
@@ -98,6 +106,35 @@ concept SpacetimeModel =
       { s.for_tracing(TimeDirection::past) } -> std::same_as<S>;
       { S::examples() } -> std::same_as<std::vector<SpacetimeExample<S>>>;
     };
+
+// hamiltonian_rhs for the CRTP class S from its rhs<double>: the state
+// (x, p) packed as rhs takes it, the derivative unpacked.  Inline and
+// templated on S, so S's rhs inlines into it as it would into a copy
+// written in S (the dihole's is always_inline: docs/performance.md,
+// change 32).
+template <class S>
+struct HamiltonianFromRhs {
+  void hamiltonian_rhs(const Vec4& x, const Vec4& p, Vec4& dx, Vec4& dp) const {
+    std::array<double, 8> d;
+    static_cast<const S&>(*this).template rhs<double>({x[0], x[1], x[2], x[3], p[0], p[1], p[2], p[3]}, d);
+    dx = {d[0], d[1], d[2], d[3]};
+    dp = {d[4], d[5], d[6], d[7]};
+  }
+};
+
+// The capture rule of a spacetime without a horizon: no ray is captured,
+// the margin never reaches 0, an observer may stand anywhere.
+struct NoHorizon {
+  bool captured(const Vec4&) const { return false; }
+  double capture_margin(const Vec4&) const { return 1.0; }
+  bool inside_horizon(const Vec4&) const { return false; }
+};
+
+// A spacetime with no thin-disk theory worked out: a glowing disk is
+// refused there (objects/disk.hpp), a checkered one is drawn.
+struct NoDiskTheory {
+  std::optional<NovikovThorneFlux> thin_disk_flux() const { return std::nullopt; }
+};
 
 // The direction at infinity of a ray leaving the Kerr–Schild-like point x
 // along unit direction d, in a far field of mass M to first order:

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "core/registry.hpp"
 #include "spacetime/dihole.hpp"
 #include "spacetime/kerr.hpp"
 #include "spacetime/minkowski.hpp"
@@ -22,20 +23,11 @@ namespace lc {
 
 using Spacetime = std::variant<Minkowski, Kerr, Dihole>;
 
-namespace detail {
-// One assertion per spacetime, so that the compiler's notes name the one
-// that fails and the requirement it misses.
-template <class S>
-constexpr bool satisfies_spacetime_model() {
+// One assertion per spacetime: the compiler's notes name the one that fails
+// and the requirement it misses.
+static_assert(every_kind<Spacetime>([]<class S>() {
   static_assert(SpacetimeModel<S>, "a registered spacetime must satisfy SpacetimeModel (spacetime/model.hpp)");
-  return true;
-}
-template <class... S>
-constexpr bool all_spacetime_models(std::variant<S...>*) {
-  return (satisfies_spacetime_model<S>() && ...);
-}
-}  // namespace detail
-static_assert(detail::all_spacetime_models(static_cast<Spacetime*>(nullptr)));
+}));
 
 // A type tag: for_each_spacetime_type calls f(TypeTag<S>{}) for each.
 template <class T>

@@ -58,7 +58,7 @@ class Worldline {
   // riding this worldline may be from the centre at the point's own
   // coordinate time: the spacetime tube's radius (objects/sphere_body.hpp).
   // The sphere is the ball of its rest space through the centre event
-  // (objects/sphere_test.hpp); a point of it d away from the centre event
+  // (objects/sphere_intersection.hpp); a point of it d away from the centre event
   // C(t_c) lies, in coordinates, d slid along u from where the centre is at
   // the point's time t_c + d^t, off by the centre's change of velocity over
   // d^t: at most stretch R + A (tilt R)^2 / 2 with A the interpolant's top

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "render/renderer.hpp"
+#include "render/render_settings.hpp"
 
 namespace lc::farm {
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "farm/stripes.hpp"
-#include "render/renderer.hpp"
+#include "render/render_settings.hpp"
 
 namespace lc::farm {
 

@@ -107,4 +107,84 @@ TEST(Architecture, DocsNameEveryEngineFolder) {
   }
 }
 
+// Engine code is named for what it is: a header named like a test
+// (*_test.hpp) is taken for one (objects/ had sphere_test.hpp and
+// step_test.hpp, the sphere's intersection and the step objects query).
+TEST(Architecture, NoEngineOrPipelineFileIsNamedLikeATest) {
+  for (const char* dir : {"engine", "pipeline"})
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(LIGHTCONE_SOURCE_DIR) / dir)) {
+      const std::string stem = e.path().stem().string();
+      EXPECT_FALSE(e.is_regular_file() && (stem.ends_with("_test") || stem.starts_with("test_")) &&
+                   e.path().filename() != "test_pause.hpp" && e.path().filename() != "test_pause.cpp")
+          << e.path() << " is engine or pipeline code with a test's name";
+    }
+}
+
+// The test hook is read in one place: pipeline/farm/test_pause.cpp, the
+// only file of engine/ and pipeline/ that names a LIGHTCONE_TEST_ variable
+// in code (comments aside), and docs/architecture.md says so.
+TEST(Architecture, TheTestHookIsReadInOnePlace) {
+  static const std::regex test_variable(R"re("LIGHTCONE_TEST_\w*")re");
+  for (const char* dir : {"engine", "pipeline"})
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(LIGHTCONE_SOURCE_DIR) / dir)) {
+      const auto ext = e.path().extension();
+      if (!e.is_regular_file() || (ext != ".hpp" && ext != ".cpp")) continue;
+      std::ifstream in(e.path());
+      std::string text;
+      for (int n = 1; std::getline(in, text); ++n) {
+        const auto comment = text.find("//");
+        if (std::regex_search(text.substr(0, comment), test_variable)) {
+          EXPECT_EQ(e.path().filename(), "test_pause.hpp")
+              << e.path() << ":" << n << " names a test variable outside pipeline/farm/test_pause.hpp";
+        }
+      }
+    }
+  std::ifstream in(std::string(LIGHTCONE_SOURCE_DIR) + "/docs/architecture.md");
+  std::stringstream doc;
+  doc << in.rdbuf();
+  EXPECT_NE(doc.str().find("pipeline/farm/test_pause"), std::string::npos)
+      << "docs/architecture.md does not say where the test hook lives";
+}
+
+// Every file a source includes, directly or not, resolved against its own
+// folder, engine/ and pipeline/ (the include paths).
+std::set<fs::path> included_by(const fs::path& file) {
+  static const std::regex quoted(R"re(^\s*#\s*include\s*"([^"]+)")re");
+  const fs::path root(LIGHTCONE_SOURCE_DIR);
+  std::set<fs::path> seen;
+  std::vector<fs::path> todo{file};
+  while (!todo.empty()) {
+    const fs::path f = todo.back();
+    todo.pop_back();
+    std::ifstream in(f);
+    std::string text;
+    while (std::getline(in, text)) {
+      std::smatch m;
+      if (!std::regex_search(text, m, quoted)) continue;
+      for (const fs::path& dir : {f.parent_path(), root / "engine", root / "pipeline"}) {
+        const fs::path p = (dir / std::string(m[1])).lexically_normal();
+        if (!fs::exists(p)) continue;
+        if (seen.insert(p).second) todo.push_back(p);
+        break;
+      }
+    }
+  }
+  return seen;
+}
+
+// A new kind should not rebuild the farm's queue, budget, messages and
+// loops: their headers include no registry (docs/architecture.md, "What a
+// new kind rebuilds").
+TEST(Architecture, TheFarmsLoopsIncludeNoRegistry) {
+  const fs::path root(LIGHTCONE_SOURCE_DIR);
+  for (const char* header : {"farm/work_queue.hpp", "farm/memo_budget.hpp", "farm/stripe_renderer.hpp",
+                             "farm/test_pause.hpp", "farm/local_farm.hpp", "farm/mpi_worker.hpp",
+                             "farm/mpi_messages.hpp", "farm/progress.hpp", "farm/farm_run.hpp"}) {
+    const std::set<fs::path> in = included_by(root / "pipeline" / header);
+    for (const char* registry : {"spacetime/spacetime.hpp", "camera/camera.hpp", "sky/sky.hpp", "objects/objects.hpp"})
+      EXPECT_EQ(in.count((root / "engine" / registry).lexically_normal()), 0u)
+          << "pipeline/" << header << " includes engine/" << registry << ", so adding a kind rebuilds it";
+  }
+}
+
 }  // namespace

@@ -349,5 +349,69 @@ TEST(Minkowski, HamiltonEquations) {
   expect_hamilton_equations(Minkowski{}, test::cartesian_points(10, 1, 10));
 }
 
+// A toy spacetime (flat, written in the test) that writes only its metric,
+// rhs and far field: hamiltonian_rhs, the capture rule and the disk's flux
+// come from the bases it names (spacetime/model.hpp), and it satisfies the
+// concept a registered spacetime must.
+class ToyFlat : public CartesianScene,
+                public HamiltonianFromRhs<ToyFlat>,
+                public NoHorizon,
+                public NoDiskTheory {
+ public:
+  static constexpr std::string_view name = "toy_flat";
+  static constexpr SceneChart chart = SceneChart::cartesian;
+  static constexpr bool stationary = true;
+  struct Params {
+    static constexpr auto fields = std::tuple{};
+  };
+  ToyFlat() = default;
+  explicit ToyFlat(const Params&) {}
+  Params params() const { return {}; }
+  ToyFlat for_tracing(TimeDirection) const { return *this; }
+  static std::vector<SpacetimeExample<ToyFlat>> examples() { return {{ToyFlat{}, 0.5, 40.0}}; }
+  double photon_reach() const { return 0.0; }
+  double far_field_radius() const { return 0.0; }
+  Vec3 escape_direction(const Vec4&, const Vec3& d) const { return d; }
+  // Straight lines, with a twist the test can see: dx^1 = 2 p_1.
+  template <class T>
+  void rhs(const std::array<T, 8>& y, std::array<T, 8>& dy) const {
+    dy = {-y[4], 2.0 * y[5], y[6], y[7], T{}, T{}, T{}, T{}};
+  }
+  double asymptotic_mass() const { return 0.0; }
+  Vec4 disk_velocity(const Vec4&) const { return {1.0, 0.0, 0.0, 0.0}; }
+  Mat4 metric(const Vec4&) const { return {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
+  Mat4 inverse_metric(const Vec4& x) const { return metric(x); }
+  Mat4Derivs metric_derivatives(const Vec4&) const { return {}; }
+};
+
+TEST(Spacetime, ANewSpacetimeNeedNotWriteTheAdapterNorTheNoHorizonNorTheNoDiskDefaults) {
+  static_assert(SpacetimeModel<ToyFlat>);
+  const ToyFlat st;
+  Vec4 dx, dp;
+  st.hamiltonian_rhs({0, 1, 2, 3}, {-1, 0.5, 0.25, 0.125}, dx, dp);
+  EXPECT_EQ(dx, (Vec4{1, 1.0, 0.25, 0.125}));  // its own rhs, x and p apart
+  EXPECT_EQ(dp, (Vec4{0, 0, 0, 0}));
+  EXPECT_FALSE(st.captured({0, 0, 0, 0}));
+  EXPECT_GT(st.capture_margin({0, 0, 0, 0}), 0.0);
+  EXPECT_FALSE(st.inside_horizon({0, 0, 0, 0}));
+  EXPECT_FALSE(st.thin_disk_flux());
+}
+
+// The shared adapter is each registered spacetime's rhs<double>, to the bit.
+TEST(Spacetime, TheSharedHamiltonianAdapterIsEachSpacetimesRhs) {
+  const Vec4 x = {0.5, 7.0, -3.0, 2.5}, p = {-1.0, 0.3, -0.6, 0.2};
+  for_each_spacetime_type([&](auto tag) {
+    using S = typename decltype(tag)::type;
+    for (const auto& ex : S::examples()) {
+      std::array<double, 8> d;
+      ex.spacetime.template rhs<double>({x[0], x[1], x[2], x[3], p[0], p[1], p[2], p[3]}, d);
+      Vec4 dx, dp;
+      ex.spacetime.hamiltonian_rhs(x, p, dx, dp);
+      EXPECT_EQ(dx, (Vec4{d[0], d[1], d[2], d[3]})) << S::name;
+      EXPECT_EQ(dp, (Vec4{d[4], d[5], d[6], d[7]})) << S::name;
+    }
+  });
+}
+
 }  // namespace
 }  // namespace lc

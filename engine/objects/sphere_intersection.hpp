@@ -13,7 +13,7 @@
 #include "geodesic/crossing.hpp"
 #include "geodesic/ray_loop.hpp"
 #include "objects/sphere_body.hpp"
-#include "objects/step_test.hpp"
+#include "objects/step_query.hpp"
 
 namespace lc::detail {
 
