@@ -43,12 +43,12 @@ void expect_kind(TableReader& t, std::initializer_list<const char*> kinds, const
 }
 
 // The parameters of whichever kind of registry R (core/registry.hpp) made
-// the table: its declared fields read and checked, then extra(params) for
-// what a kind holds besides them, then the kind's own validate() where it
-// has one.  `what` and `more` name the constructors in the error for a table
-// none of them made.
-template <class R, class Extra = void (*)(const void*)>
-typename R::Spec read_kind(TableReader& t, const char* what, const char* more = "", Extra extra = [](const void*) {}) {
+// the table: its declared fields read and checked (positions against st,
+// the scene's spacetime, when given), then the kind's own validate() where
+// it has one.  `what` and `more` name the constructors in the error for a
+// table none of them made.
+template <class R>
+typename R::Spec read_kind(TableReader& t, const char* what, const char* more = "", const Spacetime* st = nullptr) {
   const std::string k = kind_of(t);
   std::optional<typename R::Spec> out;
   std::string kinds;
@@ -57,8 +57,7 @@ typename R::Spec read_kind(TableReader& t, const char* what, const char* more = 
     kinds += fmt::format("{}lc.{}{{...}}", kinds.empty() ? "" : ", ", K::name);
     if (out || k != K::name) return;
     typename K::Params p;
-    read_fields(t, p);
-    extra(&p);
+    read_fields(t, p, st);
     if constexpr (requires { p.validate(); }) validate_at(t, p);
     t.finish();
     out = p;
@@ -151,31 +150,23 @@ WorldlineSpec read_worldline(TableReader& t) {
   return w;
 }
 
-namespace {
-
-// What a sphere holds besides its declared fields: where it is held at rest
-// (`position`) or the worldline it falls along (`worldline`), one of the two.
-// Positions resolve against `st` when given.  Other kinds hold nothing more.
-void read_placement(TableReader& t, Sphere::Params& s, const Spacetime* st) {
+Placement read_placement(TableReader& t, const Spacetime* st) {
   const bool has_pos = t.has("position"), has_wl = t.has("worldline");
   if (has_pos == has_wl) fail(t, "give either position (held at rest) or worldline (free fall)");
+  Placement out;
   if (has_pos) {
     auto p = t.table("position");
     const ScriptPosition sp = read_position(p);
-    s.position = st ? resolve_position(sp, *st, p.context()) : sp.coords;
+    out.at = st ? resolve_position(sp, *st, p.context()) : sp.coords;
   } else {
     auto w = t.table("worldline");
-    s.worldline = read_worldline(w);
+    out.at = read_worldline(w);
   }
+  return out;
 }
-template <class P>
-void read_placement(TableReader&, P&, const Spacetime*) {}
-
-}  // namespace
 
 ObjectSpec read_object(TableReader& t, const Spacetime* st) {
-  return read_kind<ObjectRegistry>(t, "an object constructor", "",
-                                   [&](auto* p) { read_placement(t, *p, st); });
+  return read_kind<ObjectRegistry>(t, "an object constructor", "", st);
 }
 
 ObserverSpec read_observer(TableReader& t, const Spacetime* st) {
