@@ -32,7 +32,19 @@ int run_geodesic(const GeodesicCommand& cmd) {
       throw std::invalid_argument(fmt::format(
           "{}: all rays of a bundle must agree on 'transport' (the CSV has one set of columns)", cmd.spec.string()));
 
-  std::string csv = geodesic_csv_header(tetrad, specs.bundle);
+  // The CSV records one chart (its first line): every ray's x0..x3 in it.
+  std::vector<Spacetime> spacetimes;
+  for (const auto& s : specs.specs) {
+    spacetimes.push_back(s.problem.spacetime);
+    const Spacetime& first = spacetimes.front();
+    if (scene_chart(s.problem.spacetime) != scene_chart(first))
+      throw std::invalid_argument(fmt::format(
+          "{}: all rays of a bundle must be in one scene chart (the CSV records one): ray 1 is in {} ({}), ray {} in "
+          "{} ({})",
+          cmd.spec.string(), spacetime_name(first), csv_chart_name(scene_chart(first)), spacetimes.size(),
+          spacetime_name(s.problem.spacetime), csv_chart_name(scene_chart(s.problem.spacetime))));
+  }
+  std::string csv = geodesic_csv_header(spacetimes, tetrad, specs.bundle);
   int index = 0;
   for (const auto& spec : specs.specs) {
     ++index;

@@ -13,8 +13,26 @@
 
 namespace lc {
 
-std::string geodesic_csv_header(bool with_tetrad, bool bundle) {
-  std::string out = bundle ? "ray,lambda,x0,x1,x2,x3,u0,u1,u2,u3" : "lambda,x0,x1,x2,x3,u0,u1,u2,u3";
+std::string spacetimes_in_chart(SceneChart c) {
+  std::string out;
+  for_each_spacetime_type([&](auto tag) {
+    using S = typename decltype(tag)::type;
+    if (S::chart == c) out += fmt::format("{}{}", out.empty() ? "" : ", ", S::name);
+  });
+  return out;
+}
+
+std::string geodesic_csv_header(const std::vector<Spacetime>& spacetimes, bool with_tetrad, bool bundle) {
+  std::string names;
+  for (const Spacetime& st : spacetimes) {
+    const std::string name(spacetime_name(st));
+    if ((", " + names + ", ").find(", " + name + ", ") == std::string::npos)
+      names += fmt::format("{}{}", names.empty() ? "" : ", ", name);
+  }
+  const SceneChart chart = spacetimes.empty() ? SceneChart::polar : scene_chart(spacetimes.front());
+  std::string out = fmt::format("# chart: {} ({}; {})\n", csv_chart_name(chart),
+                                chart == SceneChart::polar ? "t, r, theta, phi" : "t, x, y, z", names);
+  out += bundle ? "ray,lambda,x0,x1,x2,x3,u0,u1,u2,u3" : "lambda,x0,x1,x2,x3,u0,u1,u2,u3";
   if (with_tetrad)
     for (int a = 0; a < 4; ++a)
       for (int m = 0; m < 4; ++m) out += fmt::format(",e{}{}", a, m);
@@ -66,7 +84,7 @@ std::vector<std::string> split_commas(const std::string& line) {
 
 }  // namespace
 
-std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file) {
+GeodesicCsv read_geodesic_csv(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::invalid_argument(fmt::format("{}: cannot be read", file.string()));
   // Lines are read with a bounded length, so a file of one enormous line
@@ -82,8 +100,29 @@ std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file) {
     if (!text.empty() && text.back() == '\r') text.pop_back();
     return text;
   };
-  const std::optional<std::string> first = next_line();
+  GeodesicCsv csv;
+  // Comments before the header; the chart line among them.
+  long number = 0;
+  std::optional<std::string> first;
+  while ((first = next_line())) {
+    ++number;
+    if (!first->starts_with('#')) break;
+    constexpr std::string_view tag = "# chart: ";
+    if (!first->starts_with(tag)) continue;
+    const std::string name = first->substr(tag.size(), first->find(' ', tag.size()) - tag.size());
+    std::string known;
+    for (std::size_t c = 0; c < csv_chart_names.size(); ++c) {
+      if (name == csv_chart_names[c]) csv.chart = static_cast<SceneChart>(c);
+      known += fmt::format("{}{}", c == 0 ? "" : " or ", csv_chart_names[c]);
+    }
+    if (!csv.chart)
+      throw std::invalid_argument(
+          fmt::format("{}:{}: chart '{}' is not one lightcone knows ({}): correct the line, or remove it and give plot "
+                      "--coordinates",
+                      file.string(), number, name, known));
+  }
   if (!first) throw std::invalid_argument(fmt::format("{}: empty (expected a `lightcone geodesic` CSV)", file.string()));
+  const long header_line = number;
   const std::vector<std::string> header = split_commas(*first);
   auto column = [&](const std::string& name) -> std::optional<std::size_t> {
     for (std::size_t k = 0; k < header.size(); ++k)
@@ -95,13 +134,12 @@ std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file) {
   for (int m = 0; m < 4; ++m) {
     const auto k = column(fmt::format("x{}", m));
     if (!k)
-      throw std::invalid_argument(fmt::format("{}:1: no column x{} (expected the header of a `lightcone geodesic` CSV, "
+      throw std::invalid_argument(fmt::format("{}:{}: no column x{} (expected the header of a `lightcone geodesic` CSV, "
                                               "[ray,]lambda,x0,x1,x2,x3,...)",
-                                              file.string(), m));
+                                              file.string(), header_line, m));
     x[static_cast<std::size_t>(m)] = *k;
   }
-  std::vector<CsvCurve> curves;
-  long number = 1;
+  std::vector<CsvCurve>& curves = csv.curves;
   for (std::optional<std::string> row; (row = next_line());) {
     ++number;
     const std::string& line = *row;
@@ -129,7 +167,7 @@ std::vector<CsvCurve> read_geodesic_csv(const std::filesystem::path& file) {
     curves.back().lines.push_back(number);
   }
   if (curves.empty()) throw std::invalid_argument(fmt::format("{}: a header but no rows", file.string()));
-  return curves;
+  return csv;
 }
 
 }  // namespace lc

@@ -154,11 +154,20 @@ int main(int argc, char** argv) {
   auto* plot_cmd = app.add_subcommand("plot", "Draw the curves of a `lightcone geodesic` CSV as a figure (SVG or PNG)");
   plot_cmd->add_option("csv", plot.csv, "CSV written by lightcone geodesic")->required()->check(CLI::ExistingFile);
   plot_cmd->add_option("-o,--output", plot.output, "Figure to write: FILE.svg or FILE.png")->required();
-  plot_cmd->add_option("--coordinates", plot.coordinates,
-                       "What the CSV's x1..x3 are: bl (Boyer-Lindquist r, theta, phi: a Kerr spec; the default) or "
-                       "cartesian (x, y, z: dihole, Minkowski)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, lc::PlotCoordinates>{
-          {"bl", lc::PlotCoordinates::bl}, {"cartesian", lc::PlotCoordinates::cartesian}}));
+  // The charts by their CSV names, each with the spacetimes that use it
+  // (from the registry: a new spacetime joins the help by itself).
+  std::map<std::string, lc::SceneChart> charts;
+  for (std::size_t c = 0; c < lc::csv_chart_names.size(); ++c)
+    charts.emplace(lc::csv_chart_names[c], static_cast<lc::SceneChart>(c));
+  plot_cmd
+      ->add_option("--coordinates", plot.coordinates,
+                   fmt::format("What the CSV's x1..x3 are when it does not say (a CSV written before lightcone "
+                               "geodesic recorded its chart on its first line): {} (r, theta, phi: {}; the default) or "
+                               "{} (x, y, z: {}); a CSV that records its chart needs none",
+                               lc::csv_chart_name(lc::SceneChart::polar), lc::spacetimes_in_chart(lc::SceneChart::polar),
+                               lc::csv_chart_name(lc::SceneChart::cartesian),
+                               lc::spacetimes_in_chart(lc::SceneChart::cartesian)))
+      ->transform(CLI::CheckedTransformer(charts));
   plot_cmd->add_option("--view", plot.view, "The plane drawn: xz (side view, the default), xy (from above) or yz")
       ->transform(CLI::CheckedTransformer(std::map<std::string, lc::PlotView>{
           {"xz", lc::PlotView::xz}, {"xy", lc::PlotView::xy}, {"yz", lc::PlotView::yz}}));

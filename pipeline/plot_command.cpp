@@ -26,8 +26,8 @@ constexpr double max_plot_coordinate = 1e12;
 
 // An event's (pseudo-)Cartesian position: Boyer–Lindquist (r, theta, phi)
 // taken as spherical coordinates (the paper's Figure 1), or (x, y, z).
-std::array<double, 3> cartesian(const std::array<double, 4>& e, PlotCoordinates c) {
-  if (c == PlotCoordinates::cartesian) return {e[1], e[2], e[3]};
+std::array<double, 3> cartesian(const std::array<double, 4>& e, SceneChart c) {
+  if (c == SceneChart::cartesian) return {e[1], e[2], e[3]};
   const double r = e[1], th = e[2], ph = e[3];
   return {r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th)};
 }
@@ -204,7 +204,7 @@ struct FigureSink {
 // Throws naming the CSV's line of the first point whose (pseudo-)Cartesian
 // coordinates are beyond max_plot_coordinate (e.g. r = 1e308: sin and cos
 // keep it finite, but the figure's width overflows to infinity).
-void check_coordinates(const std::vector<CsvCurve>& curves, PlotCoordinates coordinates, const std::filesystem::path& csv) {
+void check_coordinates(const std::vector<CsvCurve>& curves, SceneChart coordinates, const std::filesystem::path& csv) {
   for (const CsvCurve& c : curves)
     for (std::size_t i = 0; i < c.events.size(); ++i) {
       const auto p = cartesian(c.events[i], coordinates);
@@ -236,7 +236,7 @@ FigureFrame figure_frame(int width, int height, double extent) {
   return f;
 }
 
-std::vector<FigureLine> figure_lines(const std::vector<CsvCurve>& curves, PlotCoordinates coordinates, PlotView view,
+std::vector<FigureLine> figure_lines(const std::vector<CsvCurve>& curves, SceneChart coordinates, PlotView view,
                                      const std::optional<DiskRange>& disk) {
   std::vector<FigureLine> out;
   for (const CsvCurve& c : curves) {
@@ -280,9 +280,16 @@ int run_plot(const PlotCommand& cmd) {
         fmt::format("--horizon {:g}: must be a radius >= 0, at most {:g} M", cmd.horizon, max_plot_coordinate));
   const std::optional<DiskRange> disk = cmd.disk ? std::optional(parse_disk(*cmd.disk)) : std::nullopt;
 
-  const std::vector<CsvCurve> curves = read_geodesic_csv(cmd.csv);
-  check_coordinates(curves, cmd.coordinates, cmd.csv);
-  const std::vector<FigureLine> lines = figure_lines(curves, cmd.coordinates, cmd.view, disk);
+  const GeodesicCsv csv = read_geodesic_csv(cmd.csv);
+  if (csv.chart && cmd.coordinates && *csv.chart != *cmd.coordinates)
+    throw std::invalid_argument(fmt::format(
+        "--coordinates {}: {} records its chart as {} (its first line); drop --coordinates, which is for CSVs that do "
+        "not say",
+        csv_chart_name(*cmd.coordinates), cmd.csv.string(), csv_chart_name(*csv.chart)));
+  const SceneChart chart = csv.chart.value_or(cmd.coordinates.value_or(SceneChart::polar));
+  const std::vector<CsvCurve>& curves = csv.curves;
+  check_coordinates(curves, chart, cmd.csv);
+  const std::vector<FigureLine> lines = figure_lines(curves, chart, cmd.view, disk);
   double extent = 0.0;
   if (cmd.extent) {
     extent = *cmd.extent;

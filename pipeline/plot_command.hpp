@@ -16,13 +16,16 @@
 
 namespace lc {
 
-enum class PlotCoordinates { bl, cartesian };  // the CSV's x1..x3: (r, theta, phi) or (x, y, z)
-enum class PlotView { xz, xy, yz };            // the plane drawn: its first axis across, its second up
+enum class PlotView { xz, xy, yz };  // the plane drawn: its first axis across, its second up
 
 struct PlotCommand {
   std::filesystem::path csv;
   std::filesystem::path output;  // .svg or .png
-  PlotCoordinates coordinates = PlotCoordinates::bl;
+  // What the CSV's x1..x3 are, (r, theta, phi) or (x, y, z), for a CSV
+  // that does not record its chart (written before it did); unset: the
+  // CSV's chart, or bl for such an old one.  A CSV's chart overrides none:
+  // the two disagreeing is an error.
+  std::optional<SceneChart> coordinates;
   PlotView view = PlotView::xz;
   std::string size = "800x600";
   std::optional<double> extent;                // half the width shown (M); default: every point fits
@@ -50,7 +53,7 @@ struct DiskRange {
 // The curves projected into the view's plane, each cut at its first
 // crossing of z = 0 between the disk's radii when a disk is given (the
 // crossing linearly interpolated between the samples either side).
-std::vector<FigureLine> figure_lines(const std::vector<CsvCurve>& curves, PlotCoordinates coordinates, PlotView view,
+std::vector<FigureLine> figure_lines(const std::vector<CsvCurve>& curves, SceneChart coordinates, PlotView view,
                                      const std::optional<DiskRange>& disk);
 
 // Where a point of the view's plane lands in the image (pixels from the

@@ -92,7 +92,7 @@ int run_trace(const TraceCommand& cmd) {
   // With --json standard output is the report's, so the path goes only
   // to a file named with -o.
   if (!cmd.json || cmd.output) {
-    std::string csv = geodesic_csv_header(false, false);
+    std::string csv = geodesic_csv_header({st_out}, false, false);
     append_geodesic_csv(csv, st_out, path, false, std::nullopt);
     write_output(cmd.output, csv);
   }

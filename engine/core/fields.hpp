@@ -8,6 +8,7 @@
 // fields`).  Gyoto's GYOTO_PROPERTY_* lines are the model.
 
 #include <cmath>
+#include <concepts>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -52,9 +53,26 @@ std::string choices_text() {
   return out;
 }
 
+// A field type whose value a shot gives under one of several keys, and
+// which says under which (a placement: `position` or `worldline`,
+// worldline/placement.hpp).  T::field_names lists them all (the reader's
+// check of unknown keys, the reference); v.field_name() is the one v is
+// keyed and written under.  The type gives its own text: field_text(v,
+// exact) for the key and, holding a position, field_json(v, polar) for
+// JSON (polar: whether the scene's positions are {r, theta, phi}).
+template <class T>
+concept KeyedByValue = requires(const T& v) {
+  T::field_names;
+  { v.field_name() } -> std::convertible_to<std::string_view>;
+};
+
+// The default of a field that cannot have one: the shot gives one of its
+// keys (a KeyedByValue type, whose values need not be constants).
+struct NoDefault {};
+
 // One field of Owner, of type T (double, int, std::uint32_t, a string, a
-// Palette of two colours or a Choice).  fallback: the default,
-// nullopt when the field is required (a string's default is a
+// Palette of two colours, a Choice or a KeyedByValue type).  fallback: the
+// default, nullopt when the field is required (a string's default is a
 // string_view: a std::string cannot live in a constant).  lo, hi: the
 // allowed range (for numbers).
 template <class T>
@@ -64,6 +82,10 @@ struct FieldDefault {
 template <>
 struct FieldDefault<std::string> {
   using type = std::string_view;
+};
+template <KeyedByValue T>
+struct FieldDefault<T> {
+  using type = NoDefault;
 };
 template <class T>
 using FieldDefaultOf = typename FieldDefault<T>::type;
@@ -165,19 +187,46 @@ inline std::string field_text(const Palette& p, bool exact) {
   return exact ? fmt::format("{};{}", colour(p.a), colour(p.b)) : fmt::format("[{}, {}]", colour(p.a), colour(p.b));
 }
 
+// The key a field's value v is given under: its declared name, or the one
+// a KeyedByValue value says.
+template <class F>
+std::string_view field_key_name(const F& f, const typename F::Value& v) {
+  if constexpr (KeyedByValue<typename F::Value>)
+    return v.field_name();
+  else
+    return f.name;
+}
+
+// A value as JSON; polar: whether the scene's positions are polar, for a
+// type holding one (which says so with field_json).
+template <class T>
+std::string field_json_text(const T& v, bool polar) {
+  if constexpr (requires { field_json(v, polar); })
+    return field_json(v, polar);
+  else
+    return field_text(v, false);
+}
+
 // " name=value" for every field of s, exactly: what frames are compared by.
 template <HasFields S>
 std::string fields_key(const S& s) {
   std::string out;
-  for_each_field<S>([&](const auto& f) { out += fmt::format(" {}={}", f.name, field_text(s.*(f.member), true)); });
+  for_each_field<S>([&](const auto& f) {
+    const auto& v = s.*(f.member);
+    out += fmt::format(" {}={}", field_key_name(f, v), field_text(v, true));
+  });
   return out;
 }
 
-// ", \"name\": value" for every field of s, as JSON members.
+// ", \"name\": value" for every field of s, as JSON members (polar: whether
+// the scene's positions are polar).
 template <HasFields S>
-std::string fields_json(const S& s) {
+std::string fields_json(const S& s, bool polar = false) {
   std::string out;
-  for_each_field<S>([&](const auto& f) { out += fmt::format(", \"{}\": {}", f.name, field_text(s.*(f.member), false)); });
+  for_each_field<S>([&](const auto& f) {
+    const auto& v = s.*(f.member);
+    out += fmt::format(", \"{}\": {}", field_key_name(f, v), field_json_text(v, polar));
+  });
   return out;
 }
 

@@ -34,9 +34,11 @@ struct Registry {
     (f(static_cast<K*>(nullptr)), ...);
   }
 
-  // "name field=value ...", exactly: what frames are compared by.  A kind
-  // whose Params hold more than their declared fields (a sphere's
-  // placement) adds it with extra_key().
+  // "name field=value ...", exactly: what frames are compared by.  Every
+  // declared field is in it (a placement too: core/fields.hpp,
+  // KeyedByValue); a kind whose Params hold more than their declared fields
+  // adds that with extra_key(), which nothing checks is there: declare a
+  // field instead where its type allows.
   static std::string key(const Spec& s) {
     return std::string(name(s)) + std::visit(
                                       [](const auto& p) {
@@ -48,11 +50,12 @@ struct Registry {
   }
 
   // {"kind": "name", <each field>: value}, and extra_json(polar) where a
-  // kind has it (polar: whether the scene's positions are polar).
+  // kind has it (polar: whether the scene's positions are polar, for
+  // fields holding one).
   static std::string json(const Spec& s, bool polar = false) {
     return fmt::format("{{\"kind\": \"{}\"{}}}", name(s), std::visit(
                                                               [polar](const auto& p) {
-                                                                std::string j = fields_json(p);
+                                                                std::string j = fields_json(p, polar);
                                                                 if constexpr (requires { p.extra_json(polar); })
                                                                   j += p.extra_json(polar);
                                                                 return j;

@@ -28,6 +28,7 @@
 #include "objects/sphere_intersection.hpp"
 #include "objects/step_query.hpp"
 #include "assets/shot_resources.hpp"
+#include "worldline/placement.hpp"
 #include "worldline/worldline_spec.hpp"
 #include "spacetime/chart.hpp"
 
@@ -44,10 +45,9 @@ class Sphere : public SphereBody {
     double radius = 1.0;
     int rows = 8, columns = 16;
     Palette colors = {{0.95f, 0.95f, 0.95f}, {0.8f, 0.1f, 0.1f}};
-    // One of the two, read by hand (script/scene_reader.cpp): where it is
-    // held at rest (scene coordinates), or the worldline it falls along.
-    std::optional<Vec4> position;
-    std::optional<WorldlineSpec> worldline;
+    // Held at rest at `position` (scene coordinates) or falling along
+    // `worldline`: a declared field like the others (worldline/placement.hpp).
+    Placement placement;
     static constexpr auto fields = std::tuple{
         field("radius", &Params::radius, std::optional<double>{}, above(0.0), std::nullopt, "proper radius", "M"),
         field("rows", &Params::rows, std::optional<int>{8}, at_least(1), at_most(100000), "checker cells from pole to pole"),
@@ -55,26 +55,10 @@ class Sphere : public SphereBody {
               "checker cells round the pole"),
         field("colors", &Params::colors, std::optional<Palette>{Palette{{0.95f, 0.95f, 0.95f}, {0.8f, 0.1f, 0.1f}}},
               std::nullopt, std::nullopt, "the two colours {{r, g, b}, {r, g, b}}, linear RGB"),
+        field("placement", &Params::placement, std::optional<NoDefault>{}, std::nullopt, std::nullopt,
+              "one of the two: `position = {...}`, held at rest there (see Positions), or `worldline = w`, falling "
+              "along the worldline w"),
     };
-    // What the declared fields leave out: the placement, by name (for the
-    // reader's check of unknown fields: script/field_reader.hpp) ...
-    static constexpr std::array<std::string_view, 2> extra_fields = {"position", "worldline"};
-    // ... for the reference (lightcone fields) ...
-    static constexpr std::string_view extra_doc =
-        "And one of `position = {...}` (held at rest there; see Positions) or `worldline = w` (falling along the "
-        "worldline w).";
-    // ... as JSON ...
-    std::string extra_json(bool polar) const {
-      if (position) return fmt::format(", \"position\": {}", json_position(*position, polar));
-      return worldline ? fmt::format(", \"worldline\": {}", worldline->json()) : std::string();
-    }
-    // ... and exactly.
-    std::string extra_key() const {
-      std::string k;
-      if (position) k += fmt::format(" at {:a} {:a} {:a}", (*position)[1], (*position)[2], (*position)[3]);
-      if (worldline) k += " along " + worldline->key();
-      return k;
-    }
   };
 
   // In the spacetime st (its trace chart), with worldlines from `res`, for a
@@ -85,17 +69,17 @@ class Sphere : public SphereBody {
   template <class S>
   Sphere(const Params& p, const S& st, ShotResources& res, const Vec4& observer) : p_(p) {
     radius = p.radius;
-    if (p.worldline) {
-      if (describe(p.worldline->spacetime, true) != describe(Spacetime(st), true))
+    if (const WorldlineSpec* w = p.placement.worldline()) {
+      if (describe(w->spacetime, true) != describe(Spacetime(st), true))
         throw std::invalid_argument(fmt::format(
             "{}: a sphere's worldline ({}) was made in {}, but this frame's spacetime is {}; a worldline only makes "
             "sense in the spacetime it was integrated in",
-            p.worldline->where, p.worldline->where, describe(p.worldline->spacetime), describe(Spacetime(st))));
-      worldline = res.worldline(*p.worldline);
+            w->where, w->where, describe(w->spacetime), describe(Spacetime(st))));
+      worldline = res.worldline(*w);
     } else {
-      rest_position = st.trace_from_scene(*p.position);
+      rest_position = st.trace_from_scene(*p.placement.rest());
       try {
-        rest_frame = static_frame(st, *p.position);
+        rest_frame = static_frame(st, *p.placement.rest());
       } catch (const ObserverError& e) {
         throw std::invalid_argument(fmt::format("sphere at rest: {}", e.what()));
       }
@@ -195,7 +179,7 @@ class Sphere : public SphereBody {
     throw std::invalid_argument(fmt::format(
         "a sphere's worldline ({}) ends {:.4g} M of coordinate time before this frame's rays may last meet the sphere "
         "(after it the sphere would vanish): lengthen its duration ({:.6g} of proper time)",
-        p_.worldline->where, latest - worldline->end_time(), worldline->duration()));
+        p_.placement.worldline()->where, latest - worldline->end_time(), worldline->duration()));
   }
 
   Params p_;

@@ -56,24 +56,14 @@ concept ObserverModel = requires(const O& o, const typename O::Params& p, const 
 // Every observer kind, one line each.
 using ObserverRegistry = Registry<StaticObserver, Zamo, FreeFall>;
 
-namespace detail {
-// One assertion per kind and spacetime, so that the compiler's notes name
-// the pair that fails and the requirement it misses.
-template <class O, class S>
-constexpr bool satisfies_observer_model() {
-  static_assert(ObserverModel<O, S>, "a registered observer kind must satisfy ObserverModel in every registered spacetime");
-  return true;
-}
-template <class S, class... O>
-constexpr bool all_observers_in(Registry<O...>*) {
-  return (satisfies_observer_model<O, S>() && ...);
-}
-template <class... S>
-constexpr bool all_observers(std::variant<S...>*) {
-  return (all_observers_in<S>(static_cast<ObserverRegistry*>(nullptr)) && ...);
-}
-}  // namespace detail
-static_assert(detail::all_observers(static_cast<Spacetime*>(nullptr)));
+// One assertion per kind and spacetime: the compiler's notes name the pair
+// that fails and the requirement it misses.
+static_assert(every_kind<Spacetime>([]<class S>() {
+  every_kind<ObserverRegistry>([]<class O>() {
+    static_assert(ObserverModel<O, S>,
+                  "a registered observer kind must satisfy ObserverModel in every registered spacetime");
+  });
+}));
 
 // The observer a shot asked for: one of the registered kinds' parameters.
 using ObserverSpec = ObserverRegistry::Spec;

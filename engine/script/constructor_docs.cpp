@@ -47,13 +47,21 @@ std::string table(std::string_view name, std::string_view heading = {}) {
   if (!any && !requires { P::extra_doc; }) out += "No fields.\n\n";
   if (any) out += "| field | default | range | meaning |\n| --- | --- | --- | --- |\n";
   for_each_field<P>([&](const auto& f) {
-    const std::string unit = f.unit.empty() ? std::string() : fmt::format(" {}", f.unit);
-    const std::string fallback = f.fallback ? default_text(*f.fallback) + unit : "required";
     using T = typename std::decay_t<decltype(f)>::Value;
+    const std::string unit = f.unit.empty() ? std::string() : fmt::format(" {}", f.unit);
+    std::string fallback = "required", name = fmt::format("`{}`", f.name);
+    if constexpr (KeyedByValue<T>) {
+      // Its keys, not its label: the shot writes one of them.
+      name.clear();
+      for (std::size_t i = 0; i < T::field_names.size(); ++i)
+        name += fmt::format("{}`{}`", i == 0 ? "" : i + 1 == T::field_names.size() ? " or " : ", ", T::field_names[i]);
+    } else if (f.fallback) {
+      fallback = default_text(*f.fallback) + unit;
+    }
     std::string range = range_text(f.lo, f.hi);
     if constexpr (Choice<T>) range = choices_text<T>();
     else if constexpr (std::is_integral_v<T>) range = integer_range_text(f.lo, f.hi);
-    out += fmt::format("| `{}` | {} | {} | {} |\n", f.name, cell(fallback), range.empty() ? "" : range + unit,
+    out += fmt::format("| {} | {} | {} | {} |\n", name, cell(fallback), range.empty() ? "" : range + unit,
                        cell(f.doc));
   });
   if (any) out += "\n";

@@ -6,11 +6,12 @@
 // unknown field (most likely a misspelt one, or one of another kind:
 // lc.camera{fov = 180, projection = "fisheye"}) is reported first, with
 // the nearest declared name, since a value's error would hide it.  Known
-// are the declared fields, the names in S::extra_fields (what a kind reads
-// by hand besides them, like the sphere's placement) and the keys the
-// caller marked known before (TableReader::mark_known).  The reader does
-// not finish() the table: the caller may read more fields by hand first,
-// and finishes it after.
+// are the declared fields (all the keys of a KeyedByValue one: a
+// placement's `position` and `worldline`), the names in S::extra_fields
+// (what a kind reads by hand besides them) and the keys the caller marked
+// known before (TableReader::mark_known).  The reader does not finish() the
+// table: the caller may read more fields by hand first, and finishes it
+// after.
 
 #include <algorithm>
 #include <cstdint>
@@ -22,6 +23,8 @@
 #include "core/color.hpp"
 #include "core/fields.hpp"
 #include "lua/table_reader.hpp"
+#include "spacetime/spacetime.hpp"
+#include "worldline/placement.hpp"
 
 namespace lc {
 
@@ -46,16 +49,33 @@ inline Palette read_palette(lua::TableReader& list) {
   return out;
 }
 
+// A placement (worldline/placement.hpp): exactly one of `position = {...}`
+// (resolved against st, the scene's spacetime, when given: nullptr keeps it
+// as written) or `worldline = lc.worldline{...}`.  In scene_reader.cpp,
+// beside the readers of positions and worldlines.
+Placement read_placement(lua::TableReader& t, const Spacetime* st);
+
+// The declared fields of `out` from the table t; st: the scene's
+// spacetime, which positions resolve against (nullptr where there is none
+// yet: a constructor's table checked on its own).
 template <HasFields S>
-void read_fields(lua::TableReader& t, S& out) {
-  for_each_field<S>([&](const auto& f) { t.mark_known({f.name}); });
+void read_fields(lua::TableReader& t, S& out, const Spacetime* st = nullptr) {
+  for_each_field<S>([&](const auto& f) {
+    using T = typename std::decay_t<decltype(f)>::Value;
+    if constexpr (KeyedByValue<T>)
+      for (const std::string_view name : T::field_names) t.mark_known({name});
+    else
+      t.mark_known({f.name});
+  });
   if constexpr (requires { S::extra_fields; })
     for (const std::string_view name : S::extra_fields) t.mark_known({name});
   t.finish();
   for_each_field<S>([&](const auto& f) {
     using T = typename std::decay_t<decltype(f)>::Value;
     T v;
-    if constexpr (std::is_same_v<T, std::string>) {
+    if constexpr (std::is_same_v<T, Placement>) {
+      v = read_placement(t, st);
+    } else if constexpr (std::is_same_v<T, std::string>) {
       v = f.fallback ? t.string_or(f.name, *f.fallback) : t.string(f.name);
       if (v.empty()) throw lua::FieldError(fmt::format("{}: field '{}' must not be empty", t.context(), f.name));
     } else if constexpr (std::is_same_v<T, Palette>) {
@@ -77,7 +97,8 @@ void read_fields(lua::TableReader& t, S& out) {
     } else if constexpr (std::is_floating_point_v<T>) {
       v = f.fallback ? t.number_or(f.name, *f.fallback) : t.number(f.name);
     } else {
-      static_assert(std::is_integral_v<T>, "read_fields reads numbers, strings and palettes; read other fields by hand");
+      static_assert(std::is_integral_v<T>,
+                    "read_fields reads numbers, strings, palettes, choices and placements: teach it a new field type");
       const std::int64_t i = f.fallback ? t.integer_or(f.name, static_cast<std::int64_t>(*f.fallback)) : t.integer(f.name);
       if (!in_range(static_cast<double>(i), f.lo, f.hi))
         throw lua::FieldError(fmt::format("{}: field '{}' must be {}{}{}, got {}", t.context(), f.name, integer_range_text(f.lo, f.hi),

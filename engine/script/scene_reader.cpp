@@ -43,13 +43,15 @@ void expect_kind(TableReader& t, std::initializer_list<const char*> kinds, const
 }
 
 // The parameters of whichever kind of registry R (core/registry.hpp) made
-// the table: its declared fields read and checked, the script line that
-// made it where the kind keeps one (`where`), then extra(params) for
-// what a kind holds besides them, then the kind's own validate() where it
-// has one.  `what` and `more` name the constructors in the error for a table
-// none of them made.
+// the table: its declared fields read and checked (positions against st,
+// the scene's spacetime, when given), the script line that made it where
+// the kind keeps one (`where`), then extra(params) for what a kind holds
+// besides them, then the kind's own validate() where it has one.  `what`
+// and `more` name the constructors in the error for a table none of them
+// made.
 template <class R, class Extra = void (*)(const void*)>
-typename R::Spec read_kind(TableReader& t, const char* what, const char* more = "", Extra extra = [](const void*) {}) {
+typename R::Spec read_kind(TableReader& t, const char* what, const char* more = "", const Spacetime* st = nullptr,
+                           Extra extra = [](const void*) {}) {
   const std::string k = kind_of(t);
   std::optional<typename R::Spec> out;
   std::string kinds;
@@ -58,7 +60,7 @@ typename R::Spec read_kind(TableReader& t, const char* what, const char* more = 
     kinds += fmt::format("{}lc.{}{{...}}", kinds.empty() ? "" : ", ", K::name);
     if (out || k != K::name) return;
     typename K::Params p;
-    read_fields(t, p);
+    read_fields(t, p, st);
     if constexpr (requires { p.where; }) p.where = t.string_or("__where", t.context());
     extra(&p);
     if constexpr (requires { p.validate(); }) validate_at(t, p);
@@ -153,47 +155,46 @@ WorldlineSpec read_worldline(TableReader& t) {
   return w;
 }
 
-namespace {
-
-// What a kind holds besides its declared fields, read by hand, each in one
-// place: a sphere's placement (held at rest at `position` or falling along
-// `worldline`, one of the two), an observer at rest's position (the table's
-// own {t, r, theta, phi} or {t, x, y, z}), a free fall's worldline.
-// Positions resolve against `st` when given.  Other kinds hold nothing more.
-void read_placement(TableReader& t, Sphere::Params& s, const Spacetime* st) {
+Placement read_placement(TableReader& t, const Spacetime* st) {
   const bool has_pos = t.has("position"), has_wl = t.has("worldline");
   if (has_pos == has_wl) fail(t, "give either position (held at rest) or worldline (free fall)");
+  Placement out;
   if (has_pos) {
     auto p = t.table("position");
     const ScriptPosition sp = read_position(p);
-    s.position = st ? resolve_position(sp, *st, p.context()) : sp.coords;
+    out.at = st ? resolve_position(sp, *st, p.context()) : sp.coords;
   } else {
     auto w = t.table("worldline");
-    s.worldline = read_worldline(w);
+    out.at = read_worldline(w);
   }
+  return out;
 }
+
+namespace {
+
+// What an observer kind holds besides its declared fields, read by hand,
+// each in one place: an observer at rest's position (the table's own
+// {t, r, theta, phi} or {t, x, y, z}), a free fall's worldline.  Positions
+// resolve against `st` when given.
 template <class Kind>
-void read_placement(TableReader& t, AtRestParams<Kind>& o, const Spacetime* st) {
+void read_observer_extra(TableReader& t, AtRestParams<Kind>& o, const Spacetime* st) {
   const ScriptPosition p = read_position(t);  // reads and finishes t
   o.position = st ? resolve_position(p, *st, t.context()) : p.coords;
 }
-void read_placement(TableReader& t, FreeFall::Params& o, const Spacetime*) {
+void read_observer_extra(TableReader& t, FreeFall::Params& o, const Spacetime*) {
   auto w = t.table("worldline");
   o.worldline = read_worldline(w);
 }
-template <class P>
-void read_placement(TableReader&, P&, const Spacetime*) {}
 
 }  // namespace
 
 ObjectSpec read_object(TableReader& t, const Spacetime* st) {
-  return read_kind<ObjectRegistry>(t, "an object constructor", "",
-                                   [&](auto* p) { read_placement(t, *p, st); });
+  return read_kind<ObjectRegistry>(t, "an object constructor", "", st);
 }
 
 ObserverSpec read_observer(TableReader& t, const Spacetime* st) {
-  return read_kind<ObserverRegistry>(t, "an observer constructor", "",
-                                     [&](auto* p) { read_placement(t, *p, st); });
+  return read_kind<ObserverRegistry>(t, "an observer constructor", "", st,
+                                     [&](auto* p) { read_observer_extra(t, *p, st); });
 }
 
 SceneSpec read_scene_spec(TableReader& t) {

@@ -17,7 +17,9 @@ grep -q "plot: 5 curves, [1-5] end on the disk" svg.log || fail "plot summary: $
 
 python3 - arches.csv arches.svg arches.png <<'PY' || fail "the figures do not show the CSV"
 import csv, math, re, struct, sys, xml.etree.ElementTree as ET
-rows = list(csv.DictReader(open(sys.argv[1])))
+lines = open(sys.argv[1]).read().splitlines()
+assert lines[0] == "# chart: bl (t, r, theta, phi; kerr)", lines[0]
+rows = list(csv.DictReader(lines[1:]))
 # The PNG: a real PNG of the size asked for.
 png = open(sys.argv[3], "rb").read()
 assert png[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
@@ -101,12 +103,35 @@ python3 -c "import sys; sys.stdout.write('ray,lambda,x0,x1,x2,x3\\n1,0,0,10,1.5,
 expect_fail "an overlong line" "long.csv:3: the line is longer than 16384 bytes" long.csv -o x.svg
 printf 'a,b\n1,2\n' >other.csv
 expect_fail "another CSV" "other.csv:1: no column x0" other.csv -o x.svg
-head -1 arches.csv >empty.csv
+head -2 arches.csv >empty.csv
 expect_fail "a header alone" "empty.csv: a header but no rows" empty.csv -o x.svg
 expect_fail "a tiny figure" "--size 10x10: a figure is 200x150" arches.csv -o x.svg --size 10x10
 expect_fail "a negative extent" "--extent -1: must be a positive number" arches.csv -o x.svg --extent -1
 expect_fail "a negative horizon" "--horizon -2: must be a radius" arches.csv -o x.svg --horizon -2
 expect_fail "an unknown view" "--view" arches.csv -o x.svg --view side
+# The CSV records its chart, so plot reads a dihole's x1..x3 as Cartesian
+# without being told; a CSV from before the chart line is read as it was
+# (bl, or as --coordinates says), and a flag that contradicts a recorded
+# chart is refused.
+cat >osc.lua <<'LUA'
+local lc = require "lightcone"
+return {spacetime = lc.dihole{m1 = 0.4, m2 = 0.4, d = 1}, curve = "timelike", start = {x = 5, y = 0, z = 0},
+        velocity = {x = 0, y = 0.1, z = 0}, stop = {coordinate_time = 60}, samples = 61}
+LUA
+"$LIGHTCONE" geodesic osc.lua -o osc.csv 2>osc.log || fail "geodesic osc: $(cat osc.log)"
+[ "$(head -1 osc.csv)" = "# chart: cartesian (t, x, y, z; dihole)" ] || fail "osc chart line: $(head -1 osc.csv)"
+"$LIGHTCONE" plot osc.csv -o osc.svg --view xy 2>osc_plot.log || fail "plot osc: $(cat osc_plot.log)"
+tail -n +2 osc.csv >old_osc.csv
+"$LIGHTCONE" plot old_osc.csv -o old_cart.svg --view xy --coordinates cartesian 2>old.log || fail "plot old CSV: $(cat old.log)"
+cmp -s osc.svg old_cart.svg || fail "the chart line and --coordinates cartesian draw different figures"
+"$LIGHTCONE" plot old_osc.csv -o old_bl.svg --view xy 2>old_bl.log || fail "plot old CSV as bl: $(cat old_bl.log)"
+cmp -s osc.svg old_bl.svg && fail "an old CSV without --coordinates was not read as bl"
+expect_fail "a contradicting flag" "--coordinates bl: osc.csv records its chart as cartesian (its first line); drop --coordinates" \
+  osc.csv -o x.svg --coordinates bl
+{ echo "# chart: polar (t, r, theta, phi; kerr)"; tail -n +2 arches.csv; } >badchart.csv
+expect_fail "an unknown chart" "badchart.csv:1: chart 'polar' is not one lightcone knows (bl or cartesian)" badchart.csv -o x.svg
+"$LIGHTCONE" plot --help | grep -q "bl (r, theta, phi: kerr; the default) or cartesian (x, y, z: minkowski, dihole)" \
+  || fail "plot --help does not list the spacetimes of each chart: $("$LIGHTCONE" plot --help | grep -A3 coordinates)"
 [ ! -e x.svg ] && [ ! -e arches.pdf ] || fail "a refused plot left a file"
 ls | grep -q tmp && fail "temporary files left behind"
 e2e_end

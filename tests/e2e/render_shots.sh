@@ -129,10 +129,11 @@ for s in d['scenes']:
 "$LIGHTCONE" trace "$SRC/shots/bench/kerr_disk.lua" --frame 0 --pixel 24,16 --size 48x32 -o ray.csv 2>trace.log \
   || fail "trace: $(cat trace.log)"
 grep -q "hit horizon" trace.log || fail "centre pixel should see the horizon: $(cat trace.log)"
-[ "$(head -1 ray.csv)" = "lambda,x0,x1,x2,x3,u0,u1,u2,u3" ] || fail "trace CSV header"
+[ "$(head -1 ray.csv)" = "# chart: bl (t, r, theta, phi; kerr)" ] || fail "trace CSV chart line: $(head -1 ray.csv)"
+[ "$(sed -n 2p ray.csv)" = "lambda,x0,x1,x2,x3,u0,u1,u2,u3" ] || fail "trace CSV header"
 [ "$(wc -l <ray.csv)" -gt 10 ] || fail "trace CSV too short"
 # The path starts at the observer (BL r = 30) and ends near the horizon.
-awk -F, 'NR == 2 && ($3 < 29.999 || $3 > 30.001) { exit 1 }' ray.csv || fail "trace starts at r = $(sed -n 2p ray.csv)"
+awk -F, 'NR == 3 && ($3 < 29.999 || $3 > 30.001) { exit 1 }' ray.csv || fail "trace starts at r = $(sed -n 3p ray.csv)"
 # The shipped star field is the project's own: regenerating it gives the same bytes.
 "$LIGHTCONE" starfield -o stars.png 2>/dev/null || fail "starfield"
 cmp -s stars.png "$SRC/shots/textures/starfield.png" || fail "starfield.png is not what 'lightcone starfield' makes"

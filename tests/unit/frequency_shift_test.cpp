@@ -179,7 +179,7 @@ TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
   SceneSpec rest = fs;
   Sphere::Params sp;
   sp.radius = 1.0;
-  sp.position = Vec4{0, 0, 0, 0};
+  sp.placement.at = Vec4{0, 0, 0, 0};
   rest.objects.push_back(sp);
   const RaySample at_rest = centre_sample(rest);
   ASSERT_EQ(at_rest.kind, Sphere::hit_kind);

@@ -168,7 +168,7 @@ TEST(Light, ARunnersShiftIsAllKinematic) {
   expect_beamed(samples(fs, 1)[0].color, 1.0, "gravitational");
   Sphere::Params ball;
   ball.radius = 1;
-  ball.position = Vec4{0, -50, 100, 0};
+  ball.placement.at = Vec4{0, -50, 100, 0};
   ball.colors = {plain, plain};
   fs.objects.push_back(ball);
   fs.light = shifted(0, 1, 0, 1);

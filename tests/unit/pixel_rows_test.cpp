@@ -171,7 +171,7 @@ TEST(PixelRows, AMovedEyeSeesTheImageShiftAsFlatSpaceSays) {
   std::get<PinholeCamera::Params>(fs.camera).fov = 12;
   Sphere::Params sp;
   sp.radius = 1.0;
-  sp.position = Vec4{0, 5, 0, 0};
+  sp.placement.at = Vec4{0, 5, 0, 0};
   fs.objects.push_back(sp);
   ShotResources res;
   const RenderSettings rs{400, 1, 1, true, false};

@@ -353,7 +353,7 @@ TEST(Render, SphereInFlatSpaceHasItsAngularSize) {
   std::get<PinholeCamera::Params>(fs.camera).fov = 12;
   Sphere::Params sp;
   sp.radius = 1.0;
-  sp.position = Vec4{0, 5, 0, 0};
+  sp.placement.at = Vec4{0, 5, 0, 0};
   fs.objects.push_back(sp);
   ShotResources res;
   const int W = 400;
@@ -550,7 +550,6 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   // horizontally by 1/cos^2 vs 1/cos, about 6%); compare against the same
   // measurement of a sphere at rest at the same apparent place instead.
   SceneSpec still = fs;
-  std::get<Sphere::Params>(still.objects[0]).worldline.reset();
   // Apparent position: straight back along the centre ray of the moving image.
   const Vec3 n = std::get<SceneIn<Minkowski>>(scene).camera.direction(cx0, H / 2.0);
   const Tetrad rest = static_polar_tetrad(Minkowski{}, std::get<StaticObserver::Params>(fs.observer).position);
@@ -558,7 +557,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   for (int k = 0; k < 3; ++k)
     for (int leg = 0; leg < 3; ++leg) dir[k] += n[leg] * rest.e[leg + 1][k + 1];
   const double dist = 60.0 / std::abs(dir[1]);  // reach the plane y = 0
-  std::get<Sphere::Params>(still.objects[0]).position = Vec4{0, dist * dir[0], 60 + dist * dir[1], dist * dir[2]};
+  std::get<Sphere::Params>(still.objects[0]).placement.at = Vec4{0, dist * dir[0], 60 + dist * dir[1], dist * dir[2]};
   ShotResources res2;
   const Scene still_scene = build_scene(still, W, H, res2);
   const double w0 = extent(still_scene, cx0, H / 2.0, 1, 0, 200);

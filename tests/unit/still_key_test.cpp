@@ -7,6 +7,13 @@
 
 #include "scene/still_key.hpp"
 
+#include <string>
+
+#include "core/registry.hpp"
+#include "lua/sandbox.hpp"
+#include "script/field_reader.hpp"
+#include "test_errors.hpp"
+
 namespace lc {
 namespace {
 
@@ -16,7 +23,7 @@ SceneSpec scene() {
   fs.observer = StaticObserver::Params{{10.0, 30.0, 1.2, 0.3}};
   fs.objects.emplace_back(std::in_place_type<Disk::Params>);
   Sphere::Params sp;
-  sp.position = Vec4{0.0, 12.0, 1.5, 0.0};
+  sp.placement.at = Vec4{0.0, 12.0, 1.5, 0.0};
   fs.objects.push_back(sp);
   return fs;
 }
@@ -43,11 +50,11 @@ TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects.erase(fs.objects.begin()); }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<CheckerSky::Params>(fs.sky).rotate = 1e-12; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.sky = StarSky::Params{2}; }));
-  EXPECT_TRUE(differs([](SceneSpec& fs) { (*std::get<Sphere::Params>(fs.objects[1]).position)[1] = 12.5; }));
+  EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Vec4>(std::get<Sphere::Params>(fs.objects[1]).placement.at)[1] = 12.5; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Sphere::Params>(fs.objects[1]).colors.a[0] = 0.5f; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects.push_back(fs.objects[1]); }));
   // A sphere at rest ignores the time in its position.
-  EXPECT_FALSE(differs([](SceneSpec& fs) { (*std::get<Sphere::Params>(fs.objects[1]).position)[0] = 99.0; }));
+  EXPECT_FALSE(differs([](SceneSpec& fs) { std::get<Vec4>(std::get<Sphere::Params>(fs.objects[1]).placement.at)[0] = 99.0; }));
 }
 
 TEST(StillKey, AFreeFallingObserverHasNone) {
@@ -61,6 +68,123 @@ TEST(StillKey, AFreeFallingObserverHasNone) {
   ride.proper_time = 5.0;
   fs.observer = ride;
   EXPECT_EQ(still_key(fs), "");  // its frames never share rays
+}
+
+// A sphere's placement is a declared field: moving it, or making it fall
+// along another worldline, changes the key.
+TEST(StillKey, TheSpheresPlacementIsKeyed) {
+  const std::string key = still_key(scene());
+  WorldlineSpec w;
+  w.spacetime = Kerr(1.0, 0.9);
+  w.start = {0.0, 12.0, 1.5, 0.0};
+  w.duration = 100.0;
+  auto along = [&](const WorldlineSpec& spec) {
+    SceneSpec fs = scene();
+    std::get<Sphere::Params>(fs.objects[1]).placement.at = spec;
+    return still_key(fs);
+  };
+  const std::string falling = along(w);
+  EXPECT_NE(falling, key);
+  WorldlineSpec longer = w;
+  longer.duration = std::nextafter(100.0, 200.0);
+  EXPECT_NE(along(longer), falling);
+  WorldlineSpec elsewhere = w;
+  elsewhere.start[1] = std::nextafter(12.0, 13.0);
+  EXPECT_NE(along(elsewhere), falling);
+  WorldlineSpec same = w;
+  same.where = "another.lua:3";  // where the script made it is no part of the picture
+  EXPECT_EQ(along(same), falling);
+}
+
+// A toy object kind: a declared placement and nothing written by hand for
+// it (no extra_key, extra_json, extra_fields or extra_doc).
+struct Toy {
+  static constexpr std::string_view name = "toy";
+  struct Params {
+    double size = 1.0;
+    Placement placement;
+    static constexpr auto fields = std::tuple{
+        field("size", &Params::size, std::optional<double>{1.0}, above(0.0), std::nullopt, "how big", "M"),
+        field("placement", &Params::placement, std::optional<NoDefault>{}, std::nullopt, std::nullopt,
+              "where it is"),
+    };
+  };
+};
+using ToyRegistry = Registry<Toy>;
+template <class P>
+concept HandWrittenPlacement = requires(const P& p) { p.extra_key(); } || requires(const P& p) { p.extra_json(false); } ||
+                               requires { P::extra_fields; } || requires { P::extra_doc; };
+static_assert(!HandWrittenPlacement<Toy::Params> && !HandWrittenPlacement<Sphere::Params>);
+
+Toy::Params toy_at(const Vec4& x) {
+  Toy::Params p;
+  p.placement.at = x;
+  return p;
+}
+
+TEST(StillKey, AToyKindsDeclaredPlacementKeysItWithoutHandWrittenMembers) {
+  const std::string key = ToyRegistry::key(toy_at({0.0, 3.0, 4.0, 5.0}));
+  EXPECT_EQ(ToyRegistry::key(toy_at({7.0, 3.0, 4.0, 5.0})), key);  // at rest: its time is not where it is
+  EXPECT_EQ(ToyRegistry::key(toy_at({0.0, 3.0, 4.0, 5.0})), key);
+  for (int k = 1; k < 4; ++k) {
+    Vec4 x = {0.0, 3.0, 4.0, 5.0};
+    x[k] = std::nextafter(x[k], 10.0);
+    EXPECT_NE(ToyRegistry::key(toy_at(x)), key) << "coordinate " << k;
+  }
+  Toy::Params bigger = toy_at({0.0, 3.0, 4.0, 5.0});
+  bigger.size = 2.0;
+  EXPECT_NE(ToyRegistry::key(bigger), key);
+  WorldlineSpec w;
+  w.start = {0.0, 3.0, 4.0, 5.0};
+  w.duration = 10.0;
+  Toy::Params falling;
+  falling.placement.at = w;
+  EXPECT_NE(ToyRegistry::key(falling), key);
+  // And the JSON names the key the shot wrote, in the scene's chart.
+  EXPECT_EQ(ToyRegistry::json(toy_at({0.0, 3.0, 4.0, 5.0})),
+            R"({"kind": "toy", "size": 1, "position": {"t": 0, "x": 3, "y": 4, "z": 5}})");
+  EXPECT_EQ(ToyRegistry::json(toy_at({0.0, 3.0, pi / 2, 0.0}), true),
+            R"({"kind": "toy", "size": 1, "position": {"t": 0, "r": 3, "theta": 90, "phi": 0}})");
+  EXPECT_EQ(ToyRegistry::json(falling), R"({"kind": "toy", "size": 1, "worldline": )" + w.json() + "}");
+}
+
+// The reader knows the toy's placement from its declaration alone: either
+// key, one of the two, a misspelt one reported with the nearest name.
+class ToyReader : public ::testing::Test {
+ protected:
+  ToyReader() : sandbox_({}) {}
+  Toy::Params read(const std::string& table) {
+    lua_State* L = sandbox_.state();
+    const std::string chunk = "return " + table;
+    EXPECT_EQ(luaL_loadstring(L, chunk.c_str()), 0) << lua_tostring(L, -1);
+    sandbox_.call(0, 1);
+    lua::TableReader t(L, -1, "toy.lua:1: toy");
+    Toy::Params p;
+    const Spacetime st = Minkowski{};
+    read_fields(t, p, &st);
+    t.finish();
+    lua_pop(L, 1);
+    return p;
+  }
+  lua::Sandbox sandbox_;
+};
+
+TEST_F(ToyReader, ReadsEitherKeyOfTheDeclaredPlacement) {
+  const Toy::Params at = read("{size = 2, position = {x = 3, y = 4, z = 5}}");
+  ASSERT_NE(at.placement.rest(), nullptr);
+  EXPECT_EQ(*at.placement.rest(), (Vec4{0.0, 3.0, 4.0, 5.0}));
+  const Toy::Params falling = read(
+      "{worldline = {__kind = 'worldline', spacetime = {__kind = 'minkowski'}, start = {x = 3, y = 4, z = 5}, "
+      "duration = 10}}");
+  ASSERT_NE(falling.placement.worldline(), nullptr);
+  EXPECT_EQ(falling.placement.worldline()->duration, 10.0);
+  using test::error_of;
+  EXPECT_EQ(error_of<lua::FieldError>([&] { read("{size = 2}"); }),
+            "toy.lua:1: toy: give either position (held at rest) or worldline (free fall)");
+  EXPECT_NE(error_of<lua::FieldError>([&] { read("{positon = {x = 3, y = 4, z = 5}}"); }).find("'position'"),
+            std::string::npos);
+  EXPECT_EQ(error_of<lua::FieldError>([&] { read("{position = {r = 3, theta = 90, phi = 0}}"); }),
+            "toy.lua:1: toy.position: positions in minkowski are Cartesian {x, y, z}");
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ inline Sphere::Params falling_sphere(const Spacetime& spacetime, const Vec4& sta
   w.where = "test";
   Sphere::Params sp;
   sp.radius = radius;
-  sp.worldline = w;
+  sp.placement.at = w;
   return sp;
 }
 
