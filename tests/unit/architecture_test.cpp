@@ -107,6 +107,39 @@ TEST(Architecture, DocsNameEveryEngineFolder) {
   }
 }
 
+// docs/architecture.md's table of the sample's path names, for each stage,
+// files that exist (a renamed or removed stage file fails here), and the
+// stages the path has; what each file may include is the folder order
+// above.
+TEST(Architecture, TheSamplePathTableNamesTheStageFiles) {
+  const fs::path root(LIGHTCONE_SOURCE_DIR);
+  std::ifstream in(root / "docs/architecture.md");
+  ASSERT_TRUE(in) << "docs/architecture.md";
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const std::size_t from = doc.find("### The path of a sample");
+  ASSERT_NE(from, std::string::npos) << "docs/architecture.md lacks the section 'The path of a sample'";
+  // The table: from its header row to the blank line after it.
+  const std::size_t head = doc.find("\n| stage |", from);
+  ASSERT_NE(head, std::string::npos) << "the section 'The path of a sample' has no table of stages";
+  const std::string section = doc.substr(head, doc.find("\n\n", head) - head);
+  std::set<std::string> stages;
+  static const std::regex row(R"(\n\| (\w+) \| ([^|]+) \|)");
+  static const std::regex file(R"(`((?:core|light|lua|image|stars|spacetime|observer|geodesic|worldline|assets|camera|sky|objects|observers|scene|render|script)/[\w/]+\.[ch]pp)`)");
+  for (auto r = std::sregex_iterator(section.begin(), section.end(), row); r != std::sregex_iterator(); ++r) {
+    const std::string stage = (*r)[1], files = (*r)[2];
+    if (stage == "stage") continue;  // the header
+    stages.insert(stage);
+    int named = 0;
+    for (auto f = std::sregex_iterator(files.begin(), files.end(), file); f != std::sregex_iterator(); ++f, ++named)
+      EXPECT_TRUE(fs::exists(root / "engine" / (*f)[1].str())) << "stage " << stage << ": engine/" << (*f)[1] << " does not exist";
+    EXPECT_GT(named, 0) << "stage " << stage << " names no file";
+  }
+  for (const char* s : {"plan", "generate", "trace", "shade", "reconstruct"})
+    EXPECT_TRUE(stages.count(s)) << "the sample-path table has no stage '" << s << "'";
+}
+
 // Engine code is named for what it is: a header named like a test
 // (*_test.hpp) is taken for one (objects/ had sphere_test.hpp and
 // step_test.hpp, the sphere's intersection and the step objects query).
