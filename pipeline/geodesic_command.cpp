@@ -53,9 +53,9 @@ int run_geodesic(const GeodesicCommand& cmd) {
     const auto& pb = spec.problem;
     fmt::print(stderr, "lightcone geodesic: {}{} samples, stop reason: {}{}, {} steps, max |g(u,u) drift| {:.2e}\n",
                specs.bundle ? fmt::format("ray {}: ", index) : "", path.samples.size(), to_string(path.reason),
-               path.reason == StopReason::reached
-                   ? fmt::format(" ({} {})", parameter_name(pb.stop_parameter), pb.stop_value)
-                   : "",
+               path.reason == StopReason::reached ? fmt::format(" ({} {})", parameter_name(pb.stop_parameter), pb.stop_value)
+               : path.reason == StopReason::escaped ? fmt::format(" (to {})", path.end)
+                                                    : "",
                path.steps, path.max_constraint_drift);
   }
   // Everything is computed before anything is written: a failure leaves no

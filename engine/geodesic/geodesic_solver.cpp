@@ -3,10 +3,14 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <string_view>
 #include <stdexcept>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
+
+#include <fmt/format.h>
 
 #include "geodesic/christoffel.hpp"
 
@@ -74,6 +78,23 @@ GeodesicSample sample_of(const S& st, const double y[], double orientation, bool
   return s;
 }
 
+// The slope of the state (x, p) as S::flight reads it, evaluated only if
+// it is read (most steps are well inside the escape radius).
+template <class S>
+struct LazySlope {
+  const S& st;
+  const std::array<double, 8>& y;
+  mutable std::optional<std::array<double, 8>> dy;
+  double operator()(std::size_t j) const {
+    if (!dy) {
+      Vec4 dx, dp;
+      st.hamiltonian_rhs({y[0], y[1], y[2], y[3]}, {y[4], y[5], y[6], y[7]}, dx, dp);
+      dy = std::array<double, 8>{dx[0], dx[1], dx[2], dx[3], dp[0], dp[1], dp[2], dp[3]};
+    }
+    return (*dy)[j];
+  }
+};
+
 struct GslDeleter {
   void operator()(gsl_odeiv2_step* p) const { gsl_odeiv2_step_free(p); }
   void operator()(gsl_odeiv2_control* p) const { gsl_odeiv2_control_free(p); }
@@ -110,7 +131,7 @@ GeodesicPath solve(const S& st, const GeodesicProblem& pb) {
 
   double s = 0.0;
   double h = 1e-3 * std::min(1.0, pb.stop_value);
-  const double R2 = pb.escape_radius * pb.escape_radius;
+  const FlightRadii radii{1e300, pb.escape_radius * pb.escape_radius};
   bool stopped = false;
   for (int k = 1; k < pb.samples && !stopped; ++k) {
     const double target = k == pb.samples - 1 ? pb.stop_value : pb.stop_value * k / (pb.samples - 1);
@@ -138,15 +159,14 @@ GeodesicPath solve(const S& st, const GeodesicProblem& pb) {
         stopped = true;
         break;
       }
-      const double rho2 = x[1] * x[1] + x[2] * x[2] + x[3] * x[3];
-      if (rho2 > R2) {
-        Vec4 dx, dp;
-        st.hamiltonian_rhs(x, {y[4], y[5], y[6], y[7]}, dx, dp);
-        if (x[1] * dx[1] + x[2] * dx[2] + x[3] * dx[3] > 0.0) {
-          path.reason = StopReason::escaped;
-          stopped = true;
-          break;
-        }
+      // The renderer's far-end rule (S::flight), with the slope in the
+      // integration parameter (only its direction matters).
+      const std::array<double, 8> state = {y[0], y[1], y[2], y[3], y[4], y[5], y[6], y[7]};
+      if (const Flight f = st.flight(StateComponents{&state}, LazySlope<S>{st, state}, radii); f.escaped) {
+        path.reason = StopReason::escaped;
+        path.end = S::ends[f.end].name;
+        stopped = true;
+        break;
       }
     }
     path.samples.push_back(sample_of(st, y.data(), orientation, transport));
@@ -166,7 +186,8 @@ GeodesicPath solve_geodesic(const GeodesicProblem& pb) {
     throw std::invalid_argument("geodesic: a null curve has no proper time; stop on affine or coordinate time");
   return std::visit(
       [&](const auto& st) {
-        if (st.inside_horizon(pb.x0)) throw std::invalid_argument("geodesic: the start lies inside a horizon");
+        if (const std::string_view why = st.why_no_observer(pb.x0); !why.empty())
+          throw std::invalid_argument(fmt::format("geodesic: the start lies {}", why));
         // GSL's default handler aborts the process; errors are handled by
         // status codes here.  The handler is process-wide, so switch it off once.
         static std::once_flag quiet;

@@ -7,6 +7,7 @@
 // shot), `lightcone geodesic`, and tight-tolerance reference renders.
 
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "core/constants.hpp"
@@ -50,13 +51,16 @@ struct GeodesicSample {
 struct GeodesicPath {
   std::vector<GeodesicSample> samples;
   StopReason reason = StopReason::reached;
+  // The spacetime's end (its name in S::ends) an escaped curve reached;
+  // empty otherwise.
+  std::string_view end;
   long steps = 0;
   double max_constraint_drift = 0.0;  // max |g(u,u) - g(u0,u0)| over the samples
 };
 
 // Integrates the problem.  Throws std::invalid_argument for an inconsistent
-// problem (start inside a horizon, samples < 2, stop_value <= 0, proper time
-// for a null curve).  Samples past an early stop are not produced: the last
+// problem (a start where no observer may stand, such as inside a horizon;
+// samples < 2, stop_value <= 0, proper time for a null curve).  Samples past an early stop are not produced: the last
 // sample is then the stop point itself.
 GeodesicPath solve_geodesic(const GeodesicProblem& problem);
 

@@ -3,7 +3,8 @@
 // chart, as run_rays (geodesic/ray_loop.hpp) integrates them: the right-hand
 // side is the spacetime's own (S::rhs, on doubles or lanes), a ray is
 // captured where S::captured holds (and ends on the capture surface), and
-// it has escaped beyond the escape radius moving outwards.  Templated on
+// it has escaped where the spacetime says it reached a far end (S::flight,
+// given the escape and free-flight radii).  Templated on
 // the concrete spacetime: no virtual call or allocation per step.
 
 #include <cmath>
@@ -31,14 +32,23 @@ enum class EscapeRule {
 struct RayOptions {
   StepControl control{default_ray_tolerance, default_ray_tolerance, 1e-12, 1e30};
   KerrChart kerr_chart = KerrChart::boyer_lindquist_mino;
+  // How far out a ray has reached a far end, in the spacetime's own radial
+  // measure (S::flight; the Cartesian radius of the trace chart for
+  // CartesianInfinity).
   double escape_radius = default_escape_radius;
   EscapeRule escape = EscapeRule::far_field;
-  // Beyond this coordinate radius, moving outwards, a ray meets nothing more
+  // Beyond this radius (the same measure), moving on, a ray meets nothing more
   // (the scene builder sets it from the objects and the holes; 0: never):
   // its tolerances are relaxed by free_flight_relaxation.
   double free_radius = 0.0;
   long max_steps = default_max_steps;
 };
+
+// The squared radii of a ray's options as S::flight takes them (a free
+// radius of 0: never free).
+inline FlightRadii flight_radii(const RayOptions& opt) {
+  return {opt.free_radius > 0.0 ? opt.free_radius * opt.free_radius : 1e300, opt.escape_radius * opt.escape_radius};
+}
 
 // Where within `step`, which ends captured (S::captured), the ray crossed
 // into the capture region: the data layers' event of a horizon pixel is on
@@ -71,11 +81,9 @@ struct HamiltonianPath {
   static constexpr RayState weights = {0.0, 1.0, 1.0, 1.0, 0.0, 1.0, 1.0, 1.0};
 
   const S& st;
-  double escape2, free2;  // squared escape and free-flight radii
+  FlightRadii radii;  // squared free-flight and escape radii
 
-  HamiltonianPath(const S& spacetime, const RayOptions& opt)
-      : st(spacetime), escape2(opt.escape_radius * opt.escape_radius),
-        free2(opt.free_radius > 0.0 ? opt.free_radius * opt.free_radius : 1e300) {}
+  HamiltonianPath(const S& spacetime, const RayOptions& opt) : st(spacetime), radii(flight_radii(opt)) {}
 
   // An idle lane's state: far out, moving on; its right-hand side is finite.
   static RayState idle() { return {0, 0, 1e3, 0, 1, 0, 1, 0}; }
@@ -99,9 +107,7 @@ struct HamiltonianPath {
   }
   template <class Y, class D>
   Flight flight(const Y& y, const D& dy) const {
-    const double rho2 = y(1) * y(1) + y(2) * y(2) + y(3) * y(3);
-    const bool outward = y(1) * dy(1) + y(2) * dy(2) + y(3) * dy(3) > 0.0;
-    return {rho2 > free2 && outward, rho2 > escape2 && outward};
+    return st.flight(y, dy, radii);
   }
 };
 

@@ -13,36 +13,35 @@
 //   3. a ray marked escaped ends;
 //   4. captured (Path::captured at the step's end): the ray ends on the
 //      capture surface (Path::capture_crossing locates it in the step);
-//   5. beyond the free-flight radius, moving outwards, its tolerances are
-//      relaxed once (Path::free_flight; free_flight_relaxation);
-//   6. beyond the escape radius, moving outwards, it has escaped;
+//   5. beyond the free-flight radius, moving on, its tolerances are
+//      relaxed once (Path::flight's free; free_flight_relaxation);
+//   6. at one of the spacetime's far ends (Path::flight: past the escape
+//      radius moving on, in the spacetime's own chart: spacetime/ends.hpp),
+//      it has escaped there;
 //   7. out of steps (RayOptions::max_steps).
 // A ray whose step size underflows gives up.
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 #include "core/constants.hpp"
 #include "geodesic/dormand_prince.hpp"
 #include "geodesic/stop_reason.hpp"
+#include "spacetime/ends.hpp"
 
 namespace lc {
 
 using RayState = std::array<double, 8>;
 using RayStep = DenseStep<8>;
 
-// Where a ray moving outwards is (rules 5 and 6 above).
-struct Flight {
-  bool free = false;     // beyond everything it could meet: relax its tolerances
-  bool escaped = false;  // beyond the escape radius: done
-};
-
 struct RayResult {
   StopReason reason = StopReason::gave_up;
   RayState y{};       // final state (at the hit for StopReason::hit, set by the visitor)
   double lambda = 0.0;
   long steps = 0;
+  std::uint8_t end = 0;  // the far end (an index in S::ends) an escaped ray reached
 };
 
 // Runs `count` rays, W at a time.  make_ray(k, slot) emplaces ray k into the
@@ -126,6 +125,7 @@ void run_rays(const Path& path, const StepControl& control, long max_steps, std:
     }
     if (f.escaped) {
       l.res.reason = StopReason::escaped;
+      l.res.end = f.end;
       finish(i, true);
     } else if (l.res.steps >= max_steps) {
       l.res.reason = StopReason::step_limit;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -54,11 +55,13 @@ Vec3 relative_velocity(const Mat4& g, const Tetrad& f, const Vec4& u);
 
 // Static observer at a scene point: time leg along ∂_t; spatial legs from the
 // polar basis {∂_r, ∂_theta, ∂_phi/sin(theta)} (regular on the axis).  Throws
-// inside a horizon or where ∂_t is not timelike (Kerr ergoregion).
+// where the spacetime says no observer may stand (S::why_no_observer:
+// inside a horizon) or where ∂_t is not timelike (Kerr ergoregion).
 template <class S>
 Tetrad static_polar_tetrad(const S& st, const Vec4& scene_point) {
   const Vec4 x = st.trace_from_scene(scene_point);
-  if (st.inside_horizon(x)) throw ObserverError("static observer: the position is inside a horizon");
+  if (const std::string_view why = st.why_no_observer(x); !why.empty())
+    throw ObserverError(fmt::format("static observer: the position is {}", why));
   const Mat4 g = st.metric(x);
   if (g[0][0] >= 0.0)
     throw ObserverError("static observer: no static observer exists here (inside the ergoregion, g_tt >= 0)");
@@ -86,7 +89,8 @@ Vec4 zamo_velocity(const S& st, const Vec4& x) {
 template <class S>
 Tetrad zamo_polar_tetrad(const S& st, const Vec4& scene_point) {
   const Vec4 x = st.trace_from_scene(scene_point);
-  if (st.inside_horizon(x)) throw ObserverError("ZAMO: the position is inside a horizon");
+  if (const std::string_view why = st.why_no_observer(x); !why.empty())
+    throw ObserverError(fmt::format("ZAMO: the position is {}", why));
   auto basis = st.polar_basis(scene_point);
   basis[0] = zamo_velocity(st, x);
   return orthonormalize(st.metric(x), basis, "ZAMO");
@@ -103,7 +107,8 @@ Tetrad tetrad_from_velocity(const S& st, const Vec4& scene_point, const Vec4& u)
 // Static observer of a Cartesian scene with legs (e_t, e_x, e_y, e_z).
 template <class S>
 Tetrad static_cartesian_tetrad(const S& st, const Vec4& x) {
-  if (st.inside_horizon(x)) throw ObserverError("static observer: the position is inside a horizon");
+  if (const std::string_view why = st.why_no_observer(x); !why.empty())
+    throw ObserverError(fmt::format("static observer: the position is {}", why));
   return orthonormalize(st.metric(x), {Vec4{1, 0, 0, 0}, Vec4{0, 1, 0, 0}, Vec4{0, 0, 1, 0}, Vec4{0, 0, 0, 1}},
                         "static observer");
 }

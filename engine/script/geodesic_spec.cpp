@@ -57,10 +57,11 @@ Start read_start(const S& st, lua::TableReader& t, bool polar) {
   }
   t.finish();
   s.trace = st.trace_from_scene(s.scene);
-  if (st.inside_horizon(s.trace)) {
-    if (polar)
-      throw lua::FieldError(fmt::format("{}: the start r = {} lies inside the horizon", t.context(), s.scene[1]));
-    throw lua::FieldError(fmt::format("{}: the start lies inside a horizon", t.context()));
+  // Its directions and velocities are given in a static (or ZAMO) frame:
+  // the start must be where an observer may stand.
+  if (const std::string_view why = st.why_no_observer(s.trace); !why.empty()) {
+    if (polar) throw lua::FieldError(fmt::format("{}: the start r = {} lies {}", t.context(), s.scene[1], why));
+    throw lua::FieldError(fmt::format("{}: the start lies {}", t.context(), why));
   }
   try {
     s.frame = velocity_reference_frame(st, s.scene);

@@ -17,11 +17,19 @@
 namespace lc {
 
 // No thin-disk theory is worked out for two holes (NoDiskTheory).
-class Dihole : public CartesianScene, public HamiltonianFromRhs<Dihole>, public NoDiskTheory {
+class Dihole : public CartesianScene,
+               public HamiltonianFromRhs<Dihole>,
+               public CartesianInfinity,
+               public ObserversOutsideHorizons<Dihole>,
+               public NoDiskTheory {
  public:
   static constexpr std::string_view name = "dihole";
   static constexpr SceneChart chart = SceneChart::cartesian;
   static constexpr bool stationary = true;  // static holes; see Kerr::stationary
+  // Infinity, and the two holes' horizons as one end (the capture rule does
+  // not tell them apart).
+  static constexpr std::array ends = {SpacetimeEnd{"infinity", EndKind::infinity},
+                                      SpacetimeEnd{"horizon", EndKind::horizon}};
   struct Params {
     double m1 = 0.0, m2 = 0.0, d = 1.0;
     static constexpr auto fields = std::tuple{

@@ -37,13 +37,18 @@ enum class KerrSchildSense { ingoing, outgoing };
 // dr*/dr = (r^2 + a^2) / Delta.  Integration constants in docs/physics.md.
 double kerr_radial_time(double M, double a, double r);
 
-class Kerr : public HamiltonianFromRhs<Kerr> {
+class Kerr : public HamiltonianFromRhs<Kerr>, public CartesianInfinity, public ObserversOutsideHorizons<Kerr> {
  public:
   static constexpr std::string_view name = "kerr";
   static constexpr SceneChart chart = SceneChart::polar;  // Boyer–Lindquist
   // The metric does not depend on t (in either chart): frames that differ
   // only by the observer's time may share rays (scene/still_key.hpp).
   static constexpr bool stationary = true;
+  // Infinity, reached in the Kerr–Schild trace chart by its Cartesian
+  // radius (and on the fast path where u = 1/r reaches 0), and the outer
+  // horizon (for M = 0 no ray reaches it).
+  static constexpr std::array ends = {SpacetimeEnd{"infinity", EndKind::infinity},
+                                      SpacetimeEnd{"horizon", EndKind::horizon}};
   struct Params {
     double mass = 0.0, spin = 0.0;
     static constexpr auto fields = std::tuple{

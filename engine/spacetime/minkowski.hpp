@@ -11,12 +11,14 @@ namespace lc {
 
 class Minkowski : public CartesianScene,
                   public HamiltonianFromRhs<Minkowski>,
+                  public CartesianInfinity,
                   public NoHorizon,
                   public NoDiskTheory {
  public:
   static constexpr std::string_view name = "minkowski";
   static constexpr SceneChart chart = SceneChart::cartesian;
   static constexpr bool stationary = true;  // see Kerr::stationary
+  static constexpr std::array ends = {SpacetimeEnd{"infinity", EndKind::infinity}};
   struct Params {
     static constexpr auto fields = std::tuple{};
   };

@@ -19,8 +19,17 @@
 //   hamiltonian_rhs(x, p, dx, dp)   the same for one ray, x and p apart
 //                             (HamiltonianFromRhs below writes it)
 //   metric, inverse_metric, metric_derivatives   in the trace chart
-//   captured(x), capture_margin(x), inside_horizon(x)   where rays stop
-//                             (none stop: NoHorizon below)
+//   ends                      static: its ends (spacetime/ends.hpp) — infinity,
+//                             a second infinity, a cosmological horizon, its
+//                             horizons; ends[0] is where the scene's sky is
+//   flight(y, dy, radii)      which far end a ray moving on has reached, in
+//                             its own chart (CartesianInfinity below: the one
+//                             infinity of a Cartesian-like chart)
+//   captured(x), capture_margin(x), inside_horizon(x)   where rays are captured
+//                             by a horizon (none are: NoHorizon below)
+//   why_no_observer(x)        why no observer may stand at the trace event x,
+//                             empty where one may (ObserversOutsideHorizons
+//                             below: anywhere outside a horizon)
 //   asymptotic_mass()         the mass seen from far away
 //   photon_reach()            a coordinate radius within which all of its
 //                             photon orbits lie (rays beyond it, moving out,
@@ -48,8 +57,11 @@
 //
 // What most spacetimes would write alike comes from bases they name
 // (below), each a choice the class states rather than a default it falls
-// into: HamiltonianFromRhs<S> (hamiltonian_rhs from rhs<double>), NoHorizon
-// (rays are never captured) and NoDiskTheory (no Novikov–Thorne flux).
+// into: HamiltonianFromRhs<S> (hamiltonian_rhs from rhs<double>),
+// CartesianInfinity (spacetime/ends.hpp: one infinity, by the trace chart's
+// Cartesian radius), NoHorizon (rays are never captured, observers stand
+// anywhere), ObserversOutsideHorizons<S> and NoDiskTheory (no
+// Novikov–Thorne flux).
 
 #include <array>
 #include <concepts>
@@ -62,6 +74,7 @@
 #include "core/tensor.hpp"
 #include "light/novikov_thorne.hpp"
 #include "spacetime/chart.hpp"
+#include "spacetime/ends.hpp"
 
 namespace lc {
 
@@ -76,11 +89,13 @@ struct SpacetimeExample {
 template <class S>
 concept SpacetimeModel =
     requires(const S& s, const typename S::Params& params, const Vec4& x, const Vec3& d, const std::array<double, 8>& y,
-             std::array<double, 8>& dy, const std::array<LaneVec, 8>& yl, std::array<LaneVec, 8>& dyl, Vec4& out) {
+             std::array<double, 8>& dy, const std::array<LaneVec, 8>& yl, std::array<LaneVec, 8>& dyl, Vec4& out,
+             const StateComponents& c, const FlightRadii& radii) {
       requires std::same_as<std::remove_cv_t<decltype(S::name)>, std::string_view>;
       requires std::same_as<std::remove_cv_t<decltype(S::chart)>, SceneChart>;
       requires std::same_as<std::remove_cv_t<decltype(S::stationary)>, bool>;
       requires HasFields<typename S::Params>;
+      requires ends_are_well_formed<S>();
       S(params);
       { s.params() } -> std::same_as<typename S::Params>;
       s.rhs(y, dy);
@@ -92,6 +107,8 @@ concept SpacetimeModel =
       { s.captured(x) } -> std::same_as<bool>;
       { s.capture_margin(x) } -> std::same_as<double>;
       { s.inside_horizon(x) } -> std::same_as<bool>;
+      { s.flight(c, c, radii) } -> std::same_as<Flight>;
+      { s.why_no_observer(x) } -> std::same_as<std::string_view>;
       { s.asymptotic_mass() } -> std::same_as<double>;
       { s.photon_reach() } -> std::same_as<double>;
       { s.far_field_radius() } -> std::same_as<double>;
@@ -128,6 +145,16 @@ struct NoHorizon {
   bool captured(const Vec4&) const { return false; }
   double capture_margin(const Vec4&) const { return 1.0; }
   bool inside_horizon(const Vec4&) const { return false; }
+  std::string_view why_no_observer(const Vec4&) const { return {}; }
+};
+
+// Where observers of the CRTP class S may stand: anywhere outside its
+// horizons (S::inside_horizon).
+template <class S>
+struct ObserversOutsideHorizons {
+  std::string_view why_no_observer(const Vec4& x) const {
+    return static_cast<const S&>(*this).inside_horizon(x) ? "inside a horizon" : std::string_view{};
+  }
 };
 
 // A spacetime with no thin-disk theory worked out: a glowing disk is

@@ -47,8 +47,8 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
   std::visit(
       [&](const auto& st) {
         const Vec4 x0 = st.trace_from_scene(spec.start);
-        if (st.inside_horizon(x0))
-          throw std::invalid_argument(fmt::format("{}: the worldline starts inside a horizon", spec.where));
+        if (const std::string_view why = st.why_no_observer(x0); !why.empty())
+          throw std::invalid_argument(fmt::format("{}: the worldline starts {}", spec.where, why));
         Tetrad frame;
         try {
           frame = boost(velocity_reference_frame(st, spec.start), spec.velocity);

@@ -27,7 +27,7 @@ expect_error unknown_kind "spacetime: not a spacetime" -- "$LIGHTCONE" geodesic 
 
 spec inside "local lc = require 'lightcone'
 return {spacetime = lc.kerr{mass = 1, spin = 0.5}, curve = 'timelike', start = {r = 1.5, theta = 90, phi = 0}, stop = {proper_time = 1}}"
-expect_error inside "inside.lua.start: the start r = 1.5 lies inside the horizon" -- "$LIGHTCONE" geodesic inside.lua -o out.csv
+expect_error inside "inside.lua.start: the start r = 1.5 lies inside a horizon" -- "$LIGHTCONE" geodesic inside.lua -o out.csv
 
 spec dihole_point "local lc = require 'lightcone'
 return {spacetime = lc.dihole{m1 = 0.4, m2 = 0.4}, curve = 'timelike', start = {x = 0, y = 0, z = 1}, stop = {proper_time = 1}}"

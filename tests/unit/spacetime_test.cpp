@@ -350,17 +350,20 @@ TEST(Minkowski, HamiltonEquations) {
 }
 
 // A toy spacetime (flat, written in the test) that writes only its metric,
-// rhs and far field: hamiltonian_rhs, the capture rule and the disk's flux
-// come from the bases it names (spacetime/model.hpp), and it satisfies the
-// concept a registered spacetime must.
+// rhs, ends and far field: hamiltonian_rhs, the far-end rule, the capture
+// rule and the disk's flux come from the bases it names
+// (spacetime/model.hpp), and it satisfies the concept a registered
+// spacetime must.
 class ToyFlat : public CartesianScene,
                 public HamiltonianFromRhs<ToyFlat>,
+                public CartesianInfinity,
                 public NoHorizon,
                 public NoDiskTheory {
  public:
   static constexpr std::string_view name = "toy_flat";
   static constexpr SceneChart chart = SceneChart::cartesian;
   static constexpr bool stationary = true;
+  static constexpr std::array ends = {SpacetimeEnd{"infinity", EndKind::infinity}};
   struct Params {
     static constexpr auto fields = std::tuple{};
   };
@@ -394,6 +397,7 @@ TEST(Spacetime, ANewSpacetimeNeedNotWriteTheAdapterNorTheNoHorizonNorTheNoDiskDe
   EXPECT_FALSE(st.captured({0, 0, 0, 0}));
   EXPECT_GT(st.capture_margin({0, 0, 0, 0}), 0.0);
   EXPECT_FALSE(st.inside_horizon({0, 0, 0, 0}));
+  EXPECT_TRUE(st.why_no_observer({0, 0, 0, 0}).empty());
   EXPECT_FALSE(st.thin_disk_flux());
 }
 
