@@ -29,25 +29,27 @@ std::string json_float(float v) { return std::isfinite(v) ? fmt::format("{}", v)
 
 // What the ray through pixel (i, j) of frame f found, for people: one line
 // (the layers to 9 digits, the colour to 4).
-std::string text_report(int f, int i, int j, const RaySample& s) {
+// `end`: the spacetime's end a sky ray escaped to (empty for other rays).
+std::string text_report(int f, int i, int j, const RaySample& s, std::string_view end) {
   std::string values;
   for (const LayerSpec& l : layers) values += fmt::format("{}{} {:.9g}", values.empty() ? "" : ", ", l.name, l.value(s));
-  return fmt::format("trace: frame {} pixel {},{}: hit {}, stop reason {}, {} steps; {}; colour {:.4g} {:.4g} {:.4g}\n", f,
-                     i, j, hit_kind_name(s.kind), to_string(s.reason), s.steps, values, s.color[0],
-                     s.color[1], s.color[2]);
+  return fmt::format("trace: frame {} pixel {},{}: hit {}{}, stop reason {}, {} steps; {}; colour {:.4g} {:.4g} {:.4g}\n",
+                     f, i, j, hit_kind_name(s.kind), end.empty() ? "" : fmt::format(" at {}", end), to_string(s.reason),
+                     s.steps, values, s.color[0], s.color[1], s.color[2]);
 }
 
 // The same as one JSON object, for scripts: every number exact (layers and
 // colour as the floats the EXR holds).
-std::string json_report(int f, int i, int j, const RaySample& s) {
+std::string json_report(int f, int i, int j, const RaySample& s, std::string_view end) {
   std::string values;
   for (const LayerSpec& l : layers)
     values += fmt::format("{}{}: {}", values.empty() ? "" : ", ", json_string(std::string(l.name)), json_float(l.value(s)));
   return fmt::format(
-      "{{\"frame\": {}, \"pixel\": [{}, {}], \"hit\": {}, \"stop_reason\": {}, \"steps\": {}, \"layers\": {{{}}}, "
-      "\"colour\": [{}, {}, {}]}}\n",
-      f, i, j, json_string(std::string(hit_kind_name(s.kind))), json_string(std::string(to_string(s.reason))), s.steps,
-      values, json_float(s.color[0]), json_float(s.color[1]), json_float(s.color[2]));
+      "{{\"frame\": {}, \"pixel\": [{}, {}], \"hit\": {}, \"end\": {}, \"stop_reason\": {}, \"steps\": {}, "
+      "\"layers\": {{{}}}, \"colour\": [{}, {}, {}]}}\n",
+      f, i, j, json_string(std::string(hit_kind_name(s.kind))), end.empty() ? "null" : json_string(std::string(end)),
+      json_string(std::string(to_string(s.reason))), s.steps, values, json_float(s.color[0]), json_float(s.color[1]),
+      json_float(s.color[2]));
 }
 
 }  // namespace
@@ -69,6 +71,7 @@ int run_trace(const TraceCommand& cmd) {
   // lambda = -(affine parameter of the backward ray), tangent future-directed.
   GeodesicPath path;
   Spacetime st_out = Minkowski{};
+  std::string_view end;  // the end a sky ray escaped to
   const RaySample s = std::visit(
       [&](const auto& sc) {
         st_out = sc.spacetime;
@@ -84,10 +87,12 @@ int run_trace(const TraceCommand& cmd) {
         RaySample r = trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5),
                                    [&](const RayState& y, double sigma) { record(y, sigma); });
         record(r.end, r.lambda_end);
+        if (r.kind == HitKind::sky) end = std::decay_t<decltype(sc.spacetime)>::ends[r.spacetime_end].name;
         return r;
       },
       scene);
   path.reason = s.reason;
+  path.end = end;
   path.steps = s.steps;
   // With --json standard output is the report's, so the path goes only
   // to a file named with -o.
@@ -98,9 +103,9 @@ int run_trace(const TraceCommand& cmd) {
   }
   // Every data layer's value (render/layers.hpp), as the pixel's EXR holds it.
   if (cmd.json)
-    write_output(std::nullopt, json_report(f, i, j, s));
+    write_output(std::nullopt, json_report(f, i, j, s, end));
   else
-    fmt::print(stderr, "{}", text_report(f, i, j, s));
+    fmt::print(stderr, "{}", text_report(f, i, j, s, end));
   return 0;
 }
 

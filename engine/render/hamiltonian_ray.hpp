@@ -125,10 +125,12 @@ class HamiltonianRay {
     fill_event(x, out);
     if (res.reason == StopReason::horizon) {
       out.kind = HitKind::horizon;
+      out.spacetime_end = horizon_end;
       return;
     }
     if (res.reason != StopReason::escaped) return;  // gave up: black, kind 4
     out.kind = HitKind::sky;
+    out.spacetime_end = res.end;
     sky_direction(sc_.spacetime, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out.sky_theta, out.sky_phi);
     out.g = 1.0 / res.y[4];  // the source at rest far away: p.u = p_t
     // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
@@ -192,6 +194,7 @@ class HamiltonianRay {
   std::size_t winner_ = no_object;  // the object hit
   bool track_windows_ = true;
   static constexpr std::size_t no_object = static_cast<std::size_t>(-1);
+  static constexpr auto horizon_end = static_cast<std::uint8_t>(end_index<S>(EndKind::horizon));
   ObjectWarmStarts warm_ = no_warm_starts();  // per object (the first few), carried along the ray
 };
 

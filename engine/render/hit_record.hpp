@@ -47,6 +47,9 @@ struct HitRecord {
   // Where a sky ray went at infinity: theta from +z, phi in [0, 2 pi)
   // (theta < 0: not the sky).
   double sky_theta = -1.0, sky_phi = 0.0;
+  // Which of the spacetime's ends (S::ends, spacetime/ends.hpp) a sky ray
+  // escaped to or a horizon ray was captured by.
+  std::uint8_t spacetime_end = 0;
   int order = 0;  // equatorial-plane crossings before the end
   long steps = 0;
   StopReason reason = StopReason::gave_up;

@@ -143,10 +143,12 @@ class MinoRay {
     }
     if (res.reason == StopReason::horizon) {
       out.kind = HitKind::horizon;
+      out.spacetime_end = static_cast<std::uint8_t>(end_index<Kerr>(EndKind::horizon));
       return;
     }
     if (res.reason != StopReason::escaped) return;  // gave up: black, kind 4
     out.kind = HitKind::sky;
+    out.spacetime_end = 0;  // Kerr's one infinity: u = 1/r reached 0
     const double n2 = norm3(direction_);
     out.sky_theta = std::acos(std::clamp(direction_[2] / n2, -1.0, 1.0));
     double sphi = std::atan2(direction_[1], direction_[0]);

@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -29,7 +30,11 @@ struct SceneIn {
   // unless a sample has an eye or a time of its own (render/ray_start.hpp).
   Eye eye{};
   Camera camera;
+  // What a ray that escaped sees: `sky` at the spacetime's first end
+  // (S::ends[0]) and at every far end without a sky of its own in
+  // end_skies (end index, sky).  sky_of picks it.
   Sky sky;
+  std::vector<std::pair<std::size_t, Sky>> end_skies{};
   ObjectLists objects;
   RayOptions rays;
   // still_key() of the frame's scene where the spacetime is stationary, else
@@ -40,6 +45,12 @@ struct SceneIn {
   // The observer as a path: the eye at a time offset within the frame
   // (observers/observers.hpp); observer_path.at(0) is `eye`, bit for bit.
   ObserverPath<S> observer_path{};
+
+  const Sky& sky_of(std::size_t end) const {
+    for (const auto& [e, s] : end_skies)
+      if (e == end) return s;
+    return sky;
+  }
 };
 
 // A scene in any registered spacetime (spacetime/spacetime.hpp).

@@ -26,7 +26,7 @@ double free_radius(const SceneIn<S>& sc) {
 
 template <class S>
 Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResources& res, const RayOptions& rays) {
-  SceneIn<S> sc{st, {}, Camera(fs.camera, width, height), Sky(fs.sky, res), {}, rays};
+  SceneIn<S> sc{st, {}, Camera(fs.camera, width, height), Sky(fs.sky, res), {}, {}, rays};
   if (fs.light.model != LightModel::geometric) sc.light = Light(fs.light, res.spectral_shift());
   // The observer's kind places it and checks where it stands; the frame's
   // own eye is its path at offset 0.

@@ -45,23 +45,23 @@ try:
     report = json.loads(open(sys.argv[1]).read())  # the whole output: one object
 except ValueError as e:
     sys.exit(f"not one JSON object: {e}")
-m = re.match(r"trace: frame (\d+) pixel (\d+),(\d+): hit (.+?), stop reason (\S+), (\d+) steps; (.*); colour (\S+) (\S+) (\S+)$", text.strip())
+m = re.match(r"trace: frame (\d+) pixel (\d+),(\d+): hit (\S+)(?: at (.+?))?, stop reason (\S+), (\d+) steps; (.*); colour (\S+) (\S+) (\S+)$", text.strip())
 if not m:
     sys.exit(f"text report not as expected: {text}")
 f32 = lambda v: struct.unpack("f", struct.pack("f", float(v)))[0]
-want = {"frame": int(m[1]), "pixel": [int(m[2]), int(m[3])], "hit": m[4], "stop_reason": m[5], "steps": int(m[6])}
+want = {"frame": int(m[1]), "pixel": [int(m[2]), int(m[3])], "hit": m[4], "end": m[5], "stop_reason": m[6], "steps": int(m[7])}
 for k, v in want.items():
     if report.get(k) != v:
         sys.exit(f"{k}: JSON {report.get(k)!r}, text {v!r}")
-layers = dict(p.split(" ") for p in m[7].split(", "))
+layers = dict(p.split(" ") for p in m[8].split(", "))
 if list(report["layers"]) != list(layers):
     sys.exit(f"layers: JSON {list(report['layers'])}, text {list(layers)}")
 for k, v in layers.items():  # the text's 9 digits give the float back
     if f32(v) != f32(report["layers"][k]):
         sys.exit(f"{k}: JSON {report['layers'][k]}, text {v}")
-for a, b in zip(report["colour"], m.groups()[7:]):
+for a, b in zip(report["colour"], m.groups()[8:]):
     if abs(a - float(b)) > 5e-4 * max(1, abs(a)):
-        sys.exit(f"colour: JSON {report['colour']}, text {m.groups()[7:]}")
+        sys.exit(f"colour: JSON {report['colour']}, text {m.groups()[8:]}")
 # docs/cli.md shows this very output.
 if json.dumps(report) not in open(sys.argv[3]).read():
     sys.exit(f"docs/cli.md's trace --json example is not what the binary prints: {json.dumps(report)}")
