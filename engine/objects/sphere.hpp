@@ -23,6 +23,7 @@
 #include "core/fields.hpp"
 #include "core/hit_kind.hpp"
 #include "core/json.hpp"
+#include "objects/bounded_body.hpp"
 #include "objects/surface_point.hpp"
 #include "objects/sphere_body.hpp"
 #include "objects/sphere_intersection.hpp"
@@ -93,38 +94,18 @@ class Sphere : public SphereBody {
   }
 
   // How far from the origin (coordinates) anything of it ever is.
-  double reach(double) const {
-    double r = 0.0;
-    for (int k = 0; k < 3; ++k) r = std::max({r, std::abs(life_lo[k]) + tube_radius(), std::abs(life_hi[k]) + tube_radius()});
-    return r;
-  }
+  double reach(double) const { return body_reach(*this); }
 
   // The first entry into it within the test's step, if any and before the
   // earliest hit found so far.  A step that comes near where its centre
-  // ever is narrows the ray's reuse window to the time the centre needs to
-  // reach the step's tube: a frame shifted by dt in time finds the centre
-  // within top_speed |dt| of where it is in this one.  A step that may
-  // enter the tube closes it (for one at rest too, though only for
-  // rounding: the test works in absolute coordinate time, so shifted in
-  // time a grazing hit could flip).
+  // ever is narrows the ray's reuse window (narrow_reuse_window,
+  // objects/bounded_body.hpp).
   template <class S>
   std::optional<double> first_hit(const S& st, StepTest& t, std::size_t index) const {
-    const detail::SphereNear near = detail::sphere_near_step(*this, t.step());
-    if (near.reach == detail::SphereReach::never) return std::nullopt;
-    if (t.reusable() && !t.tracks_windows()) {
-      t.limit_reuse_window(0.0);
-    } else if (t.reusable()) {
-      // The hull's box first (a lower bound, no square roots past one):
-      // only where it would narrow the window does the chord's distance
-      // sharpen it.
-      auto window = [&](double clear) {
-        return clear <= 0.0 ? 0.0 : top_speed > 0.0 ? clear / top_speed : std::numeric_limits<double>::infinity();
-      };
-      const double box = detail::hull_box_clearance(t.hull(), *this, near.lo, near.hi);
-      if (window(box) < t.reuse_window())
-        t.limit_reuse_window(window(detail::step_clearance(t.step(), t.hull(), *this, near.lo, near.hi)));
-    }
-    if (near.reach == detail::SphereReach::not_now) return std::nullopt;
+    const BodyNear near = body_near_step(*this, t.step());
+    if (near.reach == BodyReach::never) return std::nullopt;
+    narrow_reuse_window(*this, t, near);
+    if (near.reach == BodyReach::not_now) return std::nullopt;
     const auto l = detail::sphere_entry(st, *this, t.step(), t.hull(), near.lo, near.hi, t.warm_start(index));
     if (l && *l < t.best()) return l;
     return std::nullopt;

@@ -1,8 +1,8 @@
 #pragma once
 // Whether and where a ray step meets a sphere riding its worldline (the
 // paper's spacetime tube): the simultaneity of a ray point with the
-// sphere's centre, the cheap box tests every step runs and the sampling of
-// |xi|^2 - R^2 along what they let through.  For objects/sphere.hpp.
+// sphere's centre and the sampling of |xi|^2 - R^2 along the steps that
+// the cheap box tests of objects/bounded_body.hpp let through.  For objects/sphere.hpp.
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +12,7 @@
 
 #include "geodesic/crossing.hpp"
 #include "geodesic/ray_loop.hpp"
+#include "objects/bounded_body.hpp"
 #include "objects/sphere_body.hpp"
 #include "objects/step_query.hpp"
 
@@ -134,122 +135,8 @@ Vec3 sphere_local(const S& st, const SphereBody& sphere, const Vec4& X) {
   return {contract(g, d, f.frame.e[1]), contract(g, d, f.frame.e[2]), contract(g, d, f.frame.e[3])};
 }
 
-inline bool boxes_overlap(const Vec3& alo, const Vec3& ahi, const Vec3& blo, const Vec3& bhi) {
-  for (int k = 0; k < 3; ++k)
-    if (ahi[k] < blo[k] || bhi[k] < alo[k]) return false;
-  return true;
-}
-
-// How near a step may come to a sphere, by sphere_near_step's boxes.
-enum class SphereReach {
-  never,    // clear of everywhere the centre ever is: the sphere's motion cannot matter
-  not_now,  // clear of where the centre is over the step's time range
-  maybe,    // sphere_entry must look
-};
-
-struct SphereNear {
-  SphereReach reach;
-  Vec3 lo, hi;  // unless never: the centre's box over the step's time range
-};
-
-// The cheap first half of sphere_entry, for every step of every ray.  First
-// against the box the centre never leaves, grown by the tube's radius and half the chord
-// (a step strays from its chord by less than that), then against the
-// centre's box over the step's time range (a table lookup); neither
-// evaluates the step's dense output inside.
-[[gnu::always_inline]] inline SphereNear sphere_near_step(const SphereBody& sphere, const RayStep& step) {
-  const RayState& a = step.start();
-  const double l1 = step.t0 + step.h;
-  Vec3 rlo, rhi, clo, chi;
-  double chord1 = 0.0, b[4];  // the chord's L1 length: no square root, and >= its length
-  for (int k = 0; k < 4; ++k) b[k] = step.component(k, l1);
-  for (int k = 0; k < 3; ++k) chord1 += std::abs(b[k + 1] - a[k + 1]);
-  const double far = sphere.tube_radius() + 0.5 * chord1;
-  for (int k = 0; k < 3; ++k) {
-    rlo[k] = std::min(a[k + 1], b[k + 1]);
-    rhi[k] = std::max(a[k + 1], b[k + 1]);
-    clo[k] = sphere.life_lo[k] - far;
-    chi[k] = sphere.life_hi[k] + far;
-  }
-  SphereNear out{SphereReach::never, {}, {}};
-  if (!boxes_overlap(rlo, rhi, clo, chi)) return out;
-  sphere.bounds(a[0], b[0], out.lo, out.hi);
-  for (int k = 0; k < 3; ++k) {
-    clo[k] = out.lo[k] - far;
-    chi[k] = out.hi[k] + far;
-  }
-  out.reach = boxes_overlap(rlo, rhi, clo, chi) ? SphereReach::maybe : SphereReach::not_now;
-  return out;
-}
-
-// The distance from the segment a + s (b - a), s in [0, 1], to the box
-// [lo, hi].  Its square is convex and quadratic between the s where the
-// segment crosses a face's plane, so it is minimised piece by piece.
-inline double segment_box_distance(const Vec3& a, const Vec3& b, const Vec3& lo, const Vec3& hi) {
-  double cuts[8] = {0.0, 1.0};
-  int n = 2;
-  for (int k = 0; k < 3; ++k) {
-    const double d = b[k] - a[k];
-    if (d == 0.0) continue;
-    for (const double face : {lo[k], hi[k]}) {
-      const double s = (face - a[k]) / d;
-      if (s > 0.0 && s < 1.0) cuts[n++] = s;
-    }
-  }
-  std::sort(cuts, cuts + n);
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i + 1 < n; ++i) {
-    // On [s0, s1] each axis is below, inside or above the box throughout:
-    // the squared distance is A s^2 + B s + C there.
-    const double s0 = cuts[i], s1 = cuts[i + 1], mid = 0.5 * (s0 + s1);
-    double A = 0.0, B = 0.0, C = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      const double d = b[k] - a[k], p = a[k] + mid * d;
-      const double face = p < lo[k] ? lo[k] : p > hi[k] ? hi[k] : p;
-      if (face == p) continue;
-      const double e = a[k] - face;  // offset from the face at s = 0
-      A += d * d;
-      B += 2.0 * d * e;
-      C += e * e;
-    }
-    const double s = A > 0.0 ? std::clamp(-B / (2.0 * A), s0, s1) : (B > 0.0 ? s0 : s1);
-    best = std::min(best, std::max(0.0, (A * s + B) * s + C));
-  }
-  return std::sqrt(best);
-}
-
-// How far (coordinates) the step's hull box stays outside the tube around
-// the box [lo, hi] of centres, at least: <= 0 where it may enter it.
-inline double hull_box_clearance(const StepHull& h, const SphereBody& sphere, const Vec3& lo, const Vec3& hi) {
-  double gap2 = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    const double gap = std::max({lo[k] - h.hi[k], h.lo[k] - hi[k], 0.0});
-    gap2 += gap * gap;
-  }
-  return std::sqrt(gap2) - sphere.tube_radius() - h.margin;
-}
-
-// The same, sharper: the step as its chord, strayed from by at most the
-// hull's margin.
-inline double step_clearance(const RayStep& step, const StepHull& h, const SphereBody& sphere, const Vec3& lo,
-                             const Vec3& hi) {
-  const RayState& a = step.start();
-  return segment_box_distance({a[1], a[2], a[3]}, {h.end[1], h.end[2], h.end[3]}, lo, hi) - sphere.tube_radius() -
-         h.margin;
-}
-
-// grow_by_reach grows a box of centres in place by the tube's radius and
-// the step's bulge (the tube sphere_entry clips the step to).
-inline void grow_by_reach(const StepHull& h, const SphereBody& sphere, Vec3& lo, Vec3& hi) {
-  const double grow = sphere.tube_radius() + h.margin;
-  for (int k = 0; k < 3; ++k) {
-    lo[k] -= grow;
-    hi[k] += grow;
-  }
-}
-
-// First entry of the ray into the sphere within a step that sphere_near_step
-// let through, if any: the affine parameter of the crossing.  The spacetime
+// First entry of the ray into the sphere within a step that body_near_step
+// (objects/bounded_body.hpp) let through, if any: the affine parameter of the crossing.  The spacetime
 // tube (the centre's box [clo, chi] over the step's time range,
 // grown by the tube's radius and the step's bulge) rejects most such steps before any
 // sampling.

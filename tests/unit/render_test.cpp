@@ -487,37 +487,6 @@ TEST(Render, SphereTubeHoldsTheSphere) {
   }
 }
 
-// The reuse window's distance from a step's chord to a box of centres,
-// against a brute-force minimum over the segment, for segments that cross,
-// graze and miss the box.
-TEST(Render, SegmentToBoxDistanceIsTheClosestApproach) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> coord(-6.0, 6.0);
-  const Vec3 lo{-1.0, -0.5, 0.0}, hi{2.0, 0.5, 1.5};
-  auto to_box = [&](const Vec3& p) {
-    double d2 = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      const double g = std::max({lo[k] - p[k], p[k] - hi[k], 0.0});
-      d2 += g * g;
-    }
-    return std::sqrt(d2);
-  };
-  for (int n = 0; n < 2000; ++n) {
-    Vec3 a{coord(rng), coord(rng), coord(rng)}, b{coord(rng), coord(rng), coord(rng)};
-    if (n % 4 == 0) b[1] = a[1];  // parallel to a face
-    double brute = std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= 20000; ++i) {
-      const double s = i / 20000.0;
-      brute = std::min(brute, to_box({a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), a[2] + s * (b[2] - a[2])}));
-    }
-    // The brute force samples every 1/20000 of a segment at most ~21 long.
-    const double d = detail::segment_box_distance(a, b, lo, hi);
-    EXPECT_LE(d, brute + 1e-12) << n;
-    EXPECT_GE(d, brute - 1.1e-3) << n;
-  }
-  EXPECT_EQ(detail::segment_box_distance({0.5, 0, 0.5}, {5, 5, 5}, lo, hi), 0.0);  // starts inside
-}
-
 TEST(Render, MovingSphereKeepsACircularOutline) {
   // Penrose (1959), Terrell (1959): a sphere moving at any speed is seen with
   // a circular outline, although in the frame of the observer it is
