@@ -94,8 +94,12 @@ TEST(BoundedBody, AStepCalledClearNeverMeetsTheBall) {
       const BodyNear near = body_near_step(ball, step);
       ++counts[static_cast<int>(near.reach)];
       const double clear = brute_clearance(ball, step);
-      if (near.reach != BodyReach::maybe) EXPECT_GT(clear, -1e-9) << n;
-      if (clear < -1e-2) EXPECT_EQ(near.reach, BodyReach::maybe) << n;
+      if (near.reach != BodyReach::maybe) {
+        EXPECT_GT(clear, -1e-9) << n;
+      }
+      if (clear < -1e-2) {
+        EXPECT_EQ(near.reach, BodyReach::maybe) << n;
+      }
     }
   }
   // The draw reaches all three answers, so each branch was checked.
@@ -108,48 +112,38 @@ TEST(BoundedBody, AStepCalledClearNeverMeetsTheBall) {
 // speed, to come within the ball's radius of the step; infinite for a ball
 // at rest that the step passes clear of, 0 for a step that may enter it.
 TEST(BoundedBody, TheReuseWindowIsTheTimeTheBodyNeedsToReachTheStep) {
-  // A step along y at x = 5, from t = 0 back to t = -4; the ball's centre
-  // is on the x axis within [0, 1] at all times (speed 0.05 over 20 M).
-  const RayStep step = straight_step({0, 5, -2, 0}, {-4, 5, 2, 0});
-  ObjectWarmStarts warm = no_warm_starts();
-  {
-    const ToyBall moving({0.5, 0, 0}, {0.05, 0, 0}, 1.0);
+  // A step along y at x = 3.6, from t = 0 back to t = -4; the moving
+  // ball's centre is on the x axis within [0, 1] at all times (speed 0.05
+  // over 20 M), so the step comes near where it ever is (within its radius
+  // and half the chord) but not where it is over the step's times.
+  const RayStep step = straight_step({0, 3.6, -2, 0}, {-4, 3.6, 2, 0});
+  // The window the step leaves after the helper saw `ball` (from "unlimited").
+  auto window_after = [&](const ToyBall& ball, bool tracks_windows) {
+    ObjectWarmStarts warm = no_warm_starts();
     float window = 1e30f;
-    StepTest t(step, window, true, warm);
-    const BodyNear near = body_near_step(moving, step);
-    ASSERT_NE(near.reach, BodyReach::never);
-    narrow_reuse_window(moving, t, near);
-    // Over the step's times the centre is within x in [0.3, 0.5]: the step
-    // is 4.5 away from that box, the ball's radius 1 of it, the straight
-    // step strays by nothing (its margin is rounding); the window is a
-    // float rounded down (an ulp at 70 is 7.6e-6).
-    EXPECT_NEAR(window, (4.5 - 1.0) / 0.05, 2e-5);
-    EXPECT_GT(brute_clearance(moving, step), 0.0);
-  }
-  {
-    const ToyBall at_rest({3.0, 0, 0}, {0, 0, 0}, 1.0);
-    float window = 1e30f;
-    StepTest t(step, window, true, warm);
-    narrow_reuse_window(at_rest, t, body_near_step(at_rest, step));
-    EXPECT_EQ(window, 1e30f);
-  }
-  {
-    const ToyBall touching({4.5, 0, 0}, {0, 0, 0}, 1.0);
-    float window = 1e30f;
-    StepTest t(step, window, true, warm);
-    const BodyNear near = body_near_step(touching, step);
-    EXPECT_EQ(near.reach, BodyReach::maybe);
-    narrow_reuse_window(touching, t, near);
-    EXPECT_EQ(window, 0.0f);
-  }
-  {
-    // A render that does not track windows closes it at any near step.
-    const ToyBall moving({0.5, 0, 0}, {0.05, 0, 0}, 1.0);
-    float window = 1e30f;
-    StepTest t(step, window, false, warm);
-    narrow_reuse_window(moving, t, body_near_step(moving, step));
-    EXPECT_EQ(window, 0.0f);
-  }
+    StepTest t(step, window, tracks_windows, warm);
+    narrow_reuse_window(ball, t, body_near_step(ball, step));
+    return window;
+  };
+  const ToyBall moving({0.5, 0, 0}, {0.05, 0, 0}, 1.0);
+  ASSERT_EQ(body_near_step(moving, step).reach, BodyReach::not_now);
+  // Over the step's times the centre is within x in [0.3, 0.5]: the step
+  // is 3.1 away from that box, the ball's radius 1 of it, the straight
+  // step strays by nothing (its margin is rounding); the window is a
+  // float rounded down (an ulp at 42 is 3.8e-6).
+  EXPECT_NEAR(window_after(moving, true), (3.1 - 1.0) / 0.05, 2e-5);
+  EXPECT_GT(brute_clearance(moving, step), 0.0);
+
+  const ToyBall at_rest({1.0, 0, 0}, {0, 0, 0}, 1.0);  // near, but clear: a body at rest never comes
+  ASSERT_NE(body_near_step(at_rest, step).reach, BodyReach::never);
+  EXPECT_EQ(window_after(at_rest, true), 1e30f);
+
+  const ToyBall touching({3.1, 0, 0}, {0, 0, 0}, 1.0);
+  EXPECT_EQ(body_near_step(touching, step).reach, BodyReach::maybe);
+  EXPECT_EQ(window_after(touching, true), 0.0f);
+
+  // A render that does not track windows closes it at any near step.
+  EXPECT_EQ(window_after(moving, false), 0.0f);
 }
 
 // The reuse window's distance from a step's chord to a box of centres,

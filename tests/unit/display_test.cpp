@@ -33,7 +33,7 @@ TEST(Display, ExposureAndCurves) {
 }
 
 TEST(Display, AppliedToAFrameKeepsItsSizeAndDropsTheLayers) {
-  FrameImage f{2, 1, {0.5f, 1.0f, 2.0f, 4.0f, 0.0f, 0.25f}, {{"hit.r", {1.0f, 2.0f}}}};
+  FrameImage f{2, 1, {0.5f, 1.0f, 2.0f, 4.0f, 0.0f, 0.25f}, {{"hit.r", {1.0f, 2.0f}}}, {}, {}};
   const FrameImage d = DisplayTransform{1.0, ToneCurve::clip}.applied(f);
   EXPECT_EQ(d.width, 2);
   EXPECT_EQ(d.height, 1);

@@ -235,7 +235,7 @@ TEST(DurableFile, AFifoIsWrittenInPlace) {
 TEST(DurableFile, AnOpenDescriptorIsWrittenThroughNotReopened) {
   int ends[2];
   ASSERT_EQ(::pipe(ends), 0);
-  for (const std::string& name : {"/dev/fd/", "/proc/self/fd/"}) {
+  for (const std::string name : {"/dev/fd/", "/proc/self/fd/"}) {
     DurableFile out(name + std::to_string(ends[1]));
     out.write("via " + name);
     out.commit();

@@ -144,7 +144,9 @@ TEST(FrequencyShift, TheSkyIsBlueshiftedByTheStaticObserversLapse) {
       for (int i = 0; i < 4; ++i) {
         const RaySample s = std::visit(
             [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{}); }, scene);
-        if (s.kind == HitKind::horizon) EXPECT_EQ(s.g, 0.0);
+        if (s.kind == HitKind::horizon) {
+          EXPECT_EQ(s.g, 0.0);
+        }
         if (s.kind != HitKind::sky) continue;
         EXPECT_NEAR(s.g, 1 / std::sqrt(1 - 2.0 / 10), 1e-12);
         ++sky;
