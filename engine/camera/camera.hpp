@@ -17,6 +17,7 @@
 
 #include "camera/camera_axes.hpp"
 #include "camera/camera_sample.hpp"
+#include "camera/fisheye.hpp"
 #include "camera/pinhole.hpp"
 #include "core/fields.hpp"
 #include "core/registry.hpp"
@@ -26,18 +27,22 @@ namespace lc {
 // What a camera is: name (its Lua constructor lc.<name>{...}), Params with
 // declared fields (orientation_fields for yaw, pitch and roll), a
 // constructor from them and the image size, the ray through a sample
-// (nullopt where it has none), and its axes (for reports).
+// (nullopt where it has none), the direction through any image point
+// (its projection, continued where it has no ray: the star stage), whether
+// every image point has a ray (rays_everywhere) and its axes (for reports).
 template <class C>
 concept CameraModel = requires(const C& c, const typename C::Params& p, const CameraSample& s) {
   requires std::same_as<std::remove_cv_t<decltype(C::name)>, std::string_view>;
   requires HasFields<typename C::Params>;
   C(p, 1, 1);
   { c.ray(s) } -> std::same_as<std::optional<CameraRay>>;
+  { c.direction(s.px, s.py) } -> std::same_as<Vec3>;
+  { C::rays_everywhere } -> std::convertible_to<bool>;
   { c.axes() } -> std::same_as<const CameraAxes&>;
 };
 
 // Every camera kind, one line each.
-using CameraRegistry = Registry<PinholeCamera>;
+using CameraRegistry = Registry<PinholeCamera, FisheyeCamera>;
 
 // One assertion per camera: the compiler's notes name the one that fails
 // and the requirement it misses.
@@ -56,12 +61,18 @@ class Camera {
   std::optional<CameraRay> ray(const CameraSample& s) const {
     return std::visit([&](const auto& c) { return c.ray(s); }, kind_);
   }
-  // The direction through image point (px, py) at the frame's moment, for
-  // what works with directions alone (the star stage's patches of sky,
-  // tests); (0, 0, 0) where the camera has no ray.
+  // The direction through image point (px, py) from the observer's event,
+  // for what works with directions alone (the star stage's patches of sky,
+  // tests): where the camera has a ray, that ray's direction; beyond (a
+  // fisheye's disc), the camera's projection continued, so patches at the
+  // edge of where it has rays keep their solid angle.
   Vec3 direction(double px, double py) const {
-    const std::optional<CameraRay> r = ray({px, py, 0.0});
-    return r ? r->direction : Vec3{0.0, 0.0, 0.0};
+    return std::visit([&](const auto& c) { return c.direction(px, py); }, kind_);
+  }
+  // Whether every image point has a ray (a pinhole's), so nothing need
+  // be masked where it has none.
+  bool rays_everywhere() const {
+    return std::visit([](const auto& c) { return std::decay_t<decltype(c)>::rays_everywhere; }, kind_);
   }
   const CameraAxes& axes() const {
     return std::visit([](const auto& c) -> const CameraAxes& { return c.axes(); }, kind_);

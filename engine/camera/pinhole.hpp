@@ -24,6 +24,7 @@ namespace lc {
 class PinholeCamera {
  public:
   static constexpr std::string_view name = "camera";  // lc.camera{...}
+  static constexpr bool rays_everywhere = true;
   struct Params {
     double fov = 60.0;  // horizontal, degrees
     double yaw = 0.0, pitch = 0.0, roll = 0.0;

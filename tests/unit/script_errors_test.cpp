@@ -46,18 +46,18 @@ fs::path shot_running(const ScratchDir& dir, const std::string& lines) {
 // The first line of an error (without its traceback).
 std::string first_line(const std::string& msg) { return msg.substr(0, msg.find('\n')); }
 
-// lc.fisheye{...} was "attempt to call field 'fisheye' (a nil value)": an
+// lc.orthographic{...} was "attempt to call field 'orthographic' (a nil value)": an
 // unknown name is an error at the line that names it, saying what lc has.
 TEST(ScriptErrors, UnknownNameInLcIsAnErrorAtItsLine) {
   ScratchDir dir;
-  const fs::path file = shot_running(dir, "local fov = 180\nlocal cam = lc.fisheye{fov = fov}");
+  const fs::path file = shot_running(dir, "local fov = 180\nlocal cam = lc.orthographic{fov = fov}");
   const std::string msg = first_line(error_of<ScriptError>([&] { lc::Shot shot(file); }));
-  EXPECT_EQ(msg.rfind(file.string() + ":3: lc.fisheye is not a lightcone constructor or function; lc has ", 0), 0u)
+  EXPECT_EQ(msg.rfind(file.string() + ":3: lc.orthographic is not a lightcone constructor or function; lc has ", 0), 0u)
       << msg;
   for (const char* listed :
        {"spacetimes: lc.dihole, lc.kerr, lc.minkowski;", "observers and worldlines: lc.free_fall, lc.static_observer, "
                                                          "lc.worldline, lc.zamo;",
-        "cameras: lc.camera;", "skies: lc.sky_checker, lc.sky_image, lc.sky_stars, lc.starfield;",
+        "cameras: lc.camera, lc.fisheye;", "skies: lc.sky_checker, lc.sky_image, lc.sky_stars, lc.starfield;",
         "objects: lc.disk, lc.sphere;", "light: lc.light;", "helpers: lc.apocentres, ", "lc.look_at", "lc.timeline",
         "(docs/shots.md)"})
     EXPECT_NE(msg.find(listed), std::string::npos) << listed << "\n" << msg;
@@ -96,13 +96,13 @@ TEST(ScriptErrors, UnknownNameInsideFrameNamesTheFrameAndLine) {
                                    "  local s = " +
                                        std::string(kScene) +
                                        "\n"
-                                       "  if i == 1 then s.camera = lc.fisheye{fov = 180} end\n"
+                                       "  if i == 1 then s.camera = lc.orthographic{fov = 180} end\n"
                                        "  return s\n"
                                        "end}\n");
   lc::Shot shot(file);
   EXPECT_NO_THROW(shot.frame(0));
   const std::string msg = first_line(error_of<ScriptError>([&] { shot.frame(1); }));
-  EXPECT_EQ(msg.rfind(file.string() + ": frame 1: " + file.string() + ":4: lc.fisheye is not a lightcone", 0), 0u)
+  EXPECT_EQ(msg.rfind(file.string() + ": frame 1: " + file.string() + ":4: lc.orthographic is not a lightcone", 0), 0u)
       << msg;
 }
 
@@ -111,7 +111,7 @@ TEST(ScriptErrors, UnknownNameInsideFrameNamesTheFrameAndLine) {
 TEST(ScriptErrors, RawgetAndAddedNamesStillWork) {
   ScratchDir dir;
   const fs::path file = shot_running(dir,
-                                     "assert(rawget(lc, 'fisheye') == nil)\n"
+                                     "assert(rawget(lc, 'orthographic') == nil)\n"
                                      "assert(type(rawget(lc, 'kerr')) == 'function')\n"
                                      "lc.my_helper = function() return 2 end\n"
                                      "assert(lc.my_helper() == 2)\n"
