@@ -84,6 +84,9 @@ int run_trace(const TraceCommand& cmd) {
           g.u = -1.0 * dx;
           path.samples.push_back(g);
         };
+        // A pixel the camera has no ray through (outside a fisheye's disc)
+        // is reported as such, with an empty path.
+        if (!sc.camera.ray({i + 0.5, j + 0.5, 0.0})) return no_ray_sample();
         RaySample r = trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5),
                                    [&](const RayState& y, double sigma) { record(y, sigma); });
         record(r.end, r.lambda_end);

@@ -19,7 +19,8 @@ namespace lc {
 // `camera` is the frame's, for the image's size.  Runs on up to `threads`
 // threads (the image the same to the bit for any number) and adds the CPU
 // time it took, summed over them, to *cpu_seconds if given.  Returns the
-// number of star images drawn.
+// number of star images drawn.  Where the camera has no ray through any
+// part of a pixel (outside a fisheye's disc) the pixel stays black.
 long draw_point_stars(const PointStars& stars, const Camera& camera, std::span<const SkyPoint> rays,
                       FrameImage& image, int threads = 1, double* cpu_seconds = nullptr);
 
