@@ -12,8 +12,6 @@
 #      nothing is written.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
-PY=python3
-[ -x /usr/bin/python3 ] && PY=/usr/bin/python3
 SHOT="$SRC/shots/dome_example.lua"
 
 # 1. The render, read back.

@@ -13,10 +13,6 @@
 #      mpirun here is.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
-# Debian's interpreter: python3-openimageio installs its module for it (a
-# python3 earlier on PATH, e.g. pyenv's, would not see it).
-PY=python3
-[ -x /usr/bin/python3 ] && PY=/usr/bin/python3
 SHOT="$SRC/shots/bench/kerr_disk.lua"
 
 # 1. The README's example, as written there (with this build's binary and the
