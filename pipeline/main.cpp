@@ -199,6 +199,10 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--preview", render.preview, "Render every K-th stripe of every frame first, as DIR/preview/*.png")
       ->check(number());
   render_cmd->add_flag("--force", render.force, "Resume even if the shot or settings changed: re-render the frames that differ");
+  render_cmd
+      ->add_option("--png-depth", render.png_bits,
+                   "Bits per channel of the PNG frames: 8 (the default) or 16 (dome masters: docs/cameras.md)")
+      ->check(CLI::IsMember({8, 16}));
   render_cmd->add_option("--progress", render.progress,
                          "Seconds between progress lines when stderr is not a terminal (default 5; 0: none)")
       ->check(number());

@@ -117,7 +117,8 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   const ShotInfo& info = job.shot->info();
   const farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
   farm::FrameStore store(cmd.out, info.name);
-  const farm::FrameSettings settings = farm::frame_settings(job.rs);
+  farm::FrameSettings settings = farm::frame_settings(job.rs);
+  settings.png_depth = cmd.png_depth();
   const farm::ResumePlan plan = farm::plan_resume(store, survey, settings, job.frames, cmd.force, info.name);
 
   const int threads = mpi ? 0 : (cmd.threads > 0 ? cmd.threads : farm::usable_cpus());
@@ -139,7 +140,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   // A frame's point stars on as many threads as render it (the MPI
   // master's writers draw four frames at once on a worker's node: one each).
   const int star_threads = mpi ? 1 : threads;
-  farm::StoreSink sink(store, survey, info, job.rs, preview_rows(queue), job.shot->asset_dirs(), star_threads);
+  farm::StoreSink sink(store, survey, info, job.rs, settings, preview_rows(queue), job.shot->asset_dirs(), star_threads);
   farm::Progress progress(farm::progress_style_for(stderr, cmd.progress), cmd.progress);
   int cores = threads;
   const double cpu_at_start = master_cpu_seconds();

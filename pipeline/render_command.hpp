@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "farm/mpi_session.hpp"
+#include "image/image_io.hpp"
 
 namespace lc {
 
@@ -27,6 +28,8 @@ struct RenderCommand {
   std::optional<int> stripes;         // working sets per frame (default: farm::default_stripes)
   int preview = 0;                    // k >= 2: every k-th stripe of every frame first
   bool force = false;                 // re-render frames made from other settings or inputs
+  int png_bits = 8;                   // --png-depth: 8 or 16 (CLI11 zeroes an enum option not given)
+  PngDepth png_depth() const { return png_bits == 16 ? PngDepth::sixteen : PngDepth::eight; }
   double progress = 5.0;              // seconds between plain progress lines (0: none)
 };
 

@@ -2,6 +2,7 @@
 // One rendered frame as plain data: linear RGB plus named per-pixel float
 // layers.  The renderer fills it, the frame store writes it (image_io.hpp).
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -35,5 +36,12 @@ struct FrameImage {
   // (image_io).
   std::vector<float> alpha;
 };
+
+// Whether some pixel of `image` is not opaque: the frame's EXR then has an
+// A channel (image_io.hpp).  A frame every pixel of which had a ray (a
+// pinhole's) has none, so its files are what they were before alpha.
+inline bool has_transparency(const FrameImage& image) {
+  return std::any_of(image.alpha.begin(), image.alpha.end(), [](float a) { return a != 1.0f; });
+}
 
 }  // namespace lc

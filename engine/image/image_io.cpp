@@ -75,11 +75,14 @@ void check_frame(const FrameImage& im, bool with_layers, std::string_view what, 
     fail(what, path,
          "rgb holds " + std::to_string(im.rgb.size()) + " floats, expected 3 * " + size_text(im.width, im.height));
   if (!with_layers) return;
-  std::set<std::string> names{"R", "G", "B"};
+  if (!im.alpha.empty() && im.alpha.size() != n)
+    fail(what, path,
+         "alpha holds " + std::to_string(im.alpha.size()) + " floats, expected " + size_text(im.width, im.height));
+  std::set<std::string> names{"R", "G", "B", "A"};
   for (const FrameImage::Layer& l : im.layers) {
     if (l.name.empty()) fail(what, path, "a data layer has an empty name");
     if (!names.insert(l.name).second)
-      fail(what, path, "data layer name '" + l.name + "' is used twice or clashes with R, G, B");
+      fail(what, path, "data layer name '" + l.name + "' is used twice or clashes with R, G, B, A");
     if (l.values.size() != n)
       fail(what, path,
            "data layer '" + l.name + "' holds " + std::to_string(l.values.size()) + " floats, expected " +
@@ -248,20 +251,25 @@ double decode(const Transfer& t, double v) {
 
 }  // namespace
 
-// Validates, names the channels, interleaves RGB and layers, writes FLOAT zip.
+// Validates, names the channels, interleaves RGB (A) and layers, writes FLOAT zip.
 void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata,
                const std::filesystem::path& named) {
   constexpr std::string_view what = "cannot write EXR";
   const fs::path& blame = named.empty() ? path : named;
   check_frame(image, true, what, blame);
   check_metadata(metadata, what, blame);
-  const int nch = 3 + static_cast<int>(image.layers.size());
+  const bool with_alpha = has_transparency(image);
+  const int first_layer = with_alpha ? 4 : 3;
+  const int nch = first_layer + static_cast<int>(image.layers.size());
   OIIO::ImageSpec spec(image.width, image.height, nch, OIIO::TypeDesc::FLOAT);
   spec.channelnames = {"R", "G", "B"};
+  if (with_alpha) spec.channelnames.push_back("A");
   for (const FrameImage::Layer& l : image.layers) spec.channelnames.push_back(l.name);
   // The ImageSpec constructor guessed a 4th channel to be alpha; data
-  // layers are plain values, never composited.
-  spec.alpha_channel = -1;
+  // layers are plain values, never composited.  A is EXR's associated
+  // alpha: the colour is already the mean over all samples, black ones
+  // where the camera had no ray included.
+  spec.alpha_channel = with_alpha ? 3 : -1;
   spec.z_channel = -1;
   spec.attribute("compression", "zip");
   // OIIO stamps the current time into the header unless told otherwise (an
@@ -270,7 +278,7 @@ void write_exr(const std::filesystem::path& path, const FrameImage& image, const
   spec.attribute("DateTime", "");
   for (const auto& [key, value] : metadata) spec.attribute(key, value);
 
-  // OIIO writes interleaved pixels; layers are planar in FrameImage.
+  // OIIO writes interleaved pixels; alpha and layers are planar in FrameImage.
   const std::size_t n = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
   std::vector<float> pixels(n * static_cast<std::size_t>(nch));
   for (std::size_t p = 0; p < n; ++p) {
@@ -278,20 +286,29 @@ void write_exr(const std::filesystem::path& path, const FrameImage& image, const
     px[0] = image.rgb[3 * p];
     px[1] = image.rgb[3 * p + 1];
     px[2] = image.rgb[3 * p + 2];
-    for (std::size_t l = 0; l < image.layers.size(); ++l) px[3 + l] = image.layers[l].values[p];
+    if (with_alpha) px[3] = image.alpha[p];
+    for (std::size_t l = 0; l < image.layers.size(); ++l) px[first_layer + l] = image.layers[l].values[p];
   }
   write_with("openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data(), what, path, named);
 }
 
-// Encodes to 8-bit sRGB codes here (srgb.hpp), so OIIO only stores bytes.
-void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named) {
+// Encodes to sRGB codes here (srgb.hpp), so OIIO only stores them.
+void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named,
+               PngDepth depth) {
   constexpr std::string_view what = "cannot write PNG";
   check_frame(image, false, what, named.empty() ? path : named);
-  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  const OIIO::TypeDesc type = depth == PngDepth::sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8;
+  OIIO::ImageSpec spec(image.width, image.height, 3, type);
   spec.attribute("oiio:ColorSpace", "sRGB");  // the writer then stores an sRGB chunk
+  if (depth == PngDepth::sixteen) {
+    std::vector<std::uint16_t> codes(image.rgb.size());
+    std::transform(image.rgb.begin(), image.rgb.end(), codes.begin(), linear_to_srgb16);
+    write_with("png", spec, type, codes.data(), what, path, named);
+    return;
+  }
   std::vector<std::uint8_t> bytes(image.rgb.size());
   std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), linear_to_srgb8);
-  write_with("png", spec, OIIO::TypeDesc::UINT8, bytes.data(), what, path, named);
+  write_with("png", spec, type, bytes.data(), what, path, named);
 }
 
 // Reads every channel as float, then splits R, G, B from the layers by name.
@@ -319,16 +336,22 @@ FrameImage read_exr(const std::filesystem::path& path) {
   image.width = spec.width;
   image.height = spec.height;
   image.rgb.resize(3 * n);
+  int alpha_index = -1;
+  for (int c = 0; c < nch; ++c)
+    if (spec.channelnames[static_cast<std::size_t>(c)] == "A") alpha_index = c;
+  if (alpha_index >= 0) image.alpha.resize(n);
   for (int c = 0; c < nch; ++c) {
-    if (c == rgb_index[0] || c == rgb_index[1] || c == rgb_index[2]) continue;
+    if (c == rgb_index[0] || c == rgb_index[1] || c == rgb_index[2] || c == alpha_index) continue;
     image.layers.push_back({spec.channelnames[static_cast<std::size_t>(c)], std::vector<float>(n)});
   }
   for (std::size_t p = 0; p < n; ++p) {
     const float* px = &pixels[p * static_cast<std::size_t>(nch)];
     for (int k = 0; k < 3; ++k) image.rgb[3 * p + static_cast<std::size_t>(k)] = px[rgb_index[k]];
     std::size_t l = 0;
+    if (alpha_index >= 0) image.alpha[p] = px[alpha_index];
     for (int c = 0; c < nch; ++c)
-      if (c != rgb_index[0] && c != rgb_index[1] && c != rgb_index[2]) image.layers[l++].values[p] = px[c];
+      if (c != rgb_index[0] && c != rgb_index[1] && c != rgb_index[2] && c != alpha_index)
+        image.layers[l++].values[p] = px[c];
   }
   return image;
 }

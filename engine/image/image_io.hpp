@@ -23,12 +23,18 @@ namespace lc {
 
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
-// Writes `image` as OpenEXR to `path`: channels R, G, B, then one channel
-// per layer named after it, all 32-bit FLOAT (reference images are never
-// lossy and never half), zip compression, scanlines top to bottom, plus
+// Bits per channel of a frame's PNG: 8 for video and the web, 16 for dome
+// masters (a dome's dark skies band in 8 bits; docs/cameras.md).
+enum class PngDepth { eight = 8, sixteen = 16 };
+
+// Writes `image` as OpenEXR to `path`: channels R, G, B, then A where some
+// pixel is not opaque (has_transparency: associated alpha, the colour
+// already weighted by it), then one channel per layer named after it, all
+// 32-bit FLOAT (reference images are never lossy and never half), zip
+// compression, scanlines top to bottom, plus
 // `metadata` as string attributes (e.g. "lightcone/shot" = "kerr_disk").
 // Refuses an inconsistent image (sizes, empty or duplicate layer names, a
-// layer called R, G or B) and metadata keys that would steer the writer
+// layer called R, G, B or A) and metadata keys that would steer the writer
 // instead of annotating the file (containing ':', or EXR's own header
 // names such as "compression").  No timestamp is added, so equal frames and
 // metadata give byte-identical files.  On a failure after the file was
@@ -36,13 +42,15 @@ using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 void write_exr(const std::filesystem::path& path, const FrameImage& image, const ImageMetadata& metadata = {},
                const std::filesystem::path& named = {});
 
-// Writes the RGB of `image` as an 8-bit sRGB PNG (linear -> sRGB curve,
-// clamp, round to nearest; NaN -> 0), tagged as sRGB.  Layers are ignored.
-void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named = {});
+// Writes the RGB of `image` as an sRGB PNG of `depth` bits per channel
+// (linear -> sRGB curve, clamp, round to nearest; NaN -> 0), tagged as
+// sRGB.  Alpha and layers are ignored: outside a dome's disc is black.
+void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named = {},
+               PngDepth depth = PngDepth::eight);
 
-// Reads an EXR written by write_exr: R, G, B into rgb and every other
-// channel, by name, into layers in the order the file lists them (OpenEXR
-// sorts channel names, so that may differ from the order written).  Values
+// Reads an EXR written by write_exr: R, G, B into rgb, A (if present) into
+// alpha and every other channel, by name, into layers in the order the file
+// lists them (OpenEXR sorts channel names, so that may differ from the order written).  Values
 // are returned as stored, no colour conversion.  Throws when the file is not
 // an EXR or has no R, G, B channels.
 FrameImage read_exr(const std::filesystem::path& path);

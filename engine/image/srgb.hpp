@@ -24,6 +24,13 @@ inline std::uint8_t linear_to_srgb8(float c) {
   return static_cast<std::uint8_t>(std::lround(255.0 * linear_to_srgb(c)));
 }
 
+// Linear value -> 16-bit sRGB code, as linear_to_srgb8 on [0, 65535].
+inline std::uint16_t linear_to_srgb16(float c) {
+  if (!(c > 0.0f)) return 0;  // also NaN
+  if (c >= 1.0f) return 65535;
+  return static_cast<std::uint16_t>(std::lround(65535.0 * linear_to_srgb(c)));
+}
+
 // 8-bit sRGB code -> linear value.
 inline float srgb8_to_linear(std::uint8_t code) { return static_cast<float>(srgb_to_linear(code / 255.0)); }
 

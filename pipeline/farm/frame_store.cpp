@@ -108,7 +108,7 @@ void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMeta
                              FrameCost cost, const DisplayTransform& display) {
   with_space_hint(dir_, [&] {
     write_frame_files(frame_path(dir_, shot_, frame, "exr"), frame_path(dir_, shot_, frame, "png"), image, metadata,
-                      display);
+                      display, settings.png_depth);
   });
   JournalFrame jf;
   jf.frame = frame;
@@ -139,6 +139,8 @@ void fill_missing_rows(FrameImage& image, const std::vector<int>& rendered) {
   const std::size_t w = static_cast<std::size_t>(image.width);
   auto copy_row = [&](int from, int to) {
     std::copy_n(image.rgb.begin() + static_cast<long>(3 * w * from), 3 * w, image.rgb.begin() + static_cast<long>(3 * w * to));
+    if (!image.alpha.empty())
+      std::copy_n(image.alpha.begin() + static_cast<long>(w * from), w, image.alpha.begin() + static_cast<long>(w * to));
     for (auto& layer : image.layers)
       std::copy_n(layer.values.begin() + static_cast<long>(w * from), w, layer.values.begin() + static_cast<long>(w * to));
   };

@@ -57,7 +57,8 @@ class FrameStore {
   // durable, then appends its journal line.  Throws std::runtime_error
   // naming the file (a full disk, a vanished directory).  Thread-safe for
   // different frames (the journal appends are serialised).
-  // The PNG shows the image through `display`; the line records `cost`,
+  // The PNG shows the image through `display`, at the settings' depth; the
+  // line records `cost`,
   // stamped with the time it is written.
   void write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata, const FrameSettings& settings,
                    const std::string& inputs, const InputParts& parts, FrameCost cost, const DisplayTransform& display);
@@ -80,7 +81,8 @@ class FrameStore {
 };
 
 // Rows j of `image` not in `rendered` (sorted, non-empty) copied from the
-// nearest rendered row; the upper one on a tie.  Layers are filled alike.
+// nearest rendered row; the upper one on a tie.  Alpha and layers are
+// filled alike.
 void fill_missing_rows(FrameImage& image, const std::vector<int>& rendered);
 
 }  // namespace lc::farm

@@ -15,12 +15,12 @@ enum class FrameFormat { exr, png };
 // Writes `image` in `format` to `file`'s temporary, reads it back and
 // checks its size; throws naming the final name.  The caller commits.
 void write_verified(const DurableFile& file, FrameFormat format, const FrameImage& image,
-                    const ImageMetadata& metadata = {}) {
+                    const ImageMetadata& metadata = {}, PngDepth depth = PngDepth::eight) {
   const std::filesystem::path& temp = file.temp_path();
   if (format == FrameFormat::exr)
     write_exr(temp, image, metadata);
   else
-    write_png(temp, image);
+    write_png(temp, image, {}, depth);
   try {
     const FrameImage back = format == FrameFormat::exr ? read_exr(temp) : read_image_linear(temp);
     if (back.width != image.width || back.height != image.height)
@@ -34,11 +34,11 @@ void write_verified(const DurableFile& file, FrameFormat format, const FrameImag
 }  // namespace
 
 void write_frame_files(const std::filesystem::path& exr, const std::filesystem::path& png, const FrameImage& image,
-                       const ImageMetadata& metadata, const DisplayTransform& display) {
+                       const ImageMetadata& metadata, const DisplayTransform& display, PngDepth png_depth) {
   // The frame store clears its folders of temporaries when a render starts.
   DurableFile exr_file(exr, StaleTemporaries::cleaned_by_caller), png_file(png, StaleTemporaries::cleaned_by_caller);
   write_verified(exr_file, FrameFormat::exr, image, metadata);
-  write_verified(png_file, FrameFormat::png, display.identity() ? image : display.applied(image));
+  write_verified(png_file, FrameFormat::png, display.identity() ? image : display.applied(image), {}, png_depth);
   commit_together({&exr_file, &png_file});
 }
 

@@ -89,6 +89,10 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
     if (*sampling != "adaptive" && *sampling != "full") return std::nullopt;
     jf.settings.adaptive = *sampling == "adaptive";
   }
+  if (const std::string* depth = get("png_depth")) {
+    if (*depth != "16") return std::nullopt;  // 8 is never written
+    jf.settings.png_depth = PngDepth::sixteen;
+  }
   if (inputs->size() != 16) return std::nullopt;
   jf.inputs = *inputs;
   // Written since encode checks for stale frames (both, or neither).
@@ -117,8 +121,9 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
 }  // namespace
 
 std::string FrameSettings::describe() const {
-  return fmt::format("{}x{}, {}x{} samples per pixel{}, {}", width, height, supersample, supersample,
-                     adaptive && supersample > 1 ? " (adaptive)" : "", layers ? "with data layers" : "no data layers");
+  return fmt::format("{}x{}, {}x{} samples per pixel{}, {}{}", width, height, supersample, supersample,
+                     adaptive && supersample > 1 ? " (adaptive)" : "", layers ? "with data layers" : "no data layers",
+                     png_depth == PngDepth::sixteen ? ", 16-bit PNG" : "");
 }
 
 std::string journal_header_line() { return with_check(header); }
@@ -131,9 +136,11 @@ std::string journal_frame_line(const JournalFrame& f) {
   const std::string cost = c.recorded() ? fmt::format(" reused={} core_seconds={:.3f} star_seconds={:.3f} finished={}",
                                                       c.reused, c.core_seconds, c.star_seconds, c.finished)
                                         : "";
-  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={} inputs={}{} exr={} png={} rays={}{}",
+  // png_depth only where not 8, so 8-bit lines read the same in an older lightcone.
+  const char* depth = f.settings.png_depth == PngDepth::sixteen ? " png_depth=16" : "";
+  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}",
                                 f.frame, f.settings.width, f.settings.height, f.settings.supersample,
-                                f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", f.inputs, parts,
+                                f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", depth, f.inputs, parts,
                                 f.exr_bytes, f.png_bytes, c.rays, cost));
 }
 

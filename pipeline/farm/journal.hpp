@@ -7,12 +7,12 @@
 // it.  Lines:
 //   lightcone-journal 1                                     (first line)
 //   input hash=<16 hex> path=<file>                         (an input file's content as of a run)
-//   frame=<n> size=<W>x<H> supersample=<N> layers=<0|1> sampling=<adaptive|full> inputs=<16 hex>
-//     script=<16 hex> [sky=<16 hex>] exr=<bytes> png=<bytes> rays=<n>
+//   frame=<n> size=<W>x<H> supersample=<N> layers=<0|1> sampling=<adaptive|full> [png_depth=16]
+//     inputs=<16 hex> script=<16 hex> [sky=<16 hex>] exr=<bytes> png=<bytes> rays=<n>
 //     reused=<n> core_seconds=<s> star_seconds=<s> finished=<unix seconds>
 // A later frame line for the same frame supersedes an earlier one.  Lines
 // of older journals lack sampling (full), script and sky, and what the
-// frame cost beyond its rays.
+// frame cost beyond its rays; png_depth is written only for 16-bit PNGs.
 
 #include <cstdint>
 #include <cstddef>
@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "image/image_io.hpp"
+
 namespace lc::farm {
 
 // The settings a frame was rendered with, as the journal spells them.
@@ -30,6 +32,7 @@ struct FrameSettings {
   int width = 0, height = 0, supersample = 1;
   bool layers = false;
   bool adaptive = false;  // adaptive supersampling (journal lines without the field: full N x N)
+  PngDepth png_depth = PngDepth::eight;  // the PNG's bits per channel (render --png-depth)
   bool operator==(const FrameSettings&) const = default;
   // "48x32, 1x1 samples per pixel, no data layers": for messages.
   std::string describe() const;

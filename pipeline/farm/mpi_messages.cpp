@@ -28,7 +28,10 @@ T get(std::span<const char> b, std::size_t& at) {
 }
 
 struct ResultHeader {
-  std::int32_t frame, stripe, pass, sky;  // sky: 1 when the rows' sky points follow their pixels
+  std::int32_t frame, stripe, pass;
+  std::int32_t sky;    // 1 when the rows' sky points follow their pixels
+  std::int32_t alpha;  // 1 when the rows' alpha follows their RGB (some pixel is not opaque)
+  std::int32_t unused = 0;
   std::int64_t rays, steps, gave_up, reused;
   double seconds;
 };
@@ -85,21 +88,44 @@ std::vector<WorkItem> unpack_items(std::span<const char> b) {
   return out;
 }
 
+namespace {
+
+// Bytes of the rows that follow a result's header.
+std::size_t row_bytes(std::size_t rows, std::size_t w, std::size_t layers, bool alpha, bool sky) {
+  return rows * w * ((3 + (alpha ? 1 : 0) + layers) * sizeof(float) + (sky ? sizeof(SkyPoint) : 0));
+}
+
+// Whether a pixel of these rows is not opaque: only then is alpha sent (a
+// receiving canvas starts opaque, make_frame), so a pinhole's results are
+// no larger for it.
+bool rows_have_transparency(const FrameImage& canvas, const std::vector<int>& rows) {
+  if (canvas.alpha.empty()) return false;
+  const std::size_t w = static_cast<std::size_t>(canvas.width);
+  for (int j : rows)
+    for (std::size_t i = 0; i < w; ++i)
+      if (canvas.alpha[w * static_cast<std::size_t>(j) + i] != 1.0f) return true;
+  return false;
+}
+
+}  // namespace
+
 Bytes pack_result(const WorkItem& item, const RenderStats& stats, const FrameImage& canvas,
                   const std::vector<int>& rows) {
   const std::size_t w = static_cast<std::size_t>(canvas.width);
   const bool sky = !canvas.sky.empty();
-  const std::size_t bytes = rows.size() * w * ((3 + canvas.layers.size()) * sizeof(float) + (sky ? sizeof(SkyPoint) : 0));
+  const bool alpha = rows_have_transparency(canvas, rows);
+  const std::size_t bytes = row_bytes(rows.size(), w, canvas.layers.size(), alpha, sky);
   Bytes b;
   b.reserve(sizeof(ResultHeader) + bytes);
-  put(b, ResultHeader{item.frame, item.stripe, static_cast<std::int32_t>(item.pass), sky ? 1 : 0, stats.rays,
-                      stats.steps, stats.gave_up, stats.reused, stats.seconds});
+  put(b, ResultHeader{item.frame, item.stripe, static_cast<std::int32_t>(item.pass), sky ? 1 : 0, alpha ? 1 : 0, 0,
+                      stats.rays, stats.steps, stats.gave_up, stats.reused, stats.seconds});
   auto append = [&](const auto* p, std::size_t n) {
     const char* c = reinterpret_cast<const char*>(p);
     b.insert(b.end(), c, c + n * sizeof(*p));
   };
   for (int j : rows) {
     append(canvas.rgb.data() + 3 * w * j, 3 * w);
+    if (alpha) append(canvas.alpha.data() + w * j, w);
     for (const auto& layer : canvas.layers) append(layer.values.data() + w * j, w);
     if (sky) append(canvas.sky.data() + w * j, w);
   }
@@ -116,8 +142,10 @@ RenderStats unpack_result(std::span<const char> b, FrameImage& canvas, const std
   std::size_t at = 0;
   const auto h = get<ResultHeader>(b, at);
   const std::size_t w = static_cast<std::size_t>(canvas.width);
-  const std::size_t bytes =
-      rows.size() * w * ((3 + canvas.layers.size()) * sizeof(float) + (h.sky ? sizeof(SkyPoint) : 0));
+  if (h.alpha && canvas.alpha.size() != w * static_cast<std::size_t>(canvas.height))
+    throw std::runtime_error(fmt::format("farm message: stripe {} of frame {} has alpha its canvas has no room for",
+                                         h.stripe, h.frame));
+  const std::size_t bytes = row_bytes(rows.size(), w, canvas.layers.size(), h.alpha != 0, h.sky != 0);
   if (b.size() != sizeof(ResultHeader) + bytes)
     throw std::runtime_error(fmt::format("farm message: stripe {} of frame {} has {} bytes, expected {}", h.stripe,
                                          h.frame, b.size(), sizeof(ResultHeader) + bytes));
@@ -129,6 +157,7 @@ RenderStats unpack_result(std::span<const char> b, FrameImage& canvas, const std
   };
   for (int j : rows) {
     take(canvas.rgb.data() + 3 * w * j, 3 * w);
+    if (h.alpha) take(canvas.alpha.data() + w * j, w);
     for (auto& layer : canvas.layers) take(layer.values.data() + w * j, w);
     if (h.sky) take(canvas.sky.data() + w * j, w);
   }

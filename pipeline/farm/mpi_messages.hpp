@@ -40,7 +40,9 @@ Bytes pack_items(const std::vector<WorkItem>& items);
 std::vector<WorkItem> unpack_items(std::span<const char> b);
 
 // A finished set: its item, stats, then for each of its rows (top to
-// bottom) the RGB of the row followed by the row of every layer.
+// bottom) the RGB of the row, its alpha (only when some pixel of the set is
+// not opaque: the receiving canvas starts opaque), the row of every layer
+// and its sky points (where the canvas has them).
 Bytes pack_result(const WorkItem& item, const RenderStats& stats, const FrameImage& canvas,
                   const std::vector<int>& rows);
 // The item and stats of a result (to find its canvas) ...

@@ -15,9 +15,10 @@ FrameSettings frame_settings(const RenderSettings& rs) {
 }
 
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
-                     std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs, int star_threads)
+                     const FrameSettings& settings, std::vector<int> preview_rows,
+                     std::vector<std::filesystem::path> asset_dirs, int star_threads)
     : store_(store), survey_(survey), shot_name_(shot.name), fps_(shot.fps), display_(shot.display()), rs_(rs),
-      preview_rows_(std::move(preview_rows)), resources_(std::move(asset_dirs)), star_threads_(std::max(1, star_threads)) {}
+      settings_(settings), preview_rows_(std::move(preview_rows)), resources_(std::move(asset_dirs)), star_threads_(std::max(1, star_threads)) {}
 
 void StoreSink::store(const CompletedFrame& cf) {
   if (cf.pass == Pass::preview) {
@@ -57,7 +58,7 @@ void StoreSink::store(const CompletedFrame& cf) {
                                   {"lightcone/spacetime", facts.spacetime},
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};
-  store_.write_frame(cf.frame, *written, metadata, frame_settings(rs_), facts.inputs, facts.parts, cost,
+  store_.write_frame(cf.frame, *written, metadata, settings_, facts.inputs, facts.parts, cost,
                      display_);
 }
 

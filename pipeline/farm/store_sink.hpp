@@ -18,8 +18,9 @@ class StoreSink final : public FrameSink {
   // shot's (Shot::asset_dirs), where a point-star sky's background is read;
   // `star_threads` how many threads a frame's point stars are drawn on
   // (the writer's among them; the frame is the same for any number).
+  // `settings` are the journal's (frame_settings(rs) and the PNG's depth).
   StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
-            std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs, int star_threads = 1);
+            const FrameSettings& settings, std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs, int star_threads = 1);
   void store(const CompletedFrame& frame) override;
   // CPU time spent drawing point stars so far, summed over every thread
   // that drew them (core-seconds).
@@ -34,6 +35,7 @@ class StoreSink final : public FrameSink {
   double fps_;
   DisplayTransform display_;  // the shot's, for the PNGs
   RenderSettings rs_;
+  FrameSettings settings_;
   std::vector<int> preview_rows_;
   ShotResources resources_;  // the skies' stars, for the stage after the pixels
   int star_threads_;
@@ -41,7 +43,7 @@ class StoreSink final : public FrameSink {
   double star_seconds_ = 0.0, star_wall_seconds_ = 0.0;
 };
 
-// The journal's spelling of the settings.
+// The journal's spelling of the render settings (an 8-bit PNG).
 FrameSettings frame_settings(const RenderSettings& rs);
 
 }  // namespace lc::farm

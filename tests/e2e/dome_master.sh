@@ -2,7 +2,9 @@
 # A dome master through the fisheye camera (docs/cameras.md), as a
 # planetarium producer would make one from the docs:
 #   1. shots/dome_example.lua renders; outside the disc the EXR's hit.kind
-#      is "no ray" (5) and the colour black, inside it is a ray's.
+#      is "no ray" (5), the colour black and alpha 0, inside it is a ray's
+#      with alpha 1.  The same frame rendered by an MPI farm (2 ranks,
+#      alpha travelling in the stripes) is the same EXR, byte for byte.
 #   2. `trace --pixel` at a corner says "no ray" with no steps and an empty
 #      path; at the centre it traces a ray.
 #   3. Fewer rays are traced than an image of that size has samples (the
@@ -12,6 +14,7 @@
 #      nothing is written.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
+use_mpirun  # lib.sh: Open MPI settings, and `mpi N CMD...`
 SHOT="$SRC/shots/dome_example.lua"
 
 # 1. The render, read back.
@@ -23,7 +26,9 @@ import sys
 import OpenImageIO as oiio
 buf = oiio.ImageBuf(sys.argv[1])
 names = list(buf.spec().channelnames)
-kind, r, g, b = (names.index(n) for n in ("hit.kind", "R", "G", "B"))
+if "A" not in names or buf.spec().alpha_channel != names.index("A"):
+    sys.exit(f"no alpha channel: {names}")
+kind, r, g, b, a = (names.index(n) for n in ("hit.kind", "R", "G", "B", "A"))
 W, H = buf.spec().width, buf.spec().height
 bad = []
 for j in range(H):
@@ -32,13 +37,18 @@ for j in range(H):
         # The pixel's corners against the disc (radius W/2 about the centre):
         # wholly outside, wholly inside, or on its edge (not checked).
         inside = [(i + a - W / 2) ** 2 + (j + c - H / 2) ** 2 <= (W / 2) ** 2 for a in (0, 1) for c in (0, 1)]
-        if not any(inside) and (p[kind] != 5 or p[r] or p[g] or p[b]):
-            bad.append(f"({i},{j}) outside the disc: kind {p[kind]}, colour {p[r]} {p[g]} {p[b]}")
-        if all(inside) and p[kind] == 5:
-            bad.append(f"({i},{j}) inside the disc has no ray")
+        if not any(inside) and (p[kind] != 5 or p[r] or p[g] or p[b] or p[a]):
+            bad.append(f"({i},{j}) outside the disc: kind {p[kind]}, colour {p[r]} {p[g]} {p[b]}, alpha {p[a]}")
+        if all(inside) and (p[kind] == 5 or p[a] != 1):
+            bad.append(f"({i},{j}) inside the disc: kind {p[kind]}, alpha {p[a]}")
 if bad:
     sys.exit("; ".join(bad[:5]))
 PY
+CHECKS=$((CHECKS + 1))
+mpi 2 "$LIGHTCONE" render "$SHOT" --out dome_mpi --size 64x64 --layers --progress 0 >mpi.out 2>mpi.err ||
+  fail "render under mpirun -n 2: $(cat mpi.err)"
+cmp -s dome/dome_example.0000.exr dome_mpi/dome_example.0000.exr ||
+  fail "the MPI farm's dome master differs from the local render's"
 
 # 2. trace at a corner and at the centre.
 CHECKS=$((CHECKS + 1))

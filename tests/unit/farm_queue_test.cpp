@@ -270,17 +270,38 @@ TEST(FarmMessages, ResultRoundTripsRowsAndLayers) {
             (std::vector<WorkItem>{{1, 2, Pass::preview}, {3, 4, Pass::full}}));
 }
 
+// Alpha travels only with a set that has a pixel not opaque: an opaque
+// set's message is exactly as large as before alpha existed.
+TEST(FarmMessages, AlphaTravelsOnlyWhereSomePixelIsNotOpaque) {
+  const RenderSettings rs = settings(4, 4);
+  FrameImage src = make_frame(rs), dst = make_frame(rs);
+  const StripeLayout layout(4, 2);  // stripe 0: rows 0, 2; stripe 1: rows 1, 3
+  src.alpha[4 * 1 + 2] = 0.25f;     // row 1: stripe 1
+  const Bytes opaque = pack_result({0, 0, Pass::full}, {}, src, layout.rows(0));
+  const Bytes clear = pack_result({0, 1, Pass::full}, {}, src, layout.rows(1));
+  EXPECT_EQ(clear.size() - opaque.size(), 2 * 4 * sizeof(float));
+  unpack_result(opaque, dst, layout.rows(0));
+  unpack_result(clear, dst, layout.rows(1));
+  EXPECT_EQ(dst.alpha, src.alpha);
+  FrameImage no_room = make_frame(rs);
+  no_room.alpha.clear();
+  EXPECT_THROW(unpack_result(clear, no_room, layout.rows(1)), std::runtime_error);
+}
+
 TEST(FarmPreview, MissingRowsComeFromTheNearestRenderedRow) {
   FrameImage img;
   img.width = 1;
   img.height = 9;
   img.rgb.assign(27, 0.0f);
-  for (int j : {0, 4, 8}) img.rgb[3 * j] = static_cast<float>(j);
+  img.alpha.assign(9, 1.0f);
+  for (int j : {0, 4, 8}) img.rgb[3 * j] = img.alpha[j] = static_cast<float>(j) / 8;
   fill_missing_rows(img, {0, 4, 8});
   std::vector<float> r;
-  for (int j = 0; j < 9; ++j) r.push_back(img.rgb[3 * j]);
+  for (int j = 0; j < 9; ++j) r.push_back(img.rgb[3 * j] * 8);
   EXPECT_EQ(r, (std::vector<float>{0, 0, 0, 4, 4, 4, 4, 8, 8}));  // ties go to the row above
+  for (int j = 0; j < 9; ++j) EXPECT_EQ(img.alpha[j], img.rgb[3 * j]);  // alpha comes from the same row
   FrameImage one = img;
+  one.alpha.clear();
   one.rgb.assign(27, 0.0f);
   one.rgb[3 * 5] = 5;
   fill_missing_rows(one, {5});

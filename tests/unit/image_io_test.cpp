@@ -151,6 +151,43 @@ TEST(ImageIo, ExrRoundTripIsBitExactWithLayersAndMetadata) {
   for (const OIIO::TypeDesc& t : in->spec().channelformats) EXPECT_EQ(t, OIIO::TypeDesc::FLOAT);
 }
 
+// A frame with pixels the camera had no ray through (a dome master's
+// corners) carries them as alpha; an opaque one's file is the file it was
+// before alpha existed: no A channel, the same bytes as with no alpha.
+TEST(ImageIo, ExrHasAnAlphaChannelOnlyWhereSomePixelIsNotOpaque) {
+  ScratchDir dir;
+  FrameImage opaque = ramp(4, 3);
+  opaque.layers = {{"hit.kind", std::vector<float>(12, 2.0f)}};
+  lc::write_exr(dir / "none.exr", opaque);
+  opaque.alpha.assign(12, 1.0f);
+  lc::write_exr(dir / "opaque.exr", opaque);
+  EXPECT_EQ(file_bytes(dir / "opaque.exr"), file_bytes(dir / "none.exr"));
+  EXPECT_TRUE(lc::read_exr(dir / "opaque.exr").alpha.empty());
+
+  FrameImage dome = opaque;
+  dome.alpha[0] = 0.0f;
+  dome.alpha[5] = 0.75f;
+  lc::write_exr(dir / "dome.exr", dome);
+  const FrameImage back = lc::read_exr(dir / "dome.exr");
+  EXPECT_TRUE(same_bits(back.alpha, dome.alpha));
+  EXPECT_TRUE(same_bits(back.rgb, dome.rgb));
+  ASSERT_EQ(back.layers.size(), 1u);  // A is alpha, not a data layer
+  EXPECT_EQ(back.layers[0].name, "hit.kind");
+  auto in = OIIO::ImageInput::open((dir / "dome.exr").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().alpha_channel, 3);  // R, G, B, A as readers expect them
+  EXPECT_EQ(in->spec().channelnames[3], "A");
+
+  FrameImage short_alpha = dome;
+  short_alpha.alpha.pop_back();
+  EXPECT_NE(error_of([&] { lc::write_exr(dir / "bad.exr", short_alpha); }).find("alpha holds 11"), std::string::npos);
+  FrameImage clash = opaque;
+  clash.layers = {{"A", std::vector<float>(12)}};
+  EXPECT_NE(error_of([&] { lc::write_exr(dir / "bad.exr", clash); }).find("clashes with R, G, B, A"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "bad.exr"));
+}
+
 TEST(ImageIo, ExrRefusesInconsistentFramesAndReservedMetadata) {
   ScratchDir dir;
   const fs::path file = dir / "bad.exr";
@@ -166,7 +203,7 @@ TEST(ImageIo, ExrRefusesInconsistentFramesAndReservedMetadata) {
 
   FrameImage clash = im;
   clash.layers = {{"G", std::vector<float>(12)}};
-  EXPECT_NE(error_of([&] { lc::write_exr(file, clash); }).find("clashes with R, G, B"), std::string::npos);
+  EXPECT_NE(error_of([&] { lc::write_exr(file, clash); }).find("clashes with R, G, B, A"), std::string::npos);
 
   FrameImage short_layer = im;
   short_layer.layers = {{"hit.t", std::vector<float>(11)}};
