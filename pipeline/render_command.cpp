@@ -48,6 +48,18 @@ void warn_if_not_encodable(const RenderSettings& rs) {
     fmt::print(stderr, "render: warning: lightcone encode will make an H.264 video of these frames, but {}\n", *warning);
 }
 
+// Says so, once, when a frame's camera finds the image size odd for it (an
+// equirect frame whose pixels are not square: camera/camera.hpp).  A
+// warning, not a refusal: the frame is what was asked for, a video site
+// or player may just not show it as a sphere.
+void warn_if_camera_size_odd(const farm::ShotSurvey& survey, const RenderSettings& rs) {
+  for (const auto& [frame, facts] : survey.frames)
+    if (const auto warning = Camera(facts.camera, rs.width, rs.height).size_warning()) {
+      fmt::print(stderr, "render: warning: frame {}: {} (at {}x{})\n", frame, *warning, rs.width, rs.height);
+      return;
+    }
+}
+
 // The rows a preview frame holds, top to bottom.
 std::vector<int> preview_rows(const farm::WorkQueue& queue) {
   std::vector<int> rows;
@@ -116,6 +128,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   }
   const ShotInfo& info = job.shot->info();
   const farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
+  warn_if_camera_size_odd(survey, job.rs);
   farm::FrameStore store(cmd.out, info.name);
   farm::FrameSettings settings = farm::frame_settings(job.rs);
   settings.png_depth = cmd.png_depth();

@@ -11,15 +11,18 @@
 #include <array>
 #include <concepts>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <variant>
 
 #include "camera/camera_axes.hpp"
 #include "camera/camera_sample.hpp"
+#include "camera/equirect.hpp"
 #include "camera/fisheye.hpp"
 #include "camera/pinhole.hpp"
 #include "core/fields.hpp"
+#include "core/image_wrap.hpp"
 #include "core/registry.hpp"
 
 namespace lc {
@@ -29,7 +32,9 @@ namespace lc {
 // constructor from them and the image size, the ray through a sample
 // (nullopt where it has none), the direction through any image point
 // (its projection, continued where it has no ray: the star stage), whether
-// every image point has a ray (rays_everywhere) and its axes (for reports).
+// every image point has a ray (rays_everywhere), where its image continues
+// past its edges (wrap) and its axes (for reports).  A camera may also
+// have size_warning(): what is odd about the image size it was built for.
 template <class C>
 concept CameraModel = requires(const C& c, const typename C::Params& p, const CameraSample& s) {
   requires std::same_as<std::remove_cv_t<decltype(C::name)>, std::string_view>;
@@ -38,11 +43,12 @@ concept CameraModel = requires(const C& c, const typename C::Params& p, const Ca
   { c.ray(s) } -> std::same_as<std::optional<CameraRay>>;
   { c.direction(s.px, s.py) } -> std::same_as<Vec3>;
   { C::rays_everywhere } -> std::convertible_to<bool>;
+  { c.wrap() } -> std::same_as<ImageWrap>;
   { c.axes() } -> std::same_as<const CameraAxes&>;
 };
 
 // Every camera kind, one line each.
-using CameraRegistry = Registry<PinholeCamera, FisheyeCamera>;
+using CameraRegistry = Registry<PinholeCamera, FisheyeCamera, EquirectCamera>;
 
 // One assertion per camera: the compiler's notes name the one that fails
 // and the requirement it misses.
@@ -73,6 +79,22 @@ class Camera {
   // be masked where it has none.
   bool rays_everywhere() const {
     return std::visit([](const auto& c) { return std::decay_t<decltype(c)>::rays_everywhere; }, kind_);
+  }
+  // Where the image continues past its edges (a whole sphere's).
+  ImageWrap wrap() const {
+    return std::visit([](const auto& c) { return c.wrap(); }, kind_);
+  }
+  // What is odd about the image size for this camera (an equirect frame
+  // whose pixels are not square), for a warning; nullopt for most.
+  std::optional<std::string> size_warning() const {
+    return std::visit(
+        [](const auto& c) -> std::optional<std::string> {
+          if constexpr (requires { c.size_warning(); })
+            return c.size_warning();
+          else
+            return std::nullopt;
+        },
+        kind_);
   }
   const CameraAxes& axes() const {
     return std::visit([](const auto& c) -> const CameraAxes& { return c.axes(); }, kind_);

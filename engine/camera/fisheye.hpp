@@ -22,6 +22,7 @@
 #include "camera/camera_sample.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
+#include "core/image_wrap.hpp"
 #include "core/tensor.hpp"
 
 namespace lc {
@@ -73,6 +74,7 @@ class FisheyeCamera {
   // stage's patches of sky at the disc's edge reach a little beyond it.
   Vec3 direction(double px, double py) const { return along((px - cx_) * inv_radius_, (cy_ - py) * inv_radius_); }
 
+  ImageWrap wrap() const { return {}; }  // an image with edges
   const CameraAxes& axes() const { return axes_; }
 
  private:

@@ -17,6 +17,7 @@
 #include "camera/camera_sample.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
+#include "core/image_wrap.hpp"
 #include "core/tensor.hpp"
 
 namespace lc {
@@ -58,6 +59,7 @@ class PinholeCamera {
     return {d[0] * n, d[1] * n, d[2] * n};
   }
 
+  ImageWrap wrap() const { return {}; }  // an image with edges
   const CameraAxes& axes() const { return axes_; }
 
  private:

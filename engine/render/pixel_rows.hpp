@@ -99,11 +99,13 @@ inline bool samples_agree(const Perceived& x, const Perceived& y) {
 // whose first sample disagrees with a row neighbour's; then, in rounds, of
 // each neighbour of a pixel whose grid turned out not to be flat (a feature
 // found inside one pixel may reach into the next without touching its
-// first sample).
+// first sample).  In a row that wraps around (a whole sphere's: `wraps`)
+// the first and last pixels are neighbours.
 class RowPlan {
  public:
-  RowPlan(const RowGrid& grid, bool adaptive)
-      : grid_(grid), adaptive_(adaptive), seen_(adaptive ? grid.W * grid.NN : 0), full_(grid.W), next_(grid.W) {}
+  RowPlan(const RowGrid& grid, bool adaptive, bool wraps = false)
+      : grid_(grid), adaptive_(adaptive), wraps_(wraps && grid.W >= 3), seen_(adaptive ? grid.W * grid.NN : 0),
+        full_(grid.W), next_(grid.W) {}
 
   // The first round's samples into `where`.
   void first_round(std::vector<std::size_t>& where) {
@@ -127,6 +129,10 @@ class RowPlan {
       for (std::size_t i = 0; i < grid_.W; ++i)
         next_[i] = (i > 0 && !samples_agree(first_of(i), first_of(i - 1))) ||
                    (i + 1 < grid_.W && !samples_agree(first_of(i), first_of(i + 1)));
+      if (wraps_) {
+        const std::size_t last = grid_.W - 1;
+        if (!samples_agree(first_of(0), first_of(last))) next_[0] = next_[last] = 1;
+      }
     } else {
       std::fill(next_.begin(), next_.end(), 0);
       for (const std::size_t g : where) full_[g / grid_.NN] = 2;  // refined in this round
@@ -138,6 +144,8 @@ class RowPlan {
         if (!flat) {
           if (i > 0) next_[i - 1] = 1;
           if (i + 1 < grid_.W) next_[i + 1] = 1;
+          if (wraps_ && i == 0) next_[grid_.W - 1] = 1;
+          if (wraps_ && i + 1 == grid_.W) next_[0] = 1;
         }
       }
     }
@@ -158,7 +166,7 @@ class RowPlan {
  private:
   const Perceived& first_of(std::size_t i) const { return seen_[i * grid_.NN + grid_.first_index(i)]; }
   const RowGrid& grid_;
-  bool adaptive_;
+  bool adaptive_, wraps_;
   bool first_ = true;
   std::vector<Perceived> seen_;  // the samples taken, as samples_agree compares them
   std::vector<char> full_, next_;
@@ -324,7 +332,7 @@ RenderStats render_rows_with(const SceneIn<S>& sc, const C& camera, const Render
       if (sky_points && g % NN == grid.first_index(g / NN)) return g / NN;
       return std::nullopt;
     };
-    RowPlan plan(grid, adaptive);
+    RowPlan plan(grid, adaptive, camera.wrap().columns);
     std::vector<std::size_t>& where = buffers.where;
     plan.first_round(where);
     do {

@@ -31,6 +31,7 @@ long draw_point_stars(const PointStars& stars, const Camera& camera, std::span<c
   options.glare = stars.glare;
   options.glare_radius = stars.glare_size * image.height;
   options.threads = threads;
+  options.wrap = camera.wrap();
   const long drawn = add_point_stars(rays, image.width, image.height, *stars.field,
                                      [&](double x, double y) { return unit3(camera.direction(x, y)); }, options,
                                      image.rgb, cpu_seconds);

@@ -7,6 +7,8 @@
 namespace lc {
 
 PatchAreas Magnifications::areas(int i, int j) {
+  // Across a wrapped seam quad -1 is quad width - 1 and quad width quad 0.
+  if (grid_.wrap().columns) i = (i + grid_.width()) % grid_.width();
   const std::size_t key =
       static_cast<std::size_t>(j + 1) * static_cast<std::size_t>(grid_.width() + 1) + static_cast<std::size_t>(i + 1);
   if (const auto it = areas_.find(key); it != areas_.end()) return it->second;
@@ -22,7 +24,7 @@ PatchAreas Magnifications::areas(int i, int j) {
 double Magnifications::at_node(int i, int j) {
   double seen = 0.0, sky_area = 0.0;
   for (int qj = std::max(-1, j - 1); qj <= std::min(grid_.height() - 1, j); ++qj)
-    for (int qi = std::max(-1, i - 1); qi <= std::min(grid_.width() - 1, i); ++qi) {
+    for (int qi = std::max(-1, i - 1); qi <= (grid_.wrap().columns ? i : std::min(grid_.width() - 1, i)); ++qi) {
       const PatchAreas a = areas(qi, qj);
       seen += a.camera;
       sky_area += a.sky;

@@ -38,7 +38,7 @@ class Magnifications {
 
   // mu at node (i, j), -1 <= i <= width, -1 <= j <= height: the camera's
   // over the sky's solid angle of the quads around it (of those in the
-  // grid), at most max_magnification; 0 where none of them has a patch.
+  // grid; where it wraps, across the seam too), at most max_magnification; 0 where none of them has a patch.
   double at_node(int i, int j);
 
   // The least luminance a star's light may have for its image in quad

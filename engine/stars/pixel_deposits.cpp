@@ -7,12 +7,17 @@
 namespace lc {
 
 void splat_tent(double x, double y, double magnification, const Color& flux, int width, int height,
-                std::vector<Deposit>& out) {
+                const ImageWrap& wrap, std::vector<Deposit>& out) {
   const double fx = x - 0.5, fy = y - 0.5;
   const int px = static_cast<int>(std::floor(fx)), py = static_cast<int>(std::floor(fy));
   const double ax = fx - px, ay = fy - py;
   for (int k = 0; k < 4; ++k) {
-    const int pi_ = px + (k & 1), pj = py + (k >> 1);
+    int pi_ = px + (k & 1), pj = py + (k >> 1);
+    if (wrap.poles && (pj < 0 || pj >= height)) {
+      pj = pj < 0 ? -1 - pj : 2 * height - 1 - pj;
+      pi_ += width / 2;
+    }
+    if (wrap.columns) pi_ = ((pi_ % width) + width) % width;
     if (pi_ < 0 || pj < 0 || pi_ >= width || pj >= height) continue;
     const double share = magnification * ((k & 1) ? ax : 1 - ax) * ((k >> 1) ? ay : 1 - ay);
     Deposit d{pi_, pj, {}};

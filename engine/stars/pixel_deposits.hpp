@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/color.hpp"
+#include "core/image_wrap.hpp"
 
 namespace lc {
 
@@ -21,9 +22,12 @@ struct Deposit {
 // Appends to `out` the light `flux` times `magnification` of the image at
 // (x, y) (pixel units from the image's top-left corner) as it lands on the
 // pixels whose centres are within one pixel of it, with the tent filter's
-// weights; the share that falls outside the width x height image is lost.
+// weights; the share that falls outside the width x height image is lost,
+// but where the image wraps: a pixel beyond the left or right edge is the
+// one across the seam, beyond the top or bottom row the one half a turn
+// away on that row.
 void splat_tent(double x, double y, double magnification, const Color& flux, int width, int height,
-                std::vector<Deposit>& out);
+                const ImageWrap& wrap, std::vector<Deposit>& out);
 
 // Sorts `deposits` by row, then column, and sums those on one pixel into
 // one, in the order they are sorted in (std::sort's: the same for the same

@@ -43,7 +43,12 @@ TileRow draw_row_of_tiles(const RayGrid& grid, const StarField& field, const Cam
   Magnifications mu(grid, camera, cos_max, options.max_magnification);
   StarSearch search(grid, field, cos_max);
   TileRow row;
+  const ImageWrap& wrap = grid.wrap();
   const PatchStars draw = [&](int i, int j, const SkyPatch& patch, std::span<const std::size_t> stars) {
+    // Across a wrapped seam quads -1 and width - 1 are one patch of sky:
+    // the second draws it (its images land at x near width, the tent
+    // filter carries them over).
+    if (wrap.columns && i < 0) return;
     const double least = mu.least_luminance_drawn(i, j, invisible_share, field.faintest_luminance());
     for (const std::size_t s : stars) {
       const Vec3& d = field.stars()[s].direction;
@@ -53,7 +58,7 @@ TileRow draw_row_of_tiles(const RayGrid& grid, const StarField& field, const Cam
       const StarImage image =
           image_at(patch, *uv, {mu.at_node(i, j), mu.at_node(i + 1, j), mu.at_node(i + 1, j + 1), mu.at_node(i, j + 1)});
       splat_tent(image.x, image.y, image.magnification, seen_light(field, s, image), grid.width(), grid.height(),
-                 row.deposits);
+                 wrap, row.deposits);
       ++row.images;
     }
   };
@@ -71,7 +76,7 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
   if (w < 2 || h < 2 || sky.size() != pixels || rgb.size() != 3 * pixels)
     throw std::invalid_argument("star pass: the frame's rays or pixels do not match its size (at least 2 x 2)");
   const double start = thread_cpu_seconds();
-  const RayGrid grid(sky, w, h);
+  const RayGrid grid(sky, w, h, options.wrap);
   const double cos_max = std::cos(options.max_patch_radius);
   // The rows of tiles (tj = -1, -1 + star_tile, ...) apart, their deposits
   // joined in row order: the one-thread pass's to the bit.

@@ -28,6 +28,7 @@
 
 #include <span>
 
+#include "core/image_wrap.hpp"
 #include "core/sky_point.hpp"
 #include "core/tensor.hpp"
 #include "stars/camera_directions.hpp"
@@ -46,12 +47,17 @@ struct StarPassOptions {
   // same to the bit for any number: rows of tiles and bands of pixels are
   // worked out apart and joined in a fixed order.
   int threads = 1;
+  // Where the image continues past its edges (the camera's; an
+  // equirectangular whole sphere): there the grid's ring is the rays
+  // across the edge (or the pole), each seam's quads are searched once and
+  // a star's light near an edge lands on the pixels across it.
+  ImageWrap wrap{};
 };
 
 // Adds the stars' light to `rgb` (linear RGB, 3 floats per pixel, row by
 // row, width x height); `sky` holds each pixel's ray (width x height).
 // Pixels on the image's edge get their outer quads from rays extrapolated
-// one pixel beyond it.  Returns how many star images were added; adds the
+// one pixel beyond it, or where the image wraps from the rays across it.  Returns how many star images were added; adds the
 // CPU time the pass took, summed over its threads, to *cpu_seconds if
 // given.  `camera` is called from several threads at once when
 // options.threads > 1.

@@ -17,6 +17,7 @@
 #include "core/constants.hpp"
 #include "render/pixel_rows.hpp"
 #include "render/scene_builder.hpp"
+#include "shadow_check.hpp"
 #include "test_scenes.hpp"
 
 namespace lc {
@@ -163,6 +164,21 @@ TEST(Fisheye, TheShadowsEdgeLandsWhereTheProjectionPutsItsAngle) {
     }
   EXPECT_EQ(stats.rays + without, static_cast<long>(rs.width) * rs.height);
   EXPECT_EQ(stats.gave_up, 0);
+}
+
+// The same shadow at a dome master's size, 1024 x 1024, through the whole
+// disc's projection (test::check_shadow: every pixel of the rows near the
+// shadow on the side its centre's angle says, within a pixel of the edge):
+// with the hole at the centre, and framed as for a tilted dome (tilt 15,
+// pitch 55, yawed a whole turn), where it sits 40 degrees from the axis
+// and the projection stretches it sideways.
+TEST(Fisheye, AtADomeMastersSizeTheShadowsEdgeLandsWhereTheProjectionPutsIt) {
+  const double area = pi * std::pow(test::schwarzschild_shadow_angle_at_30() / degree * 512 / 90, 2);  // at the centre
+  for (const auto& p : {fisheye(180, 0, 0, 0, 0), fisheye(180, 15, 360, 55, 0)}) {
+    const test::ShadowCheck c = test::check_shadow(p, 1024, 1024);
+    EXPECT_EQ(c.wrong, 0) << "tilt " << p.tilt << ": " << c.first_wrong;
+    EXPECT_GT(c.horizon, 0.9 * area) << "tilt " << p.tilt;
+  }
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ Sum summed(const std::vector<Deposit>& ds) {
 TEST(PixelDeposits, TheTentFilterKeepsTheLightAndItsCentroid) {
   for (const auto& [x, y] : {std::pair{10.5, 5.5}, std::pair{10.8, 5.1}, std::pair{11.0, 6.0}, std::pair{3.37, 7.93}}) {
     std::vector<Deposit> ds;
-    splat_tent(x, y, 2.0, {1.0f, 1.0f, 1.0f}, 20, 12, ds);
+    splat_tent(x, y, 2.0, {1.0f, 1.0f, 1.0f}, 20, 12, {}, ds);
     EXPECT_EQ(ds.size(), 4u);
     const Sum s = summed(ds);
     EXPECT_NEAR(s.light, 2.0, 1e-6) << x << "," << y;
@@ -50,12 +50,42 @@ TEST(PixelDeposits, TheTentFilterKeepsTheLightAndItsCentroid) {
     }
   }
   std::vector<Deposit> centre;
-  splat_tent(10.5, 5.5, 1.0, {1.0f, 2.0f, 3.0f}, 20, 12, centre);
+  splat_tent(10.5, 5.5, 1.0, {1.0f, 2.0f, 3.0f}, 20, 12, {}, centre);
   for (const Deposit& d : centre)
-    if (d.i != 10 || d.j != 5) EXPECT_EQ(d.flux[0], 0.0f);
+    if (d.i != 10 || d.j != 5) {
+      EXPECT_EQ(d.flux[0], 0.0f);
+    }
   std::vector<Deposit> edge;
-  splat_tent(0.2, 5.5, 1.0, {1.0f, 1.0f, 1.0f}, 20, 12, edge);
+  splat_tent(0.2, 5.5, 1.0, {1.0f, 1.0f, 1.0f}, 20, 12, {}, edge);
   EXPECT_NEAR(summed(edge).light, 0.7, 1e-6);
+}
+
+// Where the image wraps, nothing is lost at its edges: the share beyond
+// the left or right edge lands across the seam, the share above the top
+// row (below the bottom one) on that row half a turn away.
+TEST(PixelDeposits, WhereTheImageWrapsTheFilterReachesAcrossTheEdge) {
+  const ImageWrap wrap{true, true};
+  std::vector<Deposit> seam, pole;
+  splat_tent(0.2, 5.5, 1.0, {1.0f, 1.0f, 1.0f}, 20, 12, wrap, seam);
+  ASSERT_EQ(seam.size(), 4u);  // two of them with no weight (y on a row's centre)
+  double total = 0, at_last = 0;
+  for (const Deposit& d : seam) {
+    total += d.flux[0];
+    if (d.i == 19) at_last += d.flux[0];
+    EXPECT_TRUE(d.i == 19 || d.i == 0) << d.i;
+  }
+  EXPECT_NEAR(total, 1.0, 1e-6);
+  EXPECT_NEAR(at_last, 0.3, 1e-6);
+  splat_tent(3.5, 0.1, 1.0, {1.0f, 1.0f, 1.0f}, 20, 12, wrap, pole);
+  total = 0;
+  double over = 0;
+  for (const Deposit& d : pole) {
+    total += d.flux[0];
+    EXPECT_EQ(d.j, 0);
+    if (d.i == 13) over += d.flux[0];  // column 3 half a turn away
+  }
+  EXPECT_NEAR(total, 1.0, 1e-6);
+  EXPECT_NEAR(over, 0.4, 1e-6);
 }
 
 TEST(PixelDeposits, DepositsOnOnePixelSum) {

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <map>
 #include <optional>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -108,8 +109,28 @@ struct HalfCamera {
     if (s.px < 0.5 * width) return std::nullopt;
     return pinhole.ray(s);
   }
+  ImageWrap wrap() const { return {}; }
   const CameraAxes& axes() const { return pinhole.axes(); }
 };
+
+// Adaptive sampling along a row that wraps (a whole sphere's): its first
+// and last pixels are neighbours, so a feature at the seam has both
+// refined; along a row with edges neither looks across them.
+TEST(PixelRows, AcrossAWrappedSeamTheEndsOfARowAreNeighbours) {
+  const pixel_rows::RowGrid grid(2, 8);
+  for (const bool wraps : {false, true}) {
+    pixel_rows::RowPlan plan(grid, true, wraps);
+    std::vector<std::size_t> where;
+    plan.first_round(where);
+    std::vector<FrameSample> samples(grid.W * grid.NN + grid.W);
+    for (const std::size_t g : where) samples[g].kind = HitKind::sky;
+    samples[where[0]].kind = HitKind::horizon;  // pixel 0 sees something else
+    ASSERT_TRUE(plan.next_round(where, samples));
+    std::set<std::size_t> refined;
+    for (const std::size_t g : where) refined.insert(g / grid.NN);
+    EXPECT_EQ(refined, wraps ? (std::set<std::size_t>{0, 1, 7}) : (std::set<std::size_t>{0, 1}));
+  }
+}
 
 TEST(PixelRows, PointsWithoutARayAreBlackTransparentAndNeverTraced) {
   SceneSpec fs;
@@ -155,6 +176,7 @@ struct MovedEyeCamera {
     for (int k = 0; k < 3; ++k) r->eye[k] = offset * pinhole.axes().right[k];
     return r;
   }
+  ImageWrap wrap() const { return {}; }
   const CameraAxes& axes() const { return pinhole.axes(); }
 };
 

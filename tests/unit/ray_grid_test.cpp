@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "camera/equirect.hpp"
 #include "star_test_sky.hpp"
 
 namespace lc {
@@ -54,6 +55,46 @@ TEST(RayGrid, BeyondTheEdgeNodesAreExtrapolated) {
     EXPECT_EQ(n.y, j + 0.5) << i << "," << j;
     EXPECT_LT(angle(n.sky, cam.at(i + 0.5, j + 0.5)), 0.01 * pixel) << i << "," << j;
   }
+}
+
+// An image that wraps (a whole sphere's equirectangular frame) makes up no
+// ring: across the left and right edges the nodes are the other edge's
+// rays, a width away in x; above the top row and below the bottom one, the
+// pole, at the image's edge, where the row's rays converge (to second
+// order in the ring's size: the first row's centres are 2.8 degrees from
+// it here, the ring's mean direction is the pole's to ~1e-9 rad).
+TEST(RayGrid, WhereTheImageWrapsTheRingIsTheRaysAcrossTheEdge) {
+  EquirectCamera::Params p;
+  p.yaw = 20;
+  p.pitch = 10;
+  const EquirectCamera cam(p, 64, 32);
+  const std::vector<SkyPoint> rays =
+      test::flat_sky([&](double x, double y) { return cam.direction(x, y); }, 64, 32, true);
+  const RayGrid grid(rays, 64, 32, cam.wrap());
+  for (const int j : {0, 7, 31}) {
+    const GridNode left = grid.at(-1, j), last = grid.at(63, j), right = grid.at(64, j), first = grid.at(0, j);
+    ASSERT_TRUE(left.known && right.known);
+    EXPECT_EQ(left.sky, last.sky);
+    EXPECT_EQ(left.x, last.x - 64);
+    EXPECT_EQ(left.y, last.y);
+    EXPECT_EQ(right.sky, first.sky);
+    EXPECT_EQ(right.x, first.x + 64);
+  }
+  const Vec3 up = cam.axes().up, down = {-up[0], -up[1], -up[2]};
+  for (const int i : {-1, 0, 17, 63, 64}) {
+    const GridNode top = grid.at(i, -1), bottom = grid.at(i, 32);
+    ASSERT_TRUE(top.known && bottom.known) << i;
+    EXPECT_LT(angle(top.sky, up), 1e-9) << i;
+    EXPECT_LT(angle(bottom.sky, down), 1e-9) << i;
+    EXPECT_EQ(top.y, 0.0);
+    EXPECT_EQ(bottom.y, 32.0);
+    EXPECT_EQ(top.x, grid.at(i, 0).x);
+  }
+  // A ray of the top row that missed the sky leaves the pole unknown.
+  std::vector<SkyPoint> blocked = rays;
+  blocked[40].theta = -1;
+  EXPECT_FALSE(RayGrid(blocked, 64, 32, cam.wrap()).at(3, -1).known);
+  EXPECT_TRUE(RayGrid(blocked, 64, 32, cam.wrap()).at(3, 32).known);
 }
 
 TEST(RayGrid, ARayThatMissedTheSkyLeavesItsNodesUnknown) {

@@ -57,7 +57,7 @@ TEST(ScriptErrors, UnknownNameInLcIsAnErrorAtItsLine) {
   for (const char* listed :
        {"spacetimes: lc.dihole, lc.kerr, lc.minkowski;", "observers and worldlines: lc.free_fall, lc.static_observer, "
                                                          "lc.worldline, lc.zamo;",
-        "cameras: lc.camera, lc.fisheye;", "skies: lc.sky_checker, lc.sky_image, lc.sky_stars, lc.starfield;",
+        "cameras: lc.camera, lc.equirect, lc.fisheye;", "skies: lc.sky_checker, lc.sky_image, lc.sky_stars, lc.starfield;",
         "objects: lc.disk, lc.sphere;", "light: lc.light;", "helpers: lc.apocentres, ", "lc.look_at", "lc.timeline",
         "(docs/shots.md)"})
     EXPECT_NE(msg.find(listed), std::string::npos) << listed << "\n" << msg;

@@ -17,6 +17,7 @@
 #include <cstring>
 #include <vector>
 
+#include "camera/equirect.hpp"
 #include "core/constants.hpp"
 #include "star_test_sky.hpp"
 #include "stars/sky_quad.hpp"
@@ -106,6 +107,61 @@ TEST(StarPass, StarsAtTheImagesEdgeAndBehindObjects) {
   EXPECT_EQ(render(cam, sky, cam.at(10.6, 5.6)).lit, 0);
 }
 
+// A whole sphere's equirectangular frame has no edges: a star panned
+// across the seam (x = 0 = W) or over a pole in tenth-pixel steps keeps its
+// light (within 2%: the pole's patches come from the mean of the first
+// row's rays, and pixels there are narrow wedges) and lands only on the
+// pixels around where it is, never twice and never lost, with and without
+// adaptive sampling's offset rays.
+TEST(StarPass, OnAWholeSphereAStarCrossesTheSeamAndThePolesWhole) {
+  const int W = 64, H = 32;
+  EquirectCamera::Params p;
+  p.yaw = 30;
+  p.pitch = -20;
+  const EquirectCamera cam(p, W, H);
+  auto at = [&](double x, double y) { return cam.direction(x, y); };
+  StarPassOptions o;
+  o.wrap = cam.wrap();
+  ASSERT_TRUE(o.wrap.columns && o.wrap.poles);
+  auto draw = [&](const std::vector<SkyPoint>& sky, const Vec3& star) {
+    const StarField field({{star, {1.0f, 1.0f, 1.0f}}}, nullptr, nullptr);
+    std::vector<float> image(3 * static_cast<std::size_t>(W * H), 0.0f);
+    const long images = add_point_stars(sky, W, H, field, at, o, image);
+    Seen s;
+    for (int j = 0; j < H; ++j)
+      for (int i = 0; i < W; ++i) {
+        const float r = image[3 * static_cast<std::size_t>(j * W + i)];
+        if (r <= 0) continue;
+        s.total += r * SkyQuad{{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}}.area();
+        ++s.lit;
+        s.min_i = std::min(s.min_i, i), s.max_i = std::max(s.max_i, i);
+        s.min_j = std::min(s.min_j, j), s.max_j = std::max(s.max_j, j);
+      }
+    EXPECT_EQ(images, 1);
+    return s;
+  };
+  for (const bool adaptive : {false, true}) {
+    const std::vector<SkyPoint> sky = test::flat_sky(at, W, H, adaptive);
+    const std::string how = adaptive ? " adaptive" : "";
+    for (int step = 0; step <= 20; ++step) {
+      // Across the seam, on row 9.
+      const double x = W - 1.0 + 0.1 * step;
+      const Seen s = draw(sky, cam.direction(x, 9.3));
+      EXPECT_NEAR(s.total, 1.0, 0.02) << "x " << x << how;
+      EXPECT_LE(s.max_j - s.min_j, 1) << "x " << x << how;
+      for (int i : {s.min_i, s.max_i})  // only the columns either side of the seam
+        EXPECT_TRUE(i >= W - 2 || i <= 1) << "x " << x << " lit column " << i << how;
+      // Over the north pole: from a pixel below it on column 10.3 up and
+      // down the other side (column 42.3), passing it at 0.05 pixels.
+      const double y = -1.05 + 0.1 * step;
+      const Seen n = draw(sky, cam.direction(10.3, y));
+      EXPECT_NEAR(n.total, 1.0, 0.02) << "y " << y << how;
+      EXPECT_LE(n.max_j, 1) << "y " << y << how;
+    }
+    // And a hair from the south pole.
+    EXPECT_NEAR(draw(sky, cam.direction(5.0, H - 0.01)).total, 1.0, 0.02) << how;
+  }
+}
 
 // The pass on several threads: rows of tiles and bands of pixels are
 // worked out apart and joined in a fixed order, so the image is the same

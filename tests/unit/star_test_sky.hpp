@@ -1,7 +1,8 @@
 #pragma once
 // Skies for the star pass's tests (stars/star_pass.hpp and its stages): a
 // pinhole camera looking along +z and the rays it casts, in flat space (each
-// ray's sky direction is its own) or through a point lens's map.
+// ray's sky direction is its own) or through a point lens's map; the
+// rays any camera casts in flat space.
 
 #include <cmath>
 #include <cstddef>
@@ -67,6 +68,23 @@ inline std::vector<SkyPoint> point_lens_sky(const Pinhole& cam, double einstein)
       Pinhole::set_direction(p, unit3({x * f, y * f, 1}));
     }
   return sky;
+}
+
+// The rays of any camera (a unit direction through image point (x, y):
+// `at`) in flat space, through each pixel's centre or (`adaptive`) through
+// (0.25, 0.25) and (0.75, 0.75) of it alternately along the row, as
+// Pinhole::sky.
+template <class Directions>
+std::vector<SkyPoint> flat_sky(const Directions& at, int width, int height, bool adaptive = false) {
+  std::vector<SkyPoint> s;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      SkyPoint p;
+      p.dx = p.dy = adaptive ? (i % 2 == 0 ? 0.25f : 0.75f) : 0.5f;
+      Pinhole::set_direction(p, at(i + p.dx, j + p.dy));
+      s.push_back(p);
+    }
+  return s;
 }
 
 }  // namespace lc::test
