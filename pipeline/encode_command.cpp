@@ -38,6 +38,20 @@ std::string size_text(const fs::path& p) {
   return fmt::format("{:.1f} MB", b / 1e6);
 }
 
+// The first frame's EXR (<shot>.<NNNN>.exr beside its PNG) and the
+// attributes the renderer recorded in its header; none when it is missing
+// or unreadable (the PNGs are the encoder's input, not the EXRs).
+std::pair<fs::path, ImageMetadata> first_frame_header(const FrameSequence& seq) {
+  const fs::path exr = seq.files.front().parent_path() / (seq.files.front().stem().string() + ".exr");
+  std::error_code ec;
+  if (!fs::exists(exr, ec)) return {exr, {}};
+  try {
+    return {exr, read_exr_metadata(exr)};
+  } catch (const std::exception&) {
+    return {exr, {}};
+  }
+}
+
 // The frame rate: --fps, else the "lightcone/fps" attribute of the first
 // frame's EXR (if the renderer recorded it), else 30 — divided by the
 // sequence's step, so a preview of every k-th frame keeps the shot's pace
@@ -46,18 +60,10 @@ std::string size_text(const fs::path& p) {
 // EXR when the shot's own rate cannot be a video's.
 std::pair<FrameRate, std::string> frame_rate(const EncodeCommand& cmd, const FrameSequence& seq, int step) {
   if (cmd.fps) return {parse_frame_rate(*cmd.fps, "--fps"), "--fps"};
-  const fs::path exr = seq.files.front().parent_path() /
-                       (seq.files.front().stem().string() + ".exr");  // <shot>.<NNNN>.exr beside the PNG
+  const auto [exr, header] = first_frame_header(seq);
   std::optional<std::string> recorded;
-  std::error_code ec;
-  if (fs::exists(exr, ec)) {
-    try {
-      for (const auto& [key, value] : read_exr_metadata(exr))
-        if (key == "lightcone/fps") recorded = value;
-    } catch (const std::exception&) {
-      // An unreadable EXR is not the encoder's business: the PNGs are its input.
-    }
-  }
+  for (const auto& [key, value] : header)
+    if (key == "lightcone/fps") recorded = value;
   const FrameRate shot =
       recorded ? parse_frame_rate(*recorded, fmt::format("the shot's rate (lightcone/fps of {}; --fps overrides it)",
                                                          exr.string()))
@@ -68,6 +74,28 @@ std::pair<FrameRate, std::string> frame_rate(const EncodeCommand& cmd, const Fra
           recorded ? fmt::format("the shot's {}, from {}, divided by the step {} to keep its pace", describe(shot),
                                  exr.filename().string(), step)
                    : fmt::format("the default 30 divided by the step {} to keep the pace; --fps to change", step)};
+}
+
+// How players must show the frames, as the first frame's EXR records it
+// (the camera's: a 360-degree video's sphere, a stereo layout); flat and
+// mono where it records nothing.  A layout this lightcone does not know is
+// left out with a warning rather than guessed.
+VideoLayout frame_layout(const FrameSequence& seq) {
+  const auto [exr, header] = first_frame_header(seq);
+  if (const auto layout = layout_from(header)) return *layout;
+  fmt::print(stderr, "encode: warning: {} records a projection or stereo layout this lightcone does not know; the video "
+                     "is written without one\n",
+             exr.string());
+  return {};
+}
+
+// "equirectangular 360-degree video, top-bottom stereo" for the summary.
+std::string layout_text(const VideoLayout& layout) {
+  std::string text;
+  if (layout.projection == VideoProjection::equirectangular) text = "equirectangular 360-degree video";
+  if (layout.stereo != StereoLayout::mono)
+    text += fmt::format("{}{} stereo", text.empty() ? "" : ", ", name_of(layout.stereo));
+  return text;
 }
 
 // The codec settings shared by every mode that encodes.
@@ -103,10 +131,13 @@ int encode_dir(const EncodeCommand& cmd, const InterruptGuard& guard) {
   require_complete(seq, dir, farm::check_frames_current(dir, seq.shot, seq.frames, cmd.allow_stale, "encode"));
   const FrameSpacing spacing = frame_spacing(seq.frames);
   const auto [fps, fps_source] = frame_rate(cmd, seq, spacing.step);
-  const EncodeOptions o = encode_options(cmd, fps);
+  EncodeOptions o = encode_options(cmd, fps);
+  o.layout = frame_layout(seq);
   container_for(cmd.output, o.codec);  // a wrong extension is reported before anything starts
-  fmt::print(stderr, "encode: shot {}, {} frames ({}), {} fps ({}), {} -> {}\n", seq.shot, seq.frames.size(),
-             describe_range(seq.frames, spacing), describe(fps), fps_source, settings_text(o), cmd.output.string());
+  const std::string layout = layout_text(o.layout);
+  fmt::print(stderr, "encode: shot {}, {} frames ({}), {} fps ({}), {}{} -> {}\n", seq.shot, seq.frames.size(),
+             describe_range(seq.frames, spacing), describe(fps), fps_source, settings_text(o),
+             layout.empty() ? "" : ", " + layout + " (marked for players)", cmd.output.string());
   // A size the codec refuses outright is encode_sequence's to refuse (before
   // it decodes a frame); one that encodes but will not play everywhere is
   // said here.

@@ -24,6 +24,7 @@
 #include "core/fields.hpp"
 #include "core/image_wrap.hpp"
 #include "core/registry.hpp"
+#include "image/video_layout.hpp"
 
 namespace lc {
 
@@ -33,7 +34,8 @@ namespace lc {
 // (nullopt where it has none), the direction through any image point
 // (its projection, continued where it has no ray: the star stage), whether
 // every image point has a ray (rays_everywhere), where its image continues
-// past its edges (wrap) and its axes (for reports).  A camera may also
+// past its edges (wrap), how a player must show its frames (video_layout)
+// and its axes (for reports).  A camera may also
 // have size_warning(): what is odd about the image size it was built for.
 template <class C>
 concept CameraModel = requires(const C& c, const typename C::Params& p, const CameraSample& s) {
@@ -44,6 +46,7 @@ concept CameraModel = requires(const C& c, const typename C::Params& p, const Ca
   { c.direction(s.px, s.py) } -> std::same_as<Vec3>;
   { C::rays_everywhere } -> std::convertible_to<bool>;
   { c.wrap() } -> std::same_as<ImageWrap>;
+  { c.video_layout() } -> std::same_as<VideoLayout>;
   { c.axes() } -> std::same_as<const CameraAxes&>;
 };
 
@@ -83,6 +86,10 @@ class Camera {
   // Where the image continues past its edges (a whole sphere's).
   ImageWrap wrap() const {
     return std::visit([](const auto& c) { return c.wrap(); }, kind_);
+  }
+  // How a player must show the frames (a 360-degree video's sphere).
+  VideoLayout video_layout() const {
+    return std::visit([](const auto& c) { return c.video_layout(); }, kind_);
   }
   // What is odd about the image size for this camera (an equirect frame
   // whose pixels are not square), for a warning; nullopt for most.

@@ -28,6 +28,7 @@
 #include "core/fields.hpp"
 #include "core/image_wrap.hpp"
 #include "core/tensor.hpp"
+#include "image/video_layout.hpp"
 
 namespace lc {
 
@@ -57,6 +58,7 @@ class EquirectCamera {
     axes_ = turned_axes(p.yaw, p.pitch, p.roll);
     wrap_.columns = p.longitude == 360.0;
     wrap_.poles = wrap_.columns && p.latitude == 180.0 && width % 2 == 0;
+    if (wrap_.columns && p.latitude == 180.0) layout_.projection = VideoProjection::equirectangular;
   }
 
   // The ray through the sample's image point, from the observer's own event.
@@ -73,6 +75,9 @@ class EquirectCamera {
   }
 
   ImageWrap wrap() const { return wrap_; }
+  // The whole sphere is a 360-degree video's; a window is a flat picture
+  // to a player.
+  VideoLayout video_layout() const { return layout_; }
 
   // Pixels that are not square (the spans' ratio is not the frame's): a
   // 360-degree frame that is not 2:1.  Players and video sites expect
@@ -92,6 +97,7 @@ class EquirectCamera {
  private:
   CameraAxes axes_;
   ImageWrap wrap_;
+  VideoLayout layout_;
   double lon_per_px_, lat_per_px_, half_width_, half_height_;
 };
 

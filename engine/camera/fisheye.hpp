@@ -24,6 +24,7 @@
 #include "core/fields.hpp"
 #include "core/image_wrap.hpp"
 #include "core/tensor.hpp"
+#include "image/video_layout.hpp"
 
 namespace lc {
 
@@ -75,6 +76,7 @@ class FisheyeCamera {
   Vec3 direction(double px, double py) const { return along((px - cx_) * inv_radius_, (cy_ - py) * inv_radius_); }
 
   ImageWrap wrap() const { return {}; }  // an image with edges
+  VideoLayout video_layout() const { return {}; }  // a flat picture
   const CameraAxes& axes() const { return axes_; }
 
  private:

@@ -19,6 +19,7 @@
 #include "core/fields.hpp"
 #include "core/image_wrap.hpp"
 #include "core/tensor.hpp"
+#include "image/video_layout.hpp"
 
 namespace lc {
 
@@ -60,6 +61,7 @@ class PinholeCamera {
   }
 
   ImageWrap wrap() const { return {}; }  // an image with edges
+  VideoLayout video_layout() const { return {}; }  // a flat picture
   const CameraAxes& axes() const { return axes_; }
 
  private:

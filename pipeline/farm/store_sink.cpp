@@ -33,6 +33,7 @@ void StoreSink::store(const CompletedFrame& cf) {
   // frame as the rays made it is the queue's); a frame without them is
   // written as it is (the files do not hold sky points).
   const FrameImage* written = &cf.image;
+  const Camera camera(facts.camera, cf.image.width, cf.image.height);
   FrameImage with_stars;
   FrameCost cost{.rays = cf.stats.rays, .reused = cf.stats.reused, .core_seconds = cf.stats.seconds};
   // Its cost is CPU time, as the rays' is: the stage's threads share the
@@ -41,8 +42,7 @@ void StoreSink::store(const CompletedFrame& cf) {
     const auto start = std::chrono::steady_clock::now();
     with_stars = {cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}, cf.image.alpha};
     double cpu = 0.0;
-    draw_point_stars(*stars, Camera(facts.camera, with_stars.width, with_stars.height), cf.image.sky, with_stars,
-                     star_threads_, &cpu);
+    draw_point_stars(*stars, camera, cf.image.sky, with_stars, star_threads_, &cpu);
     written = &with_stars;
     cost.star_seconds = cpu;
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
@@ -51,13 +51,16 @@ void StoreSink::store(const CompletedFrame& cf) {
     star_wall_seconds_ += took.count();
   }
   // The same header in every mode (threads, ranks), so files are identical.
-  // The frame rate lets `lightcone encode` play the frames at the shot's pace.
-  const ImageMetadata metadata = {{"lightcone/shot", shot_name_},
+  // The frame rate lets `lightcone encode` play the frames at the shot's
+  // pace, the layout (only where not a flat mono picture) tell a player
+  // they are a 360-degree video's.
+  ImageMetadata metadata = {{"lightcone/shot", shot_name_},
                                   {"lightcone/frame", std::to_string(cf.frame)},
                                   {"lightcone/fps", fmt::format("{}", fps_)},
                                   {"lightcone/spacetime", facts.spacetime},
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};
+  for (auto& attribute : layout_metadata(camera.video_layout())) metadata.push_back(std::move(attribute));
   store_.write_frame(cf.frame, *written, metadata, settings_, facts.inputs, facts.parts, cost,
                      display_);
 }

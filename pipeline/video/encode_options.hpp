@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "image/video_layout.hpp"
+
 namespace lc {
 
 // The codecs `lightcone encode --codec` offers (FFmpeg encoder in brackets):
@@ -60,6 +62,7 @@ struct EncodeOptions {
   Codec codec = Codec::h264;
   std::optional<int> crf;        // constant-quality level; unset: default_crf(codec)
   std::string preset;            // speed/quality knob; empty: default_preset(codec)
+  VideoLayout layout;            // a 360-degree or stereo video's, written into the container for players
 };
 
 // Called after each frame is encoded with (frames done, frames in all).  May

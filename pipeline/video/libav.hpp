@@ -11,6 +11,8 @@ extern "C" {
 #include <libavutil/error.h>
 #include <libavutil/opt.h>
 #include <libavutil/pixdesc.h>
+#include <libavutil/spherical.h>
+#include <libavutil/stereo3d.h>
 #include <libswscale/swscale.h>
 }
 
@@ -41,6 +43,15 @@ std::int64_t movie_timescale(AVRational time_base);
 
 // FFmpeg's muxer for a container ("mp4", "matroska", ...).
 const char* muxer_name(Container container);
+
+// Attaches `layout` to `stream` of `ctx` (before the header is written) as
+// the side data players read: AVSphericalMapping for an equirectangular
+// whole sphere, AVStereo3D for a stereo layout.  The MP4/MOV muxer writes
+// them as Google's spherical video V2 boxes (sv3d, st3d) only when told
+// unofficial extensions are welcome (it drops them silently otherwise), so
+// `ctx` is set to that; Matroska writes its own Projection and StereoMode.
+// Nothing for a flat mono layout.  Throws naming `where`.
+void add_layout(AVFormatContext* ctx, AVStream* stream, const VideoLayout& layout, const std::string& where);
 
 // Writes the header of `ctx` (opened for `container`, its one stream of
 // `time_base` added): for MP4/MOV with the index in front, so a browser

@@ -166,6 +166,8 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
   if (options.codec == Codec::hevc && (container == Container::mp4 || container == Container::mov))
     m.stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
 
+  libav::add_layout(m.fmt, m.stream, options.layout, where);
+
   libav::check(avio_open(&m.fmt->pb, m.output.temp_path().c_str(), AVIO_FLAG_WRITE),
                fmt::format("cannot write {}", where));
   libav::write_header(m.fmt, container, m.enc->time_base, where);
