@@ -30,19 +30,26 @@ local function cartesian(p, what)
   return {x, y, z}, r > 0 and math.acos(z / r) or 0, math.atan2(y, x)
 end
 
--- lc.look_at{from = pos, to = pos, fov = 60, roll = 0} -> a camera for an
--- observer at `from` that aims at the point `to`.  Aims along the straight
--- coordinate line (the flat-space picture: exact for M = 0; near a hole the
--- light from `to` arrives bent, so the point may appear off-centre).  The
--- result is lc.camera{fov, yaw, pitch, roll} relative to the default view
--- "at the hole" (forward = -e_r, up = -e_theta, right = e_phi).
+-- lc.look_at{from = pos, to = pos, camera = "camera", ...} -> a camera for
+-- an observer at `from` that aims at the point `to`.  Aims along the
+-- straight coordinate line (the flat-space picture: exact for M = 0; near a
+-- hole the light from `to` arrives bent, so the point may appear
+-- off-centre): the yaw and pitch that turn the default view "at the hole"
+-- (forward = -e_r, up = -e_theta, right = e_phi) towards `to`.  `camera`
+-- names the kind (lc.camera, the pinhole, by default; "fisheye",
+-- "equirect"); every other field goes to its constructor, but a `pitch`
+-- given is added to the aim's (the view axis that many degrees above the
+-- target: a dome master framed with the target low in the dome, as
+-- docs/cameras.md says) and a yaw is the aim's alone.
+local camera_kinds = {camera = true, fisheye = true, equirect = true}
+
 function M.look_at(t)
   if type(t) ~= "table" then error("look_at: expected look_at{from = ..., to = ...}", 2) end
-  for k in pairs(t) do
-    if k ~= "from" and k ~= "to" and k ~= "fov" and k ~= "roll" then
-      error("look_at: unknown field '" .. tostring(k) .. "' (it takes from, to, fov, roll)", 2)
-    end
+  local kind = t.camera or "camera"
+  if not camera_kinds[kind] then
+    error("look_at: camera '" .. tostring(kind) .. "' is not a camera kind (camera, fisheye, equirect)", 2)
   end
+  if t.yaw ~= nil then error("look_at: yaw is the aim's; the camera turns towards `to` by itself", 2) end
   local p, th, ph = cartesian(t.from, "from")
   local q = cartesian(t.to, "to")
   local d = {q[1] - p[1], q[2] - p[2], q[3] - p[3]}
@@ -53,8 +60,17 @@ function M.look_at(t)
   local ep = {-math.sin(ph), math.cos(ph), 0}
   local function dot(a, b) return a[1] * b[1] + a[2] * b[2] + a[3] * b[3] end
   local f, r, u = -dot(d, er) / len, dot(d, ep) / len, -dot(d, et) / len
-  return engine.camera{fov = t.fov, yaw = math.deg(math.atan2(r, f)),
-                       pitch = math.deg(math.asin(math.max(-1, math.min(1, u)))), roll = t.roll}
+  local fields = {}
+  for k, v in pairs(t) do
+    if k ~= "from" and k ~= "to" and k ~= "camera" then fields[k] = v end
+  end
+  fields.yaw = math.deg(math.atan2(r, f))
+  fields.pitch = math.deg(math.asin(math.max(-1, math.min(1, u)))) + (t.pitch or 0)
+  -- The constructor's own message (an unknown field, a value out of
+  -- range), at the line that called look_at.
+  local ok, made = pcall(engine[kind], fields)
+  if not ok then error("look_at: " .. tostring(made):gsub("^[^\n]-:%d+: ", ""), 2) end
+  return made
 end
 
 -- Animation helpers: easing, keyframes, timelines, paths (pure Lua).

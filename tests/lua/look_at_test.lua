@@ -26,4 +26,21 @@ local ok, err = pcall(lc.look_at, {from = {x = 1, y = 0, z = 0}, to = {x = 1, y 
 assert(not ok and err:find("same point"), err)
 ok, err = pcall(lc.look_at, {from = {x = 1}, to = {x = 2}, fvo = 3})
 assert(not ok and err:find("unknown field 'fvo'"), err)
+
+-- Any camera kind: the aim is the same, the other fields are the kind's;
+-- a pitch given raises the view axis above the target (a dome's framing).
+local dome = lc.look_at{from = {r = 30, theta = 90, phi = 0}, to = {x = 0, y = 0, z = 10}, camera = "fisheye",
+                        field = 180, tilt = 15, pitch = 55}
+near(dome.pitch, math.deg(math.atan2(10, 30)) + 55, 1e-9, "fisheye pitch: the aim's plus 55")
+near(dome.yaw, 0, 1e-9, "fisheye yaw")
+assert(dome.tilt == 15 and dome.field == 180, "the fisheye's own fields pass through")
+local vr = lc.look_at{from = {x = 0, y = 80, z = 0}, to = {x = 5, y = 0, z = 0}, camera = "equirect"}
+near(vr.yaw, -math.deg(math.atan2(5, 80)), 1e-9, "equirect yaw towards +x")
+assert(vr.longitude == nil and vr.pitch ~= nil, "an equirect with the aim alone")
+ok, err = pcall(lc.look_at, {from = {x = 1}, to = {x = 2}, camera = "kerr"})
+assert(not ok and err:find("camera 'kerr' is not a camera kind"), err)
+ok, err = pcall(lc.look_at, {from = {x = 1}, to = {x = 2}, camera = "fisheye", field = 20})
+assert(not ok and err:find("look_at: fisheye: field 'field' must be between 90 and 360", 1, true), err)
+ok, err = pcall(lc.look_at, {from = {x = 1}, to = {x = 2}, yaw = 3})
+assert(not ok and err:find("yaw is the aim's"), err)
 return true
