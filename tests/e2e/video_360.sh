@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# A 360-degree video through the equirectangular camera (docs/cameras.md),
+# as a producer for headsets and video sites would make one from the docs:
+#   1. shots/equirect_example.lua renders at 2:1 with no warning; the EXR
+#      records the projection; every pixel has a ray (no alpha channel);
+#      the frame is seamless: its last and first columns differ no more
+#      than neighbouring columns do.
+#   2. The encoded MP4 carries the spherical video metadata: ffprobe reports
+#      the equirectangular mapping, and the file holds Google's sv3d box.
+#   3. A frame that is not 2:1 renders with a warning that says what size
+#      it should be; a window of the sphere encodes as a flat video.
+#   4. A span out of range is an error at the shot's line, nothing written.
+source "$(dirname "$0")/lib.sh"
+e2e_begin "$@"
+SHOT="$SRC/shots/equirect_example.lua"
+
+# 1. The render, read back.
+CHECKS=$((CHECKS + 1))
+"$LIGHTCONE" render "$SHOT" --out vr --size 128x64 --progress 0 >render.out 2>render.err || fail "render: $(cat render.err)"
+if grep -q "warning" render.err; then fail "a 2:1 frame was warned about: $(cat render.err)"; fi
+"$PY" - vr/equirect_example.0000.exr <<'PY' || fail "the 360-degree frame is not as the camera says"
+import sys
+import OpenImageIO as oiio
+buf = oiio.ImageBuf(sys.argv[1])
+spec = buf.spec()
+if spec.getattribute("lightcone/projection") != "equirectangular":
+    sys.exit(f"lightcone/projection is {spec.getattribute('lightcone/projection')!r}")
+if "A" in list(spec.channelnames):
+    sys.exit("an alpha channel: every pixel of a whole sphere has a ray")
+W, H = spec.width, spec.height
+px = [[buf.getpixel(i, j) for i in range(W)] for j in range(H)]
+def column_step(a, b):  # mean |difference| of two columns' colours
+    return sum(abs(px[j][a][c] - px[j][b][c]) for j in range(H) for c in range(3)) / (3 * H)
+steps = sorted(column_step(i, i + 1) for i in range(W - 1))
+seam = column_step(W - 1, 0)
+if seam > steps[-1]:
+    sys.exit(f"the seam differs by {seam:.4f}, more than any neighbouring columns ({steps[-1]:.4f})")
+PY
+
+# 2. Encoded, marked for players.
+CHECKS=$((CHECKS + 1))
+"$LIGHTCONE" encode vr -o vr.mp4 >encode.out 2>encode.err || fail "encode: $(cat encode.err)"
+grep -q "equirectangular 360-degree video" encode.err || fail "encode did not say the video is a 360-degree one: $(cat encode.err)"
+side=$(ffprobe -v error -show_entries stream_side_data=side_data_type,projection -of default=nw=1 vr.mp4 2>&1)
+grep -qx "projection=equirectangular" <<<"$side" || fail "ffprobe finds no equirectangular mapping in vr.mp4: $side"
+"$PY" -c 'import sys; d = open(sys.argv[1], "rb").read(); sys.exit(0 if b"sv3d" in d and b"equi" in d else "no sv3d/equi box")' vr.mp4 ||
+  fail "vr.mp4 lacks the spherical video V2 boxes"
+check_probe vr.mp4 width=128 height=64
+
+# 3. Not 2:1: rendered, with a warning naming the size it should be; a
+# window is a flat picture.
+CHECKS=$((CHECKS + 1))
+"$LIGHTCONE" render "$SHOT" --out wide --size 96x64 --progress 0 >wide.out 2>wide.err || fail "render 96x64: $(cat wide.err)"
+grep -q "warning: frame 0: equirect: .* 2 times as wide as it is high" wide.err ||
+  fail "a 3:2 whole sphere was not warned about: $(cat wide.err)"
+[ -f wide/equirect_example.0000.png ] || fail "the 3:2 frame was not rendered"
+sed 's/lc.equirect{}/lc.equirect{longitude = 180, latitude = 90}/' "$SHOT" >window.lua
+"$LIGHTCONE" render window.lua --out window --size 64x32 --progress 0 >window.out 2>window.err || fail "window: $(cat window.err)"
+"$LIGHTCONE" encode window -o window.mp4 >wenc.out 2>wenc.err || fail "encode window: $(cat wenc.err)"
+side=$(ffprobe -v error -show_entries stream_side_data=side_data_type -of default=nw=1 window.mp4 2>&1)
+[ -z "$side" ] || fail "a window of the sphere was marked for players: $side"
+
+# 4. Bad spans, at the shot's line, nothing written.
+sed 's/lc.equirect{}/lc.equirect{longitude = 400}/' "$SHOT" >far.lua
+expect_error far "far.lua:20: equirect: field 'longitude' must be greater than 0 and at most 360" -- \
+  "$LIGHTCONE" render far.lua --out far --size 32x16
+sed 's/lc.equirect{}/lc.equirect{latitude = 0}/' "$SHOT" >flat.lua
+expect_error flat "flat.lua:20: equirect: field 'latitude' must be greater than 0 and at most 180" -- \
+  "$LIGHTCONE" render flat.lua --out flat --size 32x16
+CHECKS=$((CHECKS + 1))
+if ls far/*.png flat/*.png >/dev/null 2>&1; then fail "a refused shot wrote frames"; fi
+
+e2e_end
