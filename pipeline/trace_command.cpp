@@ -86,9 +86,12 @@ int run_trace(const TraceCommand& cmd) {
         };
         // A pixel the camera has no ray through (outside a fisheye's disc)
         // is reported as such, with an empty path.
-        if (!sc.camera.ray({i + 0.5, j + 0.5, 0.0})) return no_ray_sample();
-        RaySample r = trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5),
-                                   [&](const RayState& y, double sigma) { record(y, sigma); });
+        const std::optional<CameraRay> ray = sc.camera.ray({i + 0.5, j + 0.5, 0.0});
+        if (!ray) return no_ray_sample();
+        // From the camera's eye for the pixel (a stereo camera's is beside
+        // the observer).
+        EyePool eyes;
+        RaySample r = trace_sample(sc, eyes.start(sc, *ray), [&](const RayState& y, double sigma) { record(y, sigma); });
         record(r.end, r.lambda_end);
         if (r.kind == HitKind::sky) end = std::decay_t<decltype(sc.spacetime)>::ends[r.spacetime_end].name;
         return r;

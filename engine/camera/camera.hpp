@@ -15,12 +15,14 @@
 #include <string_view>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "camera/camera_axes.hpp"
 #include "camera/camera_sample.hpp"
 #include "camera/equirect.hpp"
 #include "camera/fisheye.hpp"
 #include "camera/pinhole.hpp"
+#include "camera/stereo.hpp"
 #include "core/fields.hpp"
 #include "core/image_wrap.hpp"
 #include "core/registry.hpp"
@@ -34,8 +36,10 @@ namespace lc {
 // (nullopt where it has none), the direction through any image point
 // (its projection, continued where it has no ray: the star stage), whether
 // every image point has a ray (rays_everywhere), where its image continues
-// past its edges (wrap), how a player must show its frames (video_layout)
-// and its axes (for reports).  A camera may also
+// past its edges (wrap), how a player must show its frames (video_layout),
+// its eyes' pictures in the frame (one; two in stereo) and its axes (for
+// reports).  direction() and wrap() are an eye's picture's: both eyes of
+// a stereo camera share the projection, from different places.  A camera may also
 // have size_warning(): what is odd about the image size it was built for.
 template <class C>
 concept CameraModel = requires(const C& c, const typename C::Params& p, const CameraSample& s) {
@@ -47,6 +51,7 @@ concept CameraModel = requires(const C& c, const typename C::Params& p, const Ca
   { C::rays_everywhere } -> std::convertible_to<bool>;
   { c.wrap() } -> std::same_as<ImageWrap>;
   { c.video_layout() } -> std::same_as<VideoLayout>;
+  { c.pictures() } -> std::same_as<std::vector<EyePicture>>;
   { c.axes() } -> std::same_as<const CameraAxes&>;
 };
 
@@ -70,11 +75,12 @@ class Camera {
   std::optional<CameraRay> ray(const CameraSample& s) const {
     return std::visit([&](const auto& c) { return c.ray(s); }, kind_);
   }
-  // The direction through image point (px, py) from the observer's event,
-  // for what works with directions alone (the star stage's patches of sky,
-  // tests): where the camera has a ray, that ray's direction; beyond (a
-  // fisheye's disc), the camera's projection continued, so patches at the
-  // edge of where it has rays keep their solid angle.
+  // The direction through image point (px, py) of an eye's picture (the
+  // frame, in mono), for what works with directions alone (the star
+  // stage's patches of sky, tests): where the camera has a ray, that ray's
+  // direction; beyond (a fisheye's disc, a picture's edge), the camera's
+  // projection continued, so patches at the edge of where it has rays
+  // keep their solid angle.
   Vec3 direction(double px, double py) const {
     return std::visit([&](const auto& c) { return c.direction(px, py); }, kind_);
   }
@@ -86,6 +92,10 @@ class Camera {
   // Where the image continues past its edges (a whole sphere's).
   ImageWrap wrap() const {
     return std::visit([](const auto& c) { return c.wrap(); }, kind_);
+  }
+  // The eyes' pictures in the frame: the whole frame, or each eye's half.
+  std::vector<EyePicture> pictures() const {
+    return std::visit([](const auto& c) { return c.pictures(); }, kind_);
   }
   // How a player must show the frames (a 360-degree video's sphere).
   VideoLayout video_layout() const {

@@ -13,9 +13,19 @@
 // edges (beyond a pole it reaches over to the other side), which the star
 // stage's patches at the edges use; the whole sphere wraps around and over
 // its poles (core/image_wrap.hpp).
+// In stereo (top-bottom: camera/stereo.hpp) W x H is one eye's picture and
+// the eyes are omnidirectional stereo's (ODS): for each viewing direction
+// the eye sits on a circle of radius separation / 2 about the observer in
+// the camera's forward-right plane, at right angles to the direction's
+// longitude (left eye to the left), so every ray is tangent to the circle;
+// the radius shrinks linearly to 0 between latitudes pole_merge_from and
+// pole_merge_to (Blender Cycles' pole merge), so the poles, where every
+// longitude meets, show no seam of disagreeing eyes.
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -24,6 +34,7 @@
 
 #include "camera/camera_axes.hpp"
 #include "camera/camera_sample.hpp"
+#include "camera/stereo.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "core/image_wrap.hpp"
@@ -39,6 +50,8 @@ class EquirectCamera {
   struct Params {
     double longitude = 360.0;  // the window's span in longitude, degrees
     double latitude = 180.0;   // ... and in latitude
+    StereoLayout stereo = StereoLayout::mono;
+    double separation = 1.0;  // M
     double yaw = 0.0, pitch = 0.0, roll = 0.0;
     static constexpr auto fields = std::tuple_cat(
         std::tuple{field("longitude", &Params::longitude, std::optional<double>{360.0}, above(0.0), at_most(360.0),
@@ -46,26 +59,50 @@ class EquirectCamera {
                          "degrees"),
                    field("latitude", &Params::latitude, std::optional<double>{180.0}, above(0.0), at_most(180.0),
                          "the span of latitude up the image, centred on forward (180: pole to pole)", "degrees")},
-        orientation_fields<Params>());
+        stereo_fields<Params>(), orientation_fields<Params>());
+    // ODS is delivered top-bottom (the 360-degree video sites' layout); a
+    // side-by-side sphere would be 4:1.
+    void validate() const {
+      if (stereo == StereoLayout::side_by_side)
+        throw std::invalid_argument("stereo 'side-by-side' is not offered for the equirect: omnidirectional stereo is "
+                                    "delivered top-bottom (stereo = \"top-bottom\", a square frame for the whole sphere)");
+    }
   };
+  // Where ODS's eyes start merging towards the poles, and where they have
+  // met (Cycles' defaults), radians.
+  static constexpr double pole_merge_from = 60.0 * degree, pole_merge_to = 75.0 * degree;
 
   // Image size in pixels; the parameters' angles are in degrees.
   EquirectCamera(const Params& p, int width, int height)
-      : lon_per_px_(p.longitude * degree / width),
-        lat_per_px_(p.latitude * degree / height),
-        half_width_(0.5 * width),
-        half_height_(0.5 * height) {
+      : frame_(p.stereo, width, height),
+        lon_per_px_(p.longitude * degree / frame_.eye_width()),
+        lat_per_px_(p.latitude * degree / frame_.eye_height()),
+        half_width_(0.5 * frame_.eye_width()),
+        half_height_(0.5 * frame_.eye_height()),
+        half_separation_(p.stereo == StereoLayout::mono ? 0.0 : 0.5 * p.separation) {
     axes_ = turned_axes(p.yaw, p.pitch, p.roll);
     wrap_.columns = p.longitude == 360.0;
-    wrap_.poles = wrap_.columns && p.latitude == 180.0 && width % 2 == 0;
+    wrap_.poles = wrap_.columns && p.latitude == 180.0 && frame_.eye_width() % 2 == 0;
     if (wrap_.columns && p.latitude == 180.0) layout_.projection = VideoProjection::equirectangular;
+    layout_.stereo = p.stereo;
   }
 
-  // The ray through the sample's image point, from the observer's own event.
-  std::optional<CameraRay> ray(const CameraSample& s) const { return CameraRay{direction(s.px, s.py), {}, s.time}; }
+  // The ray through the sample's image point, from the observer's own
+  // event, or in stereo from the eye of the point's picture on the ODS
+  // circle.
+  std::optional<CameraRay> ray(const CameraSample& s) const {
+    if (frame_.layout() == StereoLayout::mono) return CameraRay{direction(s.px, s.py), {}, s.time};
+    const EyePoint v = frame_.view(s.px, s.py);
+    CameraRay r{direction(v.px, v.py), {}, s.time};
+    const double lon = (v.px - half_width_) * lon_per_px_, lat = std::abs((half_height_ - v.py) * lat_per_px_);
+    const double merge = std::clamp((pole_merge_to - lat) / (pole_merge_to - pole_merge_from), 0.0, 1.0);
+    const double radius = v.eye * half_separation_ * merge, c = std::cos(lon), s_ = std::sin(lon);
+    for (int k = 0; k < 3; ++k) r.eye[k] = radius * (c * axes_.right[k] - s_ * axes_.forward[k]);
+    return r;
+  }
 
-  // The unit direction through image point (px, py), the formula above
-  // also beyond the frame's edges.
+  // The unit direction through image point (px, py) of an eye's picture
+  // (the frame, in mono), the formula above also beyond its edges.
   Vec3 direction(double px, double py) const {
     const double lon = (px - half_width_) * lon_per_px_, lat = (half_height_ - py) * lat_per_px_;
     const double cl = std::cos(lat), x = cl * std::sin(lon), z = cl * std::cos(lon), y = std::sin(lat);
@@ -74,9 +111,11 @@ class EquirectCamera {
     return d;
   }
 
+  // Each eye's picture wraps (top-bottom stereo keeps every row in one).
   ImageWrap wrap() const { return wrap_; }
+  std::vector<EyePicture> pictures() const { return frame_.pictures(); }
   // The whole sphere is a 360-degree video's; a window is a flat picture
-  // to a player.
+  // to a player.  Its stereo layout, in stereo.
   VideoLayout video_layout() const { return layout_; }
 
   // Pixels that are not square (the spans' ratio is not the frame's): a
@@ -96,9 +135,10 @@ class EquirectCamera {
 
  private:
   CameraAxes axes_;
+  StereoFrame frame_;
   ImageWrap wrap_;
   VideoLayout layout_;
-  double lon_per_px_, lat_per_px_, half_width_, half_height_;
+  double lon_per_px_, lat_per_px_, half_width_, half_height_, half_separation_;
 };
 
 }  // namespace lc

@@ -20,6 +20,7 @@
 
 #include "camera/camera_axes.hpp"
 #include "camera/camera_sample.hpp"
+#include "camera/stereo.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "core/image_wrap.hpp"
@@ -51,7 +52,9 @@ class FisheyeCamera {
       : half_field_(0.5 * p.full_angle * degree),
         cx_(0.5 * width),
         cy_(0.5 * height),
-        inv_radius_(2.0 / std::min(width, height)) {
+        inv_radius_(2.0 / std::min(width, height)),
+        width_(width),
+        height_(height) {
     axes_ = turned_axes(p.yaw, p.pitch, p.roll);
     // The tilt turns the axis (forward) towards down, about the camera's right.
     const double c = std::cos(p.tilt * degree), s = std::sin(p.tilt * degree);
@@ -77,6 +80,7 @@ class FisheyeCamera {
 
   ImageWrap wrap() const { return {}; }  // an image with edges
   VideoLayout video_layout() const { return {}; }  // a flat picture
+  std::vector<EyePicture> pictures() const { return {{0, 0, 0, width_, height_}}; }  // one eye
   const CameraAxes& axes() const { return axes_; }
 
  private:
@@ -93,6 +97,7 @@ class FisheyeCamera {
 
   CameraAxes axes_;
   double half_field_, cx_, cy_, inv_radius_;
+  int width_, height_;
 };
 
 }  // namespace lc

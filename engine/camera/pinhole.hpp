@@ -7,6 +7,9 @@
 // Pixel (i, j) (i from the left, j from the top, centres at i + 1/2, j + 1/2)
 // looks along normalize(forward + x right + y up) with
 // x = (2 px / W - 1) tan(fov/2), y = (1 - 2 py / H) tan(fov/2) H / W.
+// In stereo (camera/stereo.hpp) W x H is one eye's picture and the eyes
+// are parallel pinholes half the separation left and right of the
+// observer along the camera's right.
 
 #include <cmath>
 #include <optional>
@@ -15,6 +18,7 @@
 
 #include "camera/camera_axes.hpp"
 #include "camera/camera_sample.hpp"
+#include "camera/stereo.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "core/image_wrap.hpp"
@@ -28,26 +32,40 @@ class PinholeCamera {
   static constexpr std::string_view name = "camera";  // lc.camera{...}
   static constexpr bool rays_everywhere = true;
   struct Params {
-    double fov = 60.0;  // horizontal, degrees
+    double fov = 60.0;  // horizontal, degrees (of one eye's picture in stereo)
+    StereoLayout stereo = StereoLayout::mono;
+    double separation = 1.0;  // M
     double yaw = 0.0, pitch = 0.0, roll = 0.0;
     static constexpr auto fields =
         std::tuple_cat(std::tuple{field("fov", &Params::fov, std::optional<double>{60.0}, above(0.0), below(180.0),
-                                        "horizontal field of view", "degrees")},
-                       orientation_fields<Params>());
+                                        "horizontal field of view (of each eye's picture, in stereo)", "degrees")},
+                       stereo_fields<Params>(), orientation_fields<Params>());
   };
 
   // Image size in pixels; the parameters' angles are in degrees.
   PinholeCamera(const Params& p, int width, int height)
-      : tan_half_(std::tan(0.5 * p.fov * degree)), width_(width), height_(height) {
+      : frame_(p.stereo, width, height),
+        tan_half_(std::tan(0.5 * p.fov * degree)),
+        half_separation_(p.stereo == StereoLayout::mono ? 0.0 : 0.5 * p.separation),
+        width_(frame_.eye_width()),
+        height_(frame_.eye_height()) {
     axes_ = turned_axes(p.yaw, p.pitch, p.roll);
   }
 
   // The ray through the sample's image point: every point has one, from
-  // the observer's own event.
-  std::optional<CameraRay> ray(const CameraSample& s) const { return CameraRay{direction(s.px, s.py), {}, s.time}; }
+  // the observer's own event, or in stereo from the eye whose picture the
+  // point is in.
+  std::optional<CameraRay> ray(const CameraSample& s) const {
+    if (frame_.layout() == StereoLayout::mono) return CameraRay{direction(s.px, s.py), {}, s.time};
+    const EyePoint v = frame_.view(s.px, s.py);
+    CameraRay r{direction(v.px, v.py), {}, s.time};
+    for (int k = 0; k < 3; ++k) r.eye[k] = v.eye * half_separation_ * axes_.right[k];
+    return r;
+  }
 
   // Direction (on the legs, unit length) through the image point (px, py) in
-  // pixel units: pixel (i, j) spans [i, i+1] x [j, j+1], j = 0 at the top.
+  // pixel units of an eye's picture (the frame, in mono): pixel (i, j)
+  // spans [i, i+1] x [j, j+1], j = 0 at the top.
   Vec3 direction(double px, double py) const {
     const Vec3& forward_ = axes_.forward;
     const Vec3& up_ = axes_.up;
@@ -61,13 +79,15 @@ class PinholeCamera {
   }
 
   ImageWrap wrap() const { return {}; }  // an image with edges
-  VideoLayout video_layout() const { return {}; }  // a flat picture
+  VideoLayout video_layout() const { return {VideoProjection::flat, frame_.layout()}; }
+  std::vector<EyePicture> pictures() const { return frame_.pictures(); }
   const CameraAxes& axes() const { return axes_; }
 
  private:
   CameraAxes axes_;
-  double tan_half_;
-  int width_, height_;
+  StereoFrame frame_;
+  double tan_half_, half_separation_;
+  int width_, height_;  // of an eye's picture
 };
 
 }  // namespace lc

@@ -7,6 +7,7 @@
 // and writes it into the video's container (Google's spherical video V2
 // boxes in MP4, Matroska's projection and stereo elements: docs/cameras.md).
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,7 +17,9 @@
 namespace lc {
 
 enum class VideoProjection { flat, equirectangular };
-enum class StereoLayout { mono, top_bottom, side_by_side };  // top_bottom: the left eye on top
+enum class StereoLayout { mono, top_bottom, side_by_side };  // the left eye on top, or on the left
+// Its names in a shot (a camera's `stereo` field) and in an EXR header.
+constexpr std::array<std::string_view, 3> choice_names(StereoLayout) { return {"mono", "top-bottom", "side-by-side"}; }
 
 struct VideoLayout {
   VideoProjection projection = VideoProjection::flat;
@@ -30,9 +33,7 @@ inline constexpr std::string_view projection_attribute = "lightcone/projection";
 inline constexpr std::string_view stereo_attribute = "lightcone/stereo";
 
 inline std::string_view name_of(VideoProjection p) { return p == VideoProjection::equirectangular ? "equirectangular" : "flat"; }
-inline std::string_view name_of(StereoLayout s) {
-  return s == StereoLayout::top_bottom ? "top-bottom" : s == StereoLayout::side_by_side ? "side-by-side" : "mono";
-}
+inline std::string_view name_of(StereoLayout s) { return choice_names(s)[static_cast<std::size_t>(s)]; }
 
 // The header attributes of `layout`.
 inline ImageMetadata layout_metadata(const VideoLayout& layout) {

@@ -1,5 +1,7 @@
 #include "render/point_star_stage.hpp"
 
+#include <vector>
+
 #include "stars/star_pass.hpp"
 
 namespace lc {
@@ -28,13 +30,37 @@ void black_outside_rays(const Camera& camera, FrameImage& image) {
 long draw_point_stars(const PointStars& stars, const Camera& camera, std::span<const SkyPoint> rays,
                       FrameImage& image, int threads, double* cpu_seconds) {
   StarPassOptions options;
-  options.glare = stars.glare;
-  options.glare_radius = stars.glare_size * image.height;
   options.threads = threads;
   options.wrap = camera.wrap();
-  const long drawn = add_point_stars(rays, image.width, image.height, *stars.field,
-                                     [&](double x, double y) { return unit3(camera.direction(x, y)); }, options,
-                                     image.rgb, cpu_seconds);
+  options.glare = stars.glare;
+  const auto directions = [&](double x, double y) { return unit3(camera.direction(x, y)); };
+  const std::vector<EyePicture> pictures = camera.pictures();
+  long drawn = 0;
+  if (pictures.size() == 1) {
+    options.glare_radius = stars.glare_size * image.height;
+    drawn = add_point_stars(rays, image.width, image.height, *stars.field, directions, options, image.rgb, cpu_seconds);
+  } else {
+    // A stereo frame: each eye's picture is a frame of its own to the
+    // pass (its edges, its wrap), drawn on a copy of its pixels.
+    for (const EyePicture& p : pictures) {
+      const std::size_t w = static_cast<std::size_t>(p.width), n = w * static_cast<std::size_t>(p.height);
+      std::vector<SkyPoint> sky(n);
+      std::vector<float> rgb(3 * n);
+      auto pixel = [&](std::size_t i, std::size_t j) {
+        return (static_cast<std::size_t>(p.y0) + j) * static_cast<std::size_t>(image.width) + p.x0 + i;
+      };
+      for (std::size_t j = 0; j < static_cast<std::size_t>(p.height); ++j)
+        for (std::size_t i = 0; i < w; ++i) {
+          sky[j * w + i] = rays[pixel(i, j)];
+          for (int c = 0; c < 3; ++c) rgb[3 * (j * w + i) + c] = image.rgb[3 * pixel(i, j) + c];
+        }
+      options.glare_radius = stars.glare_size * p.height;
+      drawn += add_point_stars(sky, p.width, p.height, *stars.field, directions, options, rgb, cpu_seconds);
+      for (std::size_t j = 0; j < static_cast<std::size_t>(p.height); ++j)
+        for (std::size_t i = 0; i < w; ++i)
+          for (int c = 0; c < 3; ++c) image.rgb[3 * pixel(i, j) + c] = rgb[3 * (j * w + i) + c];
+    }
+  }
   if (!camera.rays_everywhere()) black_outside_rays(camera, image);
   return drawn;
 }

@@ -69,11 +69,17 @@ class EyePool {
     if (r.time != 0.0)
       throw std::invalid_argument("a camera sample with its own time: this build traces every ray at the frame's moment");
     if (r.at_observer()) return {&sc.eye, r.direction};
-    return {&eyes_.emplace_back(displaced_eye(sc, r.eye)), r.direction};
+    // A stereo pinhole's eye is the same for a row of rays: made once.
+    if (eyes_.empty() || r.eye != last_offset_) {
+      eyes_.emplace_back(displaced_eye(sc, r.eye));
+      last_offset_ = r.eye;
+    }
+    return {&eyes_.back(), r.direction};
   }
 
  private:
   std::deque<Eye> eyes_;
+  Vec3 last_offset_{};
 };
 
 }  // namespace lc

@@ -97,18 +97,23 @@ void trace_records(const SceneIn<S>& sc, std::span<const RayStart> starts, std::
   });
 }
 
-// Traces the camera ray along local direction n from the frame's eye and
-// shades it.  OnStep(const RayState& y, double sigma) sees the start of
-// every accepted step in trace coordinates with its affine parameter (for
-// `lightcone trace`; NoPath when rendering).
+// Traces the ray `start` (an eye, the frame's or a stereo camera's, and a
+// local direction) and shades it.  OnStep(const RayState& y, double sigma)
+// sees the start of every accepted step in trace coordinates with its
+// affine parameter (for `lightcone trace`; NoPath when rendering).
 template <class S, class OnStep>
-RaySample trace_sample(const SceneIn<S>& sc, const Vec3& n, OnStep&& on_step) {
+RaySample trace_sample(const SceneIn<S>& sc, const RayStart& start, OnStep&& on_step) {
   RaySample out;
-  const RayStart start{&sc.eye, n};
   HitRecord& record = out;
   detail::trace_rays<1>(sc, std::span<const RayStart>(&start, 1), std::span<HitRecord>(&record, 1), on_step);
   shade(sc, out);
   return out;
+}
+
+// The same along local direction n from the frame's eye.
+template <class S, class OnStep>
+RaySample trace_sample(const SceneIn<S>& sc, const Vec3& n, OnStep&& on_step) {
+  return trace_sample(sc, RayStart{&sc.eye, n}, on_step);
 }
 
 // Traces the camera rays of local directions `dirs` from the frame's eye

@@ -9,7 +9,11 @@
 #      the equirectangular mapping, and the file holds Google's sv3d box.
 #   3. A frame that is not 2:1 renders with a warning that says what size
 #      it should be; a window of the sphere encodes as a flat video.
-#   4. A span out of range is an error at the shot's line, nothing written.
+#   4. Omnidirectional stereo (stereo = "top-bottom"): a square frame of two
+#      2:1 pictures whose MP4 carries the stereo layout beside the
+#      spherical mapping; a stereo pinhole side by side says so too.
+#   5. A span out of range, a separation of 0 and a side-by-side sphere are
+#      errors at the shot's line, nothing written.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 SHOT="$SRC/shots/equirect_example.lua"
@@ -60,14 +64,36 @@ sed 's/lc.equirect{}/lc.equirect{longitude = 180, latitude = 90}/' "$SHOT" >wind
 side=$(ffprobe -v error -show_entries stream_side_data=side_data_type -of default=nw=1 window.mp4 2>&1)
 [ -z "$side" ] || fail "a window of the sphere was marked for players: $side"
 
-# 4. Bad spans, at the shot's line, nothing written.
+# 4. ODS and a stereo pinhole, marked for players.
+CHECKS=$((CHECKS + 1))
+sed 's/lc.equirect{}/lc.equirect{stereo = "top-bottom", separation = 1}/' "$SHOT" >ods.lua
+"$LIGHTCONE" render ods.lua --out ods --size 128x128 --progress 0 >ods.out 2>ods.err || fail "render ODS: $(cat ods.err)"
+if grep -q "warning" ods.err; then fail "a square ODS frame was warned about: $(cat ods.err)"; fi
+"$LIGHTCONE" encode ods -o ods.mp4 >odsenc.out 2>odsenc.err || fail "encode ODS: $(cat odsenc.err)"
+side=$(ffprobe -v error -show_entries stream_side_data=side_data_type,projection,type -of default=nw=1 ods.mp4 2>&1)
+grep -qx "projection=equirectangular" <<<"$side" || fail "ods.mp4: no equirectangular mapping: $side"
+grep -qx "type=top and bottom" <<<"$side" || fail "ods.mp4: no top-bottom stereo layout: $side"
+sed 's/lc.equirect{}/lc.camera{fov = 60, stereo = "side-by-side", separation = 0.5}/' "$SHOT" >pair.lua
+"$LIGHTCONE" render pair.lua --out pair --size 128x48 --progress 0 >pair.out 2>pair.err || fail "render a stereo pair: $(cat pair.err)"
+"$LIGHTCONE" encode pair -o pair.mp4 >pairenc.out 2>pairenc.err || fail "encode a stereo pair: $(cat pairenc.err)"
+side=$(ffprobe -v error -show_entries stream_side_data=side_data_type,projection,type -of default=nw=1 pair.mp4 2>&1)
+grep -qx "type=side by side" <<<"$side" || fail "pair.mp4: no side-by-side stereo layout: $side"
+if grep -q "projection=" <<<"$side"; then fail "a stereo pinhole was marked as a sphere: $side"; fi
+
+# 5. Bad spans and stereo, at the shot's line, nothing written.
 sed 's/lc.equirect{}/lc.equirect{longitude = 400}/' "$SHOT" >far.lua
 expect_error far "far.lua:20: equirect: field 'longitude' must be greater than 0 and at most 360" -- \
   "$LIGHTCONE" render far.lua --out far --size 32x16
 sed 's/lc.equirect{}/lc.equirect{latitude = 0}/' "$SHOT" >flat.lua
 expect_error flat "flat.lua:20: equirect: field 'latitude' must be greater than 0 and at most 180" -- \
   "$LIGHTCONE" render flat.lua --out flat --size 32x16
+sed 's/lc.equirect{}/lc.equirect{stereo = "top-bottom", separation = 0}/' "$SHOT" >blind.lua
+expect_error blind "blind.lua:20: equirect: field 'separation' must be greater than 0" -- \
+  "$LIGHTCONE" render blind.lua --out blind --size 32x32
+sed 's/lc.equirect{}/lc.equirect{stereo = "side-by-side"}/' "$SHOT" >wide4.lua
+expect_error wide4 "wide4.lua:20: equirect: stereo 'side-by-side' is not offered for the equirect" -- \
+  "$LIGHTCONE" render wide4.lua --out wide4 --size 64x16
 CHECKS=$((CHECKS + 1))
-if ls far/*.png flat/*.png >/dev/null 2>&1; then fail "a refused shot wrote frames"; fi
+if ls far/*.png flat/*.png blind/*.png wide4/*.png >/dev/null 2>&1; then fail "a refused shot wrote frames"; fi
 
 e2e_end
