@@ -52,6 +52,32 @@ std::pair<int, int> parse_pixel(const std::string& text, const std::string& flag
   return parse_pair(text, ",", flag, "I,J (column from the left, row from the top, from 0)");
 }
 
+Region parse_region(const std::string& text, int frame_width, int frame_height) {
+  const std::string flag = "--region";
+  int v[4];
+  std::size_t from = 0;
+  for (int k = 0; k < 4; ++k) {
+    const std::size_t comma = k < 3 ? text.find(',', from) : std::string::npos;
+    const std::string_view part =
+        comma == std::string::npos && k < 3 ? std::string_view() : std::string_view(text).substr(from, comma - from);
+    bool too_large = false;
+    const std::optional<int> n = whole_number(part, too_large);
+    if (too_large) throw std::invalid_argument(fmt::format("{} '{}': {} is far too large", flag, text, part));
+    if (!n || (k == 3 && text.find(',', from) != std::string::npos))
+      throw std::invalid_argument(fmt::format("{} '{}': expected X0,Y0,X1,Y1, four whole numbers of pixels (X1 and Y1 "
+                                              "past the window's last column and row)", flag, text));
+    v[k] = *n;
+    from = comma + 1;
+  }
+  const int x0 = v[0], y0 = v[1], x1 = v[2], y1 = v[3];
+  if (x1 <= x0 || y1 <= y0)
+    throw std::invalid_argument(fmt::format("{} {}: empty (X1 must be more than X0, Y1 more than Y0)", flag, text));
+  if (x1 > frame_width || y1 > frame_height)
+    throw std::invalid_argument(fmt::format("{} {}: reaches outside the {}x{} frame (X1 at most {}, Y1 at most {})", flag,
+                                            text, frame_width, frame_height, frame_width, frame_height));
+  return {{x0, y0, frame_width, frame_height}, x1 - x0, y1 - y0};
+}
+
 std::pair<int, int> output_size(int width, int height, const std::optional<std::string>& size, double scale) {
   if (size) std::tie(width, height) = parse_image_size(*size, "--size");
   if (!(scale > 0.0) || !std::isfinite(scale))

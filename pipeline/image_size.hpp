@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "camera/image_window.hpp"
+
 namespace lc {
 
 // The largest side a frame may have (the renderer's limit; encoders have
@@ -30,5 +32,18 @@ std::pair<int, int> parse_pixel(const std::string& text, const std::string& flag
 // is not a size, the scale is not a positive number, or a side ends up
 // outside 1 .. max_frame_side.
 std::pair<int, int> output_size(int width, int height, const std::optional<std::string>& size, double scale);
+
+// A window of a width x height frame (render --region).
+struct Region {
+  ImageWindow window;     // where it is in the frame
+  int width, height;      // its size: the image rendered
+};
+
+// "X0,Y0,X1,Y1" -> the window of pixels X0 .. X1-1, Y0 .. Y1-1 of a
+// frame_width x frame_height frame.  Strict as a size; throws
+// std::invalid_argument naming --region when it is not four whole numbers,
+// is empty (X1 <= X0 or Y1 <= Y0) or reaches outside the frame (saying
+// the frame's size).
+Region parse_region(const std::string& text, int frame_width, int frame_height);
 
 }  // namespace lc

@@ -186,6 +186,9 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--frames", render.frames, "Frames A, A:B or A:B:STEP (inclusive, numbered from 0)");
   render_cmd->add_option("--size", render.size, "Image size WxH instead of the shot's");
   render_cmd->add_option("--scale", render.scale, "Scale the image size by S (previews: 0.25)")->check(number());
+  render_cmd->add_option("--region", render.region,
+                         "Render only pixels X0..X1-1, Y0..Y1-1 of the frame (X0,Y0,X1,Y1), as an image of that size: "
+                         "to check part of a large frame (docs/cameras.md)");
   render_cmd->add_option("--supersample", render.supersample, "N x N samples per pixel instead of the shot's")->check(number());
   render_cmd->add_flag("--full-supersample", render.full_supersample,
                        "Trace every sample of the N x N grid (default: one per pixel, the rest only where it differs from a row neighbour's)");

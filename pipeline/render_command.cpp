@@ -48,16 +48,28 @@ void warn_if_not_encodable(const RenderSettings& rs) {
     fmt::print(stderr, "render: warning: lightcone encode will make an H.264 video of these frames, but {}\n", *warning);
 }
 
-// Says so, once, when a frame's camera finds the image size odd for it (an
-// equirect frame whose pixels are not square: camera/camera.hpp).  A
-// warning, not a refusal: the frame is what was asked for, a video site
-// or player may just not show it as a sphere.
-void warn_if_camera_size_odd(const farm::ShotSurvey& survey, const RenderSettings& rs) {
-  for (const auto& [frame, facts] : survey.frames)
-    if (const auto warning = Camera(facts.camera, rs.width, rs.height).size_warning()) {
-      fmt::print(stderr, "render: warning: frame {}: {} (at {}x{})\n", frame, *warning, rs.width, rs.height);
-      return;
+// What the frames' cameras say of the image size, before anything is
+// written: a --region of a stereo frame is refused (std::invalid_argument:
+// its window would cut across both eyes' pictures); an odd size for a
+// camera (an equirect frame whose pixels are not square) is warned about,
+// once, not refused: the frame is what was asked for, a video site or
+// player may just not show it as a sphere.
+void check_cameras(const farm::ShotSurvey& survey, const RenderSettings& rs) {
+  const int width = rs.window.windowed() ? rs.window.frame_width : rs.width;
+  const int height = rs.window.windowed() ? rs.window.frame_height : rs.height;
+  bool warned = false;
+  for (const auto& [frame, facts] : survey.frames) {
+    const Camera camera(facts.camera, width, height);
+    if (rs.window.windowed() && camera.pictures().size() > 1)
+      throw std::invalid_argument(fmt::format("--region: frame {}'s camera is stereo; a region of a stereo frame is "
+                                              "not offered (render the shot with stereo = \"mono\" to check a part "
+                                              "of it)", frame));
+    if (warned) continue;
+    if (const auto warning = camera.size_warning()) {
+      fmt::print(stderr, "render: warning: frame {}: {} (at {}x{})\n", frame, *warning, width, height);
+      warned = true;
     }
+  }
 }
 
 // The rows a preview frame holds, top to bottom.
@@ -128,7 +140,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   }
   const ShotInfo& info = job.shot->info();
   const farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
-  warn_if_camera_size_odd(survey, job.rs);
+  check_cameras(survey, job.rs);
   farm::FrameStore store(cmd.out, info.name);
   farm::FrameSettings settings = farm::frame_settings(job.rs);
   settings.png_depth = cmd.png_depth();
@@ -138,8 +150,13 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   const std::string who = mpi ? fmt::format("{} ranks (a master and {} worker{})", mpi->size(), mpi->size() - 1,
                                             mpi->size() == 2 ? "" : "s")
                               : fmt::format("{} thread{}", threads, threads == 1 ? "" : "s");
-  fmt::print(stderr, "render: {} frame{} of '{}' at {}x{}, {}x{} samples per pixel, {} stripes, {} -> {}\n",
-             job.frames.size(), job.frames.size() == 1 ? "" : "s", info.name, job.rs.width, job.rs.height,
+  const ImageWindow& window = job.rs.window;
+  const std::string of = window.windowed() ? fmt::format(" (pixels {},{} to {},{} of the {}x{} frame)", window.x0,
+                                                         window.y0, window.x0 + job.rs.width, window.y0 + job.rs.height,
+                                                         window.frame_width, window.frame_height)
+                                           : "";
+  fmt::print(stderr, "render: {} frame{} of '{}' at {}x{}{}, {}x{} samples per pixel, {} stripes, {} -> {}\n",
+             job.frames.size(), job.frames.size() == 1 ? "" : "s", info.name, job.rs.width, job.rs.height, of,
              job.rs.supersample, job.rs.supersample, job.layout.stripes(), who, cmd.out.string());
   report_plan(plan, job.frames.size(), cmd);
   if (plan.todo.empty()) {
@@ -169,7 +186,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     } else {
       // Enough scenes for every frame that can be open at once.
       farm::SceneCache scenes(*job.shot, job.rs.width, job.rs.height,
-                              farm::open_frames_for(threads, job.layout.stripes()) + 2);
+                              farm::open_frames_for(threads, job.layout.stripes()) + 2, job.rs.window);
       const auto refusal = cmd.no_reuse ? std::nullopt : farm::memo_refusal(job.rs, 1);
       if (refusal) fmt::print(stderr, "render: {}\n", *refusal);
       farm::SceneStripeRenderer renderer(scenes, job.rs, job.layout, !cmd.no_reuse && !refusal);
@@ -234,7 +251,8 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
   if (!setup_error) {
     // Enough scenes for the frames the sets in hand (two per thread) span.
     scenes = std::make_unique<farm::SceneCache>(*job.shot, job.rs.width, job.rs.height,
-                                                farm::open_frames_for(threads, job.layout.stripes()) + 2);
+                                                farm::open_frames_for(threads, job.layout.stripes()) + 2,
+                                                job.rs.window);
     // Each worker judges its own node's memory (the master cannot see it).
     const bool reuse = !cmd.no_reuse && !farm::memo_refusal(job.rs, mpi.workers_on_node());
     renderer = std::make_unique<farm::SceneStripeRenderer>(*scenes, job.rs, job.layout, reuse);

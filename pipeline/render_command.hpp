@@ -19,6 +19,7 @@ struct RenderCommand {
   std::optional<std::string> frames;  // "A", "A:B" or "A:B:STEP"
   std::vector<int> frame_list;        // the frames themselves, ascending (the showcase's picks); overrides `frames`
   std::optional<std::string> size;    // "WxH"
+  std::optional<std::string> region;  // "X0,Y0,X1,Y1": a window of the frame (of --size's, or the shot's)
   double scale = 1.0;
   std::optional<int> supersample;
   bool layers = false;

@@ -32,6 +32,12 @@ RenderJob load_render_job(const RenderCommand& cmd) {
     job.frames = job.range->frames();
   }
   std::tie(job.rs.width, job.rs.height) = output_size(info.width, info.height, cmd.size, cmd.scale);
+  if (cmd.region) {
+    const Region region = parse_region(*cmd.region, job.rs.width, job.rs.height);
+    job.rs.window = region.window;
+    job.rs.width = region.width;
+    job.rs.height = region.height;
+  }
   job.rs.supersample = cmd.supersample.value_or(info.supersample);
   if (job.rs.supersample < 1 || job.rs.supersample > 16)
     throw std::invalid_argument(fmt::format("--supersample {}: must be between 1 and 16", job.rs.supersample));

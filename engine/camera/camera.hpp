@@ -21,6 +21,7 @@
 #include "camera/camera_sample.hpp"
 #include "camera/equirect.hpp"
 #include "camera/fisheye.hpp"
+#include "camera/image_window.hpp"
 #include "camera/pinhole.hpp"
 #include "camera/stereo.hpp"
 #include "core/fields.hpp"
@@ -67,13 +68,22 @@ static_assert(every_kind<CameraRegistry>([]<class C>() {
 // The camera a shot asked for: one of the registered kinds' parameters.
 using CameraSpec = CameraRegistry::Spec;
 
-// The camera of a frame, for its image size.
+// The camera of a frame, for its image size; or of a window of the frame
+// (render --region): then the image is the window, width x height pixels
+// of the whole frame's, every image point the whole frame's point it
+// covers, and the window a flat picture with edges of its own.
 class Camera {
  public:
-  Camera(const CameraSpec& spec, int width, int height) : kind_(CameraRegistry::build(spec, width, height)) {}
+  Camera(const CameraSpec& spec, int width, int height, const ImageWindow& window = {})
+      : kind_(CameraRegistry::build(spec, window.windowed() ? window.frame_width : width,
+                                    window.windowed() ? window.frame_height : height)),
+        window_(window),
+        width_(width),
+        height_(height) {}
 
   std::optional<CameraRay> ray(const CameraSample& s) const {
-    return std::visit([&](const auto& c) { return c.ray(s); }, kind_);
+    const CameraSample in_frame{s.px + window_.x0, s.py + window_.y0, s.time};
+    return std::visit([&](const auto& c) { return c.ray(in_frame); }, kind_);
   }
   // The direction through image point (px, py) of an eye's picture (the
   // frame, in mono), for what works with directions alone (the star
@@ -82,7 +92,7 @@ class Camera {
   // projection continued, so patches at the edge of where it has rays
   // keep their solid angle.
   Vec3 direction(double px, double py) const {
-    return std::visit([&](const auto& c) { return c.direction(px, py); }, kind_);
+    return std::visit([&](const auto& c) { return c.direction(px + window_.x0, py + window_.y0); }, kind_);
   }
   // Whether every image point has a ray (a pinhole's), so nothing need
   // be masked where it has none.
@@ -91,14 +101,24 @@ class Camera {
   }
   // Where the image continues past its edges (a whole sphere's).
   ImageWrap wrap() const {
-    return std::visit([](const auto& c) { return c.wrap(); }, kind_);
+    const ImageWrap whole = std::visit([](const auto& c) { return c.wrap(); }, kind_);
+    if (!window_.windowed()) return whole;
+    // A window as wide as the frame still goes round; its rows are not
+    // the poles'.
+    return {whole.columns && width_ == window_.frame_width, false};
   }
   // The eyes' pictures in the frame: the whole frame, or each eye's half.
   std::vector<EyePicture> pictures() const {
+    if (window_.windowed()) return {{0, 0, 0, width_, height_}};  // windows of mono frames only (render --region)
     return std::visit([](const auto& c) { return c.pictures(); }, kind_);
   }
-  // How a player must show the frames (a 360-degree video's sphere).
+  // The whole frame's height (the image's, but for a window): what sizes
+  // relative to the frame (a point-star sky's glare) are measured in.
+  int frame_height() const { return window_.windowed() ? window_.frame_height : height_; }
+  // How a player must show the frames (a 360-degree video's sphere; a
+  // window is a check, a flat picture).
   VideoLayout video_layout() const {
+    if (window_.windowed()) return {};
     return std::visit([](const auto& c) { return c.video_layout(); }, kind_);
   }
   // What is odd about the image size for this camera (an equirect frame
@@ -119,6 +139,8 @@ class Camera {
 
  private:
   CameraRegistry::Kinds kind_;
+  ImageWindow window_;
+  int width_, height_;  // the image's: the window's, or the frame's
 };
 
 }  // namespace lc

@@ -37,7 +37,7 @@ long draw_point_stars(const PointStars& stars, const Camera& camera, std::span<c
   const std::vector<EyePicture> pictures = camera.pictures();
   long drawn = 0;
   if (pictures.size() == 1) {
-    options.glare_radius = stars.glare_size * image.height;
+    options.glare_radius = stars.glare_size * camera.frame_height();
     drawn = add_point_stars(rays, image.width, image.height, *stars.field, directions, options, image.rgb, cpu_seconds);
   } else {
     // A stereo frame: each eye's picture is a frame of its own to the

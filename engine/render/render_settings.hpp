@@ -4,12 +4,13 @@
 // render/renderer.hpp so that the farm's queue, budget and messages build
 // without the registries (docs/architecture.md, "What a new kind rebuilds").
 
+#include "camera/image_window.hpp"
 #include "image/frame_image.hpp"
 
 namespace lc {
 
 struct RenderSettings {
-  int width = 0, height = 0;
+  int width = 0, height = 0;  // the image's: the frame's, or its window's
   int supersample = 1;  // N: N x N samples per pixel
   bool layers = false;  // also fill the data layers (render/layers.hpp)
   // N >= 2: trace one corner sample of each pixel first (alternating
@@ -17,6 +18,9 @@ struct RenderSettings {
   // only if it disagrees with a row neighbour's (another hit kind, or a
   // colour more than adaptive_sample_threshold apart in sRGB).
   bool adaptive = true;
+  // The window of the frame rendered (render --region), if any (last, so
+  // the settings' aggregate initialisations stay as they were).
+  ImageWindow window{};
 };
 
 struct RenderStats {

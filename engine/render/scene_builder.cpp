@@ -25,8 +25,9 @@ double free_radius(const SceneIn<S>& sc) {
 }
 
 template <class S>
-Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResources& res, const RayOptions& rays) {
-  SceneIn<S> sc{st, {}, Camera(fs.camera, width, height), Sky(fs.sky, res), {}, {}, rays};
+Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResources& res, const RayOptions& rays,
+            const ImageWindow& window) {
+  SceneIn<S> sc{st, {}, Camera(fs.camera, width, height, window), Sky(fs.sky, res), {}, {}, rays};
   if (fs.light.model != LightModel::geometric) sc.light = Light(fs.light, res.spectral_shift());
   // The observer's kind places it and checks where it stands; the frame's
   // own eye is its path at offset 0.
@@ -46,7 +47,10 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
     // agree too.
     sc.still_key = still_key(fs);
     if (!sc.still_key.empty())
-      sc.still_key += fmt::format("|image {}x{}|rays {:a} {:a} {:a} {:a} {} {:a} {} {:a} {}", width, height,
+      sc.still_key += fmt::format("|image {}x{}{}|rays {:a} {:a} {:a} {:a} {} {:a} {} {:a} {}", width, height,
+                                  window.windowed() ? fmt::format(" at {},{} of {}x{}", window.x0, window.y0,
+                                                                  window.frame_width, window.frame_height)
+                                                    : "",
                                   rays.control.rtol, rays.control.atol, rays.control.h_min, rays.control.h_max,
                                   static_cast<int>(rays.kerr_chart), rays.escape_radius, static_cast<int>(rays.escape),
                                   rays.free_radius, rays.max_steps);
@@ -56,15 +60,16 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
 
 }  // namespace
 
-Scene build_scene(const SceneSpec& fs, int width, int height, ShotResources& resources, const RayOptions& rays) {
+Scene build_scene(const SceneSpec& fs, int width, int height, ShotResources& resources, const RayOptions& rays,
+                  const ImageWindow& window) {
   const Spacetime st = trace_chart(fs.spacetime);
-  return std::visit([&](const auto& s) { return build(s, fs, width, height, resources, rays); }, st);
+  return std::visit([&](const auto& s) { return build(s, fs, width, height, resources, rays, window); }, st);
 }
 
 Scene build_scene(const SceneSpec& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
-                        ShotResources& resources, const RayOptions& rays) {
+                        ShotResources& resources, const RayOptions& rays, const ImageWindow& window) {
   try {
-    return build_scene(fs, width, height, resources, rays);
+    return build_scene(fs, width, height, resources, rays, window);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(fmt::format("{}: frame {}: {}", shot_file.string(), frame, e.what()));
   }

@@ -16,12 +16,14 @@ namespace lc {
 // Throws std::invalid_argument for a scene that cannot exist (an observer
 // inside a horizon or a static one in the ergoregion, a worldline from a
 // different spacetime, ...).
+// `window`: the image is that window of the whole frame (render --region).
 Scene build_scene(const SceneSpec& fs, int width, int height, ShotResources& resources,
-                  const RayOptions& rays = RayOptions{});
+                  const RayOptions& rays = RayOptions{}, const ImageWindow& window = {});
 
 // build_scene for frame `frame` of the shot in `shot_file`: what render,
 // trace and inspect all do, errors naming the file and the frame.
 Scene build_scene(const SceneSpec& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
-                        ShotResources& resources, const RayOptions& rays = RayOptions{});
+                        ShotResources& resources, const RayOptions& rays = RayOptions{},
+                        const ImageWindow& window = {});
 
 }  // namespace lc

@@ -93,6 +93,15 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
     if (*depth != "16") return std::nullopt;  // 8 is never written
     jf.settings.png_depth = PngDepth::sixteen;
   }
+  if (const std::string* region = get("region")) {
+    ImageWindow& w = jf.settings.window;
+    const auto c1 = region->find(','), c2 = region->find(',', c1 + 1), x = region->find('x', c2 + 1);
+    if (c1 == std::string::npos || c2 == std::string::npos || x == std::string::npos ||
+        !parse_number(region->substr(0, c1), w.x0) || !parse_number(region->substr(c1 + 1, c2 - c1 - 1), w.y0) ||
+        !parse_number(region->substr(c2 + 1, x - c2 - 1), w.frame_width) ||
+        !parse_number(region->substr(x + 1), w.frame_height) || w.frame_width < 1 || w.frame_height < 1)
+      return std::nullopt;
+  }
   if (inputs->size() != 16) return std::nullopt;
   jf.inputs = *inputs;
   // Written since encode checks for stale frames (both, or neither).
@@ -121,7 +130,10 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
 }  // namespace
 
 std::string FrameSettings::describe() const {
-  return fmt::format("{}x{}, {}x{} samples per pixel{}, {}{}", width, height, supersample, supersample,
+  const std::string of = window.windowed() ? fmt::format(" (the window at {},{} of a {}x{} frame)", window.x0, window.y0,
+                                                        window.frame_width, window.frame_height)
+                                            : "";
+  return fmt::format("{}x{}{}, {}x{} samples per pixel{}, {}{}", width, height, of, supersample, supersample,
                      adaptive && supersample > 1 ? " (adaptive)" : "", layers ? "with data layers" : "no data layers",
                      png_depth == PngDepth::sixteen ? ", 16-bit PNG" : "");
 }
@@ -137,7 +149,10 @@ std::string journal_frame_line(const JournalFrame& f) {
                                                       c.reused, c.core_seconds, c.star_seconds, c.finished)
                                         : "";
   // png_depth only where not 8, so 8-bit lines read the same in an older lightcone.
-  const char* depth = f.settings.png_depth == PngDepth::sixteen ? " png_depth=16" : "";
+  const ImageWindow& w = f.settings.window;
+  const std::string depth = std::string(f.settings.png_depth == PngDepth::sixteen ? " png_depth=16" : "") +
+                            (w.windowed() ? fmt::format(" region={},{},{}x{}", w.x0, w.y0, w.frame_width, w.frame_height)
+                                          : "");
   return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}",
                                 f.frame, f.settings.width, f.settings.height, f.settings.supersample,
                                 f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", depth, f.inputs, parts,

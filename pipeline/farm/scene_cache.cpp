@@ -6,8 +6,8 @@
 
 namespace lc::farm {
 
-SceneCache::SceneCache(Shot& shot, int width, int height, std::size_t capacity)
-    : shot_(shot), width_(width), height_(height), capacity_(std::max<std::size_t>(1, capacity)),
+SceneCache::SceneCache(Shot& shot, int width, int height, std::size_t capacity, const ImageWindow& window)
+    : shot_(shot), width_(width), height_(height), window_(window), capacity_(std::max<std::size_t>(1, capacity)),
       resources_(shot.asset_dirs()) {}
 
 // Evaluates the frame (serialised: one Lua state) and builds its scene
@@ -18,7 +18,7 @@ std::shared_ptr<const Scene> SceneCache::build(int frame) {
     std::lock_guard lock(lua_mutex_);
     fs = shot_.frame(frame);
   }
-  return std::make_shared<const Scene>(build_scene(fs, shot_.file(), frame, width_, height_, resources_));
+  return std::make_shared<const Scene>(build_scene(fs, shot_.file(), frame, width_, height_, resources_, RayOptions{}, window_));
 }
 
 std::shared_ptr<const Scene> SceneCache::get(int frame) {

@@ -21,7 +21,8 @@ class SceneCache {
  public:
   // Keeps the `capacity` most recently built scenes (frames arrive in order,
   // so a handful covers the frames in flight).
-  SceneCache(Shot& shot, int width, int height, std::size_t capacity = 8);
+  // `window`: scenes for that window of the frame (render --region).
+  SceneCache(Shot& shot, int width, int height, std::size_t capacity = 8, const ImageWindow& window = {});
 
   // The scene of `frame`, building it on first use; threads asking for the
   // same frame meanwhile wait for that one build.  Throws the build's error
@@ -38,6 +39,7 @@ class SceneCache {
 
   Shot& shot_;
   int width_, height_;
+  ImageWindow window_;
   std::size_t capacity_;
   ShotResources resources_;
   std::mutex lua_mutex_;  // Shot is not thread-safe

@@ -11,7 +11,9 @@ namespace lc::farm {
 
 FrameSettings frame_settings(const RenderSettings& rs) {
   // Adaptive sampling only means something with more than one sample.
-  return {rs.width, rs.height, rs.supersample, rs.layers, rs.adaptive && rs.supersample > 1};
+  FrameSettings s{rs.width, rs.height, rs.supersample, rs.layers, rs.adaptive && rs.supersample > 1};
+  s.window = rs.window;
+  return s;
 }
 
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
@@ -33,7 +35,7 @@ void StoreSink::store(const CompletedFrame& cf) {
   // frame as the rays made it is the queue's); a frame without them is
   // written as it is (the files do not hold sky points).
   const FrameImage* written = &cf.image;
-  const Camera camera(facts.camera, cf.image.width, cf.image.height);
+  const Camera camera(facts.camera, cf.image.width, cf.image.height, rs_.window);
   FrameImage with_stars;
   FrameCost cost{.rays = cf.stats.rays, .reused = cf.stats.reused, .core_seconds = cf.stats.seconds};
   // Its cost is CPU time, as the rays' is: the stage's threads share the
@@ -61,6 +63,9 @@ void StoreSink::store(const CompletedFrame& cf) {
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};
   for (auto& attribute : layout_metadata(camera.video_layout())) metadata.push_back(std::move(attribute));
+  if (const ImageWindow& w = rs_.window; w.windowed())
+    metadata.emplace_back("lightcone/region", fmt::format("{},{},{},{} of {}x{}", w.x0, w.y0, w.x0 + cf.image.width,
+                                                          w.y0 + cf.image.height, w.frame_width, w.frame_height));
   store_.write_frame(cf.frame, *written, metadata, settings_, facts.inputs, facts.parts, cost,
                      display_);
 }

@@ -12,6 +12,14 @@
 #   4. The square frames encode to a square MP4.
 #   5. A field or tilt out of range is an error at the shot's line, and
 #      nothing is written.
+#   6. --region renders a window of the master: with every sample taken
+#      (--full-supersample: adaptive sampling compares a pixel with row
+#      neighbours the window may lack) its pixels are the whole render's
+#      (the data layers exactly; the colour but for star light within a
+#      pixel of the window's edge and glare of stars outside it),
+#      the EXR and the journal say which window; a window outside the frame
+#      is refused naming the frame's size, nothing written.  --png-depth 16
+#      writes 16-bit PNGs.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 use_mpirun  # lib.sh: Open MPI settings, and `mpi N CMD...`
@@ -83,5 +91,38 @@ sed 's/tilt = 0/tilt = -5/' "$SHOT" >tilt.lua
 expect_error tilt "tilt.lua:20: fisheye: field 'tilt' must be between 0 and 90" -- "$LIGHTCONE" render tilt.lua --out tilt --size 32x32
 CHECKS=$((CHECKS + 1))
 if ls wide/*.png tilt/*.png >/dev/null 2>&1; then fail "a refused shot wrote frames"; fi
+
+# 6. A window, and 16-bit PNGs.
+CHECKS=$((CHECKS + 1))
+"$LIGHTCONE" render "$SHOT" --out whole --size 64x64 --layers --full-supersample --progress 0 >whole.out 2>whole.err ||
+  fail "render the whole master: $(cat whole.err)"
+"$LIGHTCONE" render "$SHOT" --out window --size 64x64 --region 8,40,40,56 --layers --full-supersample --png-depth 16 \
+  --progress 0 >window.out 2>window.err || fail "render --region: $(cat window.err)"
+grep -q "at 32x16 (pixels 8,40 to 40,56 of the 64x64 frame)" window.err || fail "render did not say the window: $(cat window.err)"
+grep -q " region=8,40,64x64 " window/dome_example.journal || fail "the journal lacks the window: $(tail -1 window/dome_example.journal)"
+"$PY" - whole/dome_example.0000.exr window/dome_example.0000.exr window/dome_example.0000.png <<'PY' || fail "the window is not the whole frame's pixels"
+import sys
+import OpenImageIO as oiio
+whole, part = oiio.ImageBuf(sys.argv[1]), oiio.ImageBuf(sys.argv[2])
+if part.spec().getattribute("lightcone/region") != "8,40,40,56 of 64x64":
+    sys.exit(f"lightcone/region is {part.spec().getattribute('lightcone/region')!r}")
+wn, pn = list(whole.spec().channelnames), list(part.spec().channelnames)
+for name in pn:
+    for j in range(16):
+        for i in range(32):
+            a, b = whole.getpixel(8 + i, 40 + j)[wn.index(name)], part.getpixel(i, j)[pn.index(name)]
+            inner = 0 < i < 31 and 0 < j < 15
+            if name.startswith("hit.") or name == "A":
+                if a != b: sys.exit(f"{name} at ({i},{j}): {b}, the whole frame has {a}")
+            elif abs(a - b) > (1e-3 if inner else 5e-3):
+                sys.exit(f"{name} at ({i},{j}): {b}, the whole frame has {a}")
+png = oiio.ImageInput.open(sys.argv[3])
+if png.spec().format != oiio.UINT16:
+    sys.exit(f"the PNG is {png.spec().format}, not 16-bit")
+PY
+expect_error outside "--region 0,0,65,10: reaches outside the 64x64 frame" -- \
+  "$LIGHTCONE" render "$SHOT" --out outside --size 64x64 --region 0,0,65,10
+CHECKS=$((CHECKS + 1))
+if ls outside/*.png >/dev/null 2>&1; then fail "a refused region wrote frames"; fi
 
 e2e_end

@@ -102,6 +102,30 @@ TEST(Equirect, PixelsThatAreNotSquareAreWarnedAbout) {
   EXPECT_FALSE(Camera(CameraSpec{}, 1280, 720).size_warning());  // a pinhole has no such rule
 }
 
+// A window of the frame (render --region) is the whole frame's camera seen
+// through it: each image point's ray is the whole frame's at the point it
+// covers; it wraps only if as wide as the frame, never over the poles,
+// and is a flat picture to a player.
+TEST(Equirect, AWindowOfTheFrameIsTheFramesCameraThroughIt) {
+  const CameraSpec spec = equirect(360, 180, 10, 20, 0);
+  const Camera whole(spec, 64, 32), window(spec, 16, 8, ImageWindow{40, 4, 64, 32}), band(spec, 64, 8, ImageWindow{0, 4, 64, 32});
+  for (const auto& [px, py] : {std::pair{0.5, 0.5}, std::pair{15.75, 7.25}, std::pair{-0.5, 3.0}}) {
+    const Vec3 a = window.ray({px, py, 0.0})->direction, b = whole.ray({px + 40, py + 4, 0.0})->direction;
+    const Vec3 c = window.direction(px, py);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(a[k], b[k]);
+      EXPECT_EQ(c[k], b[k]);
+    }
+  }
+  EXPECT_EQ(window.wrap(), ImageWrap{});
+  EXPECT_EQ(band.wrap(), (ImageWrap{true, false}));
+  EXPECT_EQ(window.video_layout(), VideoLayout{});
+  EXPECT_EQ(whole.video_layout().projection, VideoProjection::equirectangular);
+  EXPECT_EQ(window.frame_height(), 32);
+  ASSERT_EQ(window.pictures().size(), 1u);
+  EXPECT_EQ(window.pictures()[0].width, 16);
+}
+
 // The shadow of a Schwarzschild hole at r = 30 M (9.6327 degrees) at
 // 2048 x 1024: where the projection puts its angle, within a pixel, with
 // the hole in the centre, across the seam (yawed half a turn: the shadow

@@ -47,6 +47,23 @@ TEST(ImageSize, PixelsAreParsedAsStrictly) {
   EXPECT_NE(error_of<std::invalid_argument>([] { parse_pixel("1,2,3", "--pixel"); }).find("expected I,J"), std::string::npos);
 }
 
+// --region X0,Y0,X1,Y1: the window's place and size, or an error naming
+// the flag and, for a window reaching outside, the frame's size.
+TEST(ImageSize, RegionsAreWindowsInsideTheFrame) {
+  const Region r = parse_region("3840,5632,4352,6144", 8192, 8192);
+  EXPECT_EQ(r.window, (ImageWindow{3840, 5632, 8192, 8192}));
+  EXPECT_EQ(r.width, 512);
+  EXPECT_EQ(r.height, 512);
+  EXPECT_EQ(parse_region("0,0,64,64", 64, 64).width, 64);  // the whole frame is a window too
+  EXPECT_EQ(error_of<std::invalid_argument>([] { parse_region("0,0,65,10", 64, 64); }),
+            "--region 0,0,65,10: reaches outside the 64x64 frame (X1 at most 64, Y1 at most 64)");
+  EXPECT_NE(error_of<std::invalid_argument>([] { parse_region("5,5,5,9", 64, 64); }).find("empty"), std::string::npos);
+  for (const char* bad : {"1,2,3", "1,2,3,4,5", "-1,0,4,4", "a,b,c,d", "1, 2,3,4", ""})
+    EXPECT_NE(error_of<std::invalid_argument>([&] { parse_region(bad, 64, 64); }).find("expected X0,Y0,X1,Y1"),
+              std::string::npos)
+        << bad;
+}
+
 TEST(ImageSize, OutputSizeAppliesSizeThenScaleAndChecksTheRange) {
   EXPECT_EQ(output_size(1280, 720, std::nullopt, 1.0), std::make_pair(1280, 720));
   EXPECT_EQ(output_size(1280, 720, std::nullopt, 0.25), std::make_pair(320, 180));

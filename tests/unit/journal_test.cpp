@@ -61,6 +61,28 @@ TEST(Journal, LinesRoundTrip) {
   EXPECT_EQ(j.valid_bytes, journal_text(3).size());
 }
 
+// A 16-bit PNG and a window of the frame (render --png-depth, --region)
+// are settings like the others: written only where they are not the
+// default (an 8-bit whole frame's line reads as it always did), read back,
+// and a frame made with them differs from one made without.
+TEST(Journal, PngDepthAndWindowRoundTripAndAreSettings) {
+  JournalFrame f = frame(4);
+  const std::string plain = journal_frame_line(f);
+  EXPECT_EQ(plain.find("png_depth"), std::string::npos);
+  EXPECT_EQ(plain.find("region"), std::string::npos);
+  f.settings.png_depth = PngDepth::sixteen;
+  f.settings.window = {1024, 2048, 8192, 8192};
+  const std::string line = journal_frame_line(f);
+  EXPECT_NE(line.find(" png_depth=16 "), std::string::npos) << line;
+  EXPECT_NE(line.find(" region=1024,2048,8192x8192 "), std::string::npos) << line;
+  const JournalContents j = parse_journal(journal_header_line() + "\n" + line + "\n", "j");
+  ASSERT_EQ(j.frames.size(), 1u);
+  EXPECT_EQ(j.frames.at(4).settings, f.settings);
+  EXPECT_FALSE(j.frames.at(4).settings == frame(4).settings);
+  EXPECT_NE(f.settings.describe().find("the window at 1024,2048 of a 8192x8192 frame"), std::string::npos);
+  EXPECT_NE(f.settings.describe().find("16-bit PNG"), std::string::npos);
+}
+
 TEST(Journal, EmptyTextIsAnEmptyJournal) {
   const JournalContents j = parse_journal("", "j");
   EXPECT_TRUE(j.frames.empty());
