@@ -13,6 +13,7 @@
 
 #include <cmath>
 
+#include "camera/fisheye.hpp"
 #include "core/constants.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
@@ -79,6 +80,86 @@ TEST(StarLensing, ASchwarzschildHolesTwoImagesFollowThePointLens) {
     EXPECT_NEAR(flux[1 - primary], mu_minus, 0.01 * mu_minus) << "u " << u;
     EXPECT_NEAR(angle[primary] / flux[primary], theta_plus, 0.01 * theta_plus) << "u " << u;
     EXPECT_NEAR(angle[1 - primary] / flux[1 - primary], theta_minus, 0.01 * theta_minus) << "u " << u;
+  }
+}
+
+// The same point lens through the fisheye (a dome master), its images and
+// magnifications where the projection puts them.  The lens is the
+// Schwarzschild point lens's map on the sky, beta = theta - theta_E^2 /
+// theta (angles from the lens's axis, each ray's sky direction turned
+// towards the axis in its own plane; a shadow within 0.3 theta_E),
+// applied to the camera's own directions: so its images are exactly at
+// theta+- = (beta +- sqrt(beta^2 + 4 theta_E^2)) / 2 and magnified by
+// mu = |sin theta / sin beta  dtheta / dbeta| on the sphere (the small-angle
+// formula's mu differs from it by ~theta^2 / 6, 0.1% here).  theta_E =
+// 5 degrees, the lens at the disc's centre and 50 degrees out towards its
+// edge (where the projection stretches pixels sideways by 12%), a
+// 180-degree disc at 1000 x 1000: the ring ~28 pixels across.  Tolerance
+// 1%, the pinhole's.
+TEST(StarLensing, ThroughTheFisheyeAPointLensesImagesAreThePinholes) {
+  const int N = 1000;
+  const double theta_e = 5 * degree;
+  FisheyeCamera::Params p;
+  p.full_angle = 180;
+  const FisheyeCamera cam(p, N, N);
+  for (const double off : {0.0, 50.0}) {
+    // The lens's axis, `off` degrees from the camera's towards its right.
+    Vec3 axis;
+    for (int k = 0; k < 3; ++k)
+      axis[k] = std::cos(off * degree) * cam.axes().forward[k] + std::sin(off * degree) * cam.axes().right[k];
+    // A unit vector at angle a from the axis, in the plane of the axis and
+    // unit vector e (perpendicular to it).
+    auto at_angle = [&](double a, const Vec3& e) {
+      return Vec3{std::cos(a) * axis[0] + std::sin(a) * e[0], std::cos(a) * axis[1] + std::sin(a) * e[1],
+                  std::cos(a) * axis[2] + std::sin(a) * e[2]};
+    };
+    std::vector<SkyPoint> sky(static_cast<std::size_t>(N) * N);
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i < N; ++i) {
+        SkyPoint& sp = sky[static_cast<std::size_t>(j) * N + i];
+        const Vec3 d = cam.direction(i + 0.5, j + 0.5);
+        const double c = std::clamp(dot3(d, axis), -1.0, 1.0), t = std::acos(c);
+        if (!cam.ray({i + 0.5, j + 0.5, 0.0}) || t < 0.3 * theta_e) continue;  // outside the disc; the shadow
+        const Vec3 e = unit3({d[0] - c * axis[0], d[1] - c * axis[1], d[2] - c * axis[2]});
+        const Vec3 src = at_angle(t - theta_e * theta_e / t, e);
+        sp.theta = std::acos(std::clamp(src[2], -1.0, 1.0));
+        sp.phi = std::atan2(src[1], src[0]);
+        if (sp.phi < 0) sp.phi += two_pi;
+      }
+    const auto camera = [&](double x, double y) { return unit3(cam.direction(x, y)); };
+    auto omega = [&](int i, int j) {
+      return SkyQuad{{camera(i, j), camera(i + 1, j), camera(i + 1, j + 1), camera(i, j + 1)}}.area();
+    };
+    // The star: beta = u theta_E from the axis, towards the camera's up.
+    const Vec3 up = cam.axes().up;
+    const Vec3 e_star = unit3({up[0] - dot3(up, axis) * axis[0], up[1] - dot3(up, axis) * axis[1],
+                               up[2] - dot3(up, axis) * axis[2]});
+    for (const double u : {0.5, 1.0}) {
+      const double beta = u * theta_e;
+      const StarField field({{at_angle(beta, e_star), {1, 1, 1}}}, nullptr, nullptr);
+      std::vector<float> image(3 * sky.size(), 0.0f);
+      EXPECT_EQ(add_point_stars(sky, N, N, field, camera, StarPassOptions{}, image), 2) << "off " << off << " u " << u;
+      // Each image's light and its light-weighted angle from the axis,
+      // signed: on the star's side of the axis or across it.
+      double flux[2] = {0, 0}, angle[2] = {0, 0};
+      for (int j = 0; j < N; ++j)
+        for (int i = 0; i < N; ++i) {
+          const float r = image[3 * (static_cast<std::size_t>(j) * N + i)];
+          if (r <= 0) continue;
+          const Vec3 d = camera(i + 0.5, j + 0.5);
+          const int side = dot3(d, e_star) > 0 ? 0 : 1;
+          flux[side] += r * omega(i, j);
+          angle[side] += r * omega(i, j) * std::acos(std::clamp(dot3(d, axis), -1.0, 1.0));
+        }
+      const double root = std::sqrt(beta * beta + 4 * theta_e * theta_e);
+      const double images[2] = {0.5 * (beta + root), 0.5 * (root - beta)};  // the second across the axis
+      for (int k = 0; k < 2; ++k) {
+        const double t = images[k];
+        const double mu = std::abs(std::sin(t) / std::sin(t - theta_e * theta_e / t) / (1 + theta_e * theta_e / (t * t)));
+        EXPECT_NEAR(flux[k], mu, 0.01 * mu) << "off " << off << " u " << u << " image " << k;
+        EXPECT_NEAR(angle[k] / flux[k], t, 0.01 * t) << "off " << off << " u " << u << " image " << k;
+      }
+    }
   }
 }
 
