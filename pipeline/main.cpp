@@ -186,6 +186,11 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--frames", render.frames, "Frames A, A:B or A:B:STEP (inclusive, numbered from 0)");
   render_cmd->add_option("--size", render.size, "Image size WxH instead of the shot's");
   render_cmd->add_option("--scale", render.scale, "Scale the image size by S (previews: 0.25)")->check(number());
+  render_cmd
+      ->add_option("--camera", render.camera,
+                   "Deliver the shot through another camera, framed from its own: dome (a 180-degree dome master, "
+                   "square) or 360 (a 360-degree video frame, 2:1); default: the shot's (docs/cameras.md)")
+      ->check(CLI::IsMember({"shot", "dome", "360"}));
   render_cmd->add_option("--region", render.region,
                          "Render only pixels X0..X1-1, Y0..Y1-1 of the frame (X0,Y0,X1,Y1), as an image of that size: "
                          "to check part of a large frame (docs/cameras.md)");
@@ -313,6 +318,11 @@ int main(int argc, char** argv) {
   showcase_cmd->add_option("--threads", showcase.threads, "Render threads per process (as render --threads)")
       ->check(number(End{1}, End{1024}));
   showcase_cmd->add_flag("--force", showcase.force, "Re-render frames made from other settings or inputs (as render --force)");
+  showcase_cmd
+      ->add_option("--camera", showcase.camera,
+                   "Through a dome master (dome: square, the hole above the dome's front horizon) or a 360-degree "
+                   "camera (360: 2:1, marked for players) instead of the shots' own (docs/showcase.md)")
+      ->check(CLI::IsMember({"shot", "dome", "360"}));
   showcase_cmd->add_flag("--thermal", showcase.thermal,
                          "Add a fourth sequence: the first in light as physics says (kerr_accrDisk_thermal; docs/light.md)");
   showcase_cmd->add_option("--progress", showcase.progress, "Seconds between plain progress lines (0: none)")->check(number());

@@ -12,6 +12,7 @@
 #include "frame_range.hpp"
 #include "render/renderer.hpp"
 #include "render_command.hpp"
+#include "camera/delivery.hpp"
 #include "script/shot.hpp"
 
 namespace lc {
@@ -24,6 +25,7 @@ struct RenderJob {
   farm::StripeLayout layout{1, 1};
   int preview = 0;                  // --preview
   std::uint64_t digest = 0;         // farm::job_digest: what an MPI master and its workers compare
+  DeliveryCamera delivery = DeliveryCamera::shot;  // --camera
   std::optional<long> test_pause;   // LIGHTCONE_TEST_PAUSE_AFTER (farm/test_pause.hpp)
 };
 

@@ -79,6 +79,7 @@ int render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const Sho
     rc.threads = cmd.threads;
     rc.force = cmd.force;
     rc.progress = cmd.progress;
+    rc.camera = std::string(name_of(plan.camera));
     if (master)
       fmt::print(stderr, "showcase: [{}/{}] rendering {}: {} of its {} frames\n", k + 1, plan.sequences.size(), s.name,
                  s.frames.size(), s.shot_frames);
@@ -101,11 +102,12 @@ int render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const Sho
 
 // The card's lines, or as many of the first as fit a small frame (a tiny
 // test film): at worst a blank card, so the film keeps its rhythm.
-std::vector<std::string> card_lines_that_fit(const std::vector<std::string>& lines, int width, int height) {
+std::vector<std::string> card_lines_that_fit(const std::vector<std::string>& lines, int width, int height,
+                                             CardShape shape) {
   for (std::size_t n = lines.size(); n > 0; --n) {
     std::vector<std::string> first(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(n));
     try {
-      title_card(width, height, first);
+      title_card(width, height, first, shape);
       return first;
     } catch (const std::invalid_argument&) {
     }
@@ -130,10 +132,12 @@ void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const In
   const int card_frames = std::max(4, static_cast<int>(std::lround(title_seconds * plan.fps)));
   fs::create_directories(layout.card("x").parent_path());
   std::vector<fs::path> film;
+  // A dome's cards are drawn where a dome shows them, inside the disc.
+  const CardShape shape = plan.camera == DeliveryCamera::dome ? CardShape::dome : CardShape::flat;
   auto card = [&](const std::string& name, const std::vector<std::string>& lines) {
     const fs::path out = layout.card(name);
-    encode_title_card(card_lines_that_fit(lines, plan.width, plan.height), plan.width, plan.height, card_frames, o, out,
-                      progress_printer(guard, "showcase", "frames"));
+    encode_title_card(card_lines_that_fit(lines, plan.width, plan.height, shape), plan.width, plan.height, card_frames,
+                      o, out, progress_printer(guard, "showcase", "frames"), shape);
     film.push_back(out);
   };
   card("opening", plan.opening);
@@ -154,7 +158,12 @@ void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const In
     film.push_back(video);
   }
   fmt::print(stderr, "showcase: joining {} clips -> {}\n", film.size(), layout.film().string());
-  const ConcatResult r = concat_videos(film, layout.film(), progress_printer(guard, "showcase", "clips"));
+  // A 360-degree film is marked for players as a whole (its cards are
+  // seen on the sphere's front); a dome's is a flat square preview.
+  VideoLayout film_layout;
+  if (plan.camera == DeliveryCamera::sphere) film_layout.projection = VideoProjection::equirectangular;
+  const ConcatResult r =
+      concat_videos(film, layout.film(), progress_printer(guard, "showcase", "clips"), film_layout);
   fmt::print(stderr, "showcase: {}: {} frames {}x{}, {:.1f} s at {:g} fps ({})\n", layout.film().string(), r.frames,
              r.width, r.height, r.seconds, plan.fps, size_text(layout.film()));
 }
@@ -163,8 +172,13 @@ void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const In
 
 int run_showcase(const ShowcaseCommand& cmd) {
   const Clock::time_point start = Clock::now();
-  const ShowcaseSettings settings{parse_showcase_quality(cmd.quality), cmd.size, cmd.rate, cmd.thermal};
-  const ShowcaseLayout layout{cmd.out.value_or(fs::path("out") / "showcase" / cmd.quality)};
+  ShowcaseSettings settings{parse_showcase_quality(cmd.quality), cmd.size, cmd.rate, cmd.thermal};
+  for (const DeliveryCamera d : {DeliveryCamera::shot, DeliveryCamera::dome, DeliveryCamera::sphere})
+    if (cmd.camera == name_of(d)) settings.camera = d;
+  // Each camera's film in a folder of its own (a dome's frames are not
+  // the flat film's: a shared folder would refuse to resume).
+  const std::string folder = settings.camera == DeliveryCamera::shot ? cmd.quality : cmd.quality + "-" + cmd.camera;
+  const ShowcaseLayout layout{cmd.out.value_or(fs::path("out") / "showcase" / folder)};
   const fs::path shots = cmd.shots.value_or(library_dir().parent_path() / "shots");
   farm::MpiSession mpi;
   const bool master = mpi.rank() == 0;

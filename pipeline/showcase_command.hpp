@@ -21,6 +21,7 @@ struct ShowcaseCommand {
   int threads = 0;                             // as render --threads
   bool force = false;                          // as render --force
   bool thermal = false;                        // the fourth sequence too
+  std::string camera = "shot";                 // --camera: shot, dome or 360
   double progress = 5.0;                       // as render --progress
 };
 

@@ -62,10 +62,17 @@ ShowcasePlan plan_showcase(const ShowcaseSettings& settings, const fs::path& sho
     // only be refused after hours of rendering.
     if (const auto why = size_refusal(Codec::h264, size->first, size->second))
       throw std::invalid_argument(fmt::format("--size {}: {}", *settings.size, *why));
+  } else if (settings.camera == DeliveryCamera::dome) {
+    const int side = preview ? dome_preview_side : dome_production_side;
+    size = {side, side};
+  } else if (settings.camera == DeliveryCamera::sphere) {
+    const int h = preview ? sphere_preview_height : sphere_production_height;
+    size = {2 * h, h};
   } else if (preview) {
     size = {preview_width, preview_height};
   }
   ShowcasePlan plan;
+  plan.camera = settings.camera;
   plan.opening = {"LIGHTCONE", "GENERAL-RELATIVISTIC BLACK HOLE VISUALIZATION",
                   "AFTER MULLER, BOBLEST AND WEISKOPF"};
   std::vector<Sequence> sequences = paper_sequences();

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "camera/delivery_camera.hpp"
+
 namespace lc {
 
 enum class ShowcaseQuality { preview, production };
@@ -23,6 +25,12 @@ ShowcaseQuality parse_showcase_quality(const std::string& name);
 inline constexpr int preview_width = 256;
 inline constexpr int preview_height = 144;
 inline constexpr double preview_fps = 3;
+// Through a dome master or a 360-degree camera (--camera; docs/showcase.md):
+// square and 2:1 frames, at preview of about the pinhole preview's pixel
+// count, at production at the delivery standards (a touring dome's 4096
+// square, a 4K 360-degree video).
+inline constexpr int dome_preview_side = 256, dome_production_side = 4096;
+inline constexpr int sphere_preview_height = 192, sphere_production_height = 2048;
 // Title cards: long enough to read two lines.
 inline constexpr double title_seconds = 3;
 
@@ -43,6 +51,7 @@ struct ShowcasePlan {
   std::vector<SequencePlan> sequences;   // in showing order
   double fps = 30;                       // every clip's (title cards too, so they join without re-encoding)
   int width = 1280, height = 720;        // every clip's
+  DeliveryCamera camera = DeliveryCamera::shot;  // what the sequences are rendered through
 };
 
 // What the user chose: a quality, and optionally a smaller or larger image
@@ -53,6 +62,7 @@ struct ShowcaseSettings {
   std::optional<std::string> size;  // WxH
   std::optional<double> rate;       // preview only
   bool thermal = false;             // kerr_accrDisk_thermal.lua too
+  DeliveryCamera camera = DeliveryCamera::shot;  // --camera: the shots' own, dome or 360
 };
 
 // Loads the three shots from `shots_dir` (kerr_accrDisk.lua, kerr_passing.lua,
@@ -61,7 +71,8 @@ struct ShowcaseSettings {
 // every frame at the shot's size and sampling; preview picks
 // max(4, round(seconds x preview_fps)) frames evenly (first and last included) at
 // preview_width x preview_height, one sample per pixel; --size and --rate
-// change those.  Throws std::invalid_argument naming --size or --rate,
+// change those.  Through a dome or a 360-degree camera the sizes are
+// dome_*_side square and 2:1 of sphere_*_height, unless --size says.  Throws std::invalid_argument naming --size or --rate,
 // std::runtime_error naming a missing or failing script, or when the shots
 // disagree on fps or size (their clips could not be joined).
 ShowcasePlan plan_showcase(const ShowcaseSettings& settings, const std::filesystem::path& shots_dir);

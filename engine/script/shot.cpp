@@ -72,6 +72,7 @@ SceneSpec Shot::frame(int i) {
     lua::TableReader t(L, -1, ctx);
     SceneSpec fs = read_scene_spec(t);
     lua_pop(L, 1);
+    fs.camera = delivered(fs.camera, delivery_);
     return fs;
   } catch (...) {
     lua_pop(L, 1);

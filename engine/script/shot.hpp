@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "camera/delivery.hpp"
 #include "lua/sandbox.hpp"
 #include "scene/scene_spec.hpp"
 #include "script/engine_api.hpp"
@@ -31,8 +32,13 @@ class Shot {
   const std::filesystem::path& file() const { return file_; }
 
   // The scene of frame i (0-based, < info().frames).  Errors name the file,
-  // the frame and the field.
+  // the frame and the field.  Its camera is the one the shot is delivered
+  // through (camera/delivery.hpp): its own unless set_delivery said other.
   SceneSpec frame(int i);
+
+  // Every frame from now on through `to`'s camera (render --camera).
+  void set_delivery(DeliveryCamera to) { delivery_ = to; }
+  DeliveryCamera delivery() const { return delivery_; }
 
   // The script and every module it required, in any frame evaluated so far
   // (for hashing a shot's inputs).
@@ -58,6 +64,7 @@ class Shot {
   ShotInfo info_;
   std::optional<Loaded> unused_;  // the constructor's sandbox, until a frame uses it
   std::vector<std::filesystem::path> loaded_files_;
+  DeliveryCamera delivery_ = DeliveryCamera::shot;
 };
 
 }  // namespace lc

@@ -93,6 +93,14 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
     if (*depth != "16") return std::nullopt;  // 8 is never written
     jf.settings.png_depth = PngDepth::sixteen;
   }
+  if (const std::string* camera = get("camera")) {
+    if (*camera == name_of(DeliveryCamera::dome))
+      jf.settings.camera = DeliveryCamera::dome;
+    else if (*camera == name_of(DeliveryCamera::sphere))
+      jf.settings.camera = DeliveryCamera::sphere;
+    else
+      return std::nullopt;
+  }
   if (const std::string* region = get("region")) {
     ImageWindow& w = jf.settings.window;
     const auto c1 = region->find(','), c2 = region->find(',', c1 + 1), x = region->find('x', c2 + 1);
@@ -133,7 +141,9 @@ std::string FrameSettings::describe() const {
   const std::string of = window.windowed() ? fmt::format(" (the window at {},{} of a {}x{} frame)", window.x0, window.y0,
                                                         window.frame_width, window.frame_height)
                                             : "";
-  return fmt::format("{}x{}{}, {}x{} samples per pixel{}, {}{}", width, height, of, supersample, supersample,
+  const std::string through =
+      camera != DeliveryCamera::shot ? fmt::format(", through the {} camera", name_of(camera)) : "";
+  return fmt::format("{}x{}{}{}, {}x{} samples per pixel{}, {}{}", width, height, of, through, supersample, supersample,
                      adaptive && supersample > 1 ? " (adaptive)" : "", layers ? "with data layers" : "no data layers",
                      png_depth == PngDepth::sixteen ? ", 16-bit PNG" : "");
 }
@@ -152,7 +162,10 @@ std::string journal_frame_line(const JournalFrame& f) {
   const ImageWindow& w = f.settings.window;
   const std::string depth = std::string(f.settings.png_depth == PngDepth::sixteen ? " png_depth=16" : "") +
                             (w.windowed() ? fmt::format(" region={},{},{}x{}", w.x0, w.y0, w.frame_width, w.frame_height)
-                                          : "");
+                                          : "") +
+                            (f.settings.camera != DeliveryCamera::shot
+                                 ? fmt::format(" camera={}", name_of(f.settings.camera))
+                                 : "");
   return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}",
                                 f.frame, f.settings.width, f.settings.height, f.settings.supersample,
                                 f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", depth, f.inputs, parts,

@@ -8,13 +8,14 @@
 //   lightcone-journal 1                                     (first line)
 //   input hash=<16 hex> path=<file>                         (an input file's content as of a run)
 //   frame=<n> size=<W>x<H> supersample=<N> layers=<0|1> sampling=<adaptive|full> [png_depth=16]
-//     [region=<x0>,<y0>,<frame W>x<frame H>]
+//     [region=<x0>,<y0>,<frame W>x<frame H>] [camera=<dome|360>]
 //     inputs=<16 hex> script=<16 hex> [sky=<16 hex>] exr=<bytes> png=<bytes> rays=<n>
 //     reused=<n> core_seconds=<s> star_seconds=<s> finished=<unix seconds>
 // A later frame line for the same frame supersedes an earlier one.  Lines
 // of older journals lack sampling (full), script and sky, and what the
 // frame cost beyond its rays; png_depth is written only for 16-bit PNGs,
-// region only for a window of the frame (size is then the window's).
+// region only for a window of the frame (size is then the window's),
+// camera only for a shot delivered through another camera.
 
 #include <cstdint>
 #include <cstddef>
@@ -25,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "camera/delivery_camera.hpp"
 #include "camera/image_window.hpp"
 #include "image/image_io.hpp"
 
@@ -37,6 +39,7 @@ struct FrameSettings {
   bool adaptive = false;  // adaptive supersampling (journal lines without the field: full N x N)
   PngDepth png_depth = PngDepth::eight;  // the PNG's bits per channel (render --png-depth)
   ImageWindow window{};  // the window of the frame the image is (render --region), if any
+  DeliveryCamera camera = DeliveryCamera::shot;  // the camera the shot was delivered through (render --camera)
   bool operator==(const FrameSettings&) const = default;
   // "48x32, 1x1 samples per pixel, no data layers": for messages.
   std::string describe() const;

@@ -106,7 +106,8 @@ struct Output {
 
 }  // namespace
 
-ConcatResult concat_videos(const std::vector<fs::path>& inputs, const fs::path& out, const ProgressFn& progress) {
+ConcatResult concat_videos(const std::vector<fs::path>& inputs, const fs::path& out, const ProgressFn& progress,
+                           const VideoLayout& layout) {
   // Inputs: video files in order; output: one file at `out`.  Every input is
   // opened and compared before anything is written.
   if (inputs.empty()) throw std::runtime_error(fmt::format("cannot write {}: no videos to join", out.string()));
@@ -129,6 +130,7 @@ ConcatResult concat_videos(const std::vector<fs::path>& inputs, const fs::path& 
   st->time_base = first.time_base;
   st->avg_frame_rate = first.avg_frame_rate;
   st->r_frame_rate = first.avg_frame_rate;
+  libav::add_layout(o.ctx, st, layout, where);
   libav::check(avio_open(&o.ctx->pb, o.file.temp_path().c_str(), AVIO_FLAG_WRITE), fmt::format("cannot write {}", where));
   libav::write_header(o.ctx, container, st->time_base, where);
 

@@ -24,8 +24,9 @@ struct ConcatResult {
 // done, inputs in all).  Throws std::runtime_error naming the input that
 // cannot be read, has not exactly one video stream, or differs from the
 // first input (saying in what), or naming `out`; on failure nothing is left
-// under `out`.
+// under `out`.  `layout` (a 360-degree film's) is written into `out` for
+// players, whatever the inputs carry (title cards carry none).
 ConcatResult concat_videos(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& out,
-                           const ProgressFn& progress = {});
+                           const ProgressFn& progress = {}, const VideoLayout& layout = {});
 
 }  // namespace lc
