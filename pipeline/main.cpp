@@ -309,10 +309,16 @@ int main(int argc, char** argv) {
       "showcase", "Render, encode and join the paper's three sequences into showcase.mp4 (resumable; runs under mpirun)");
   showcase_cmd->add_option("--quality", showcase.quality,
                            "preview (the default: 256x144, 3 frames per second of story; minutes) or production (the paper's settings)");
-  showcase_cmd->add_option("--size", showcase.size, "Image size WxH instead of the quality's (preview 256x144, production the shots')");
+  showcase_cmd->add_option("--size", showcase.size,
+                           "Image size WxH instead of the quality's (preview 256x144, production the shots'; with "
+                           "--camera dome 256x256 and 4096x4096, with --camera 360 384x192 and 4096x2048)");
   showcase_cmd->add_option("--rate", showcase.rate, "Preview only: frames per second of story (default 3; the video plays at this rate)")
       ->check(number());
-  showcase_cmd->add_option("-o,--out", showcase.out, "Output directory (default out/showcase/<quality>)");
+  showcase_cmd->add_option("-o,--out", showcase.out,
+                           "Output directory (default out/showcase/<quality>, or <quality>-dome, <quality>-360)");
+  showcase_cmd
+      ->add_option("--png-depth", showcase.png_bits, "Bits per channel of the frames' PNGs: 8 (the default) or 16 (as render)")
+      ->check(CLI::IsMember({8, 16}));
   showcase_cmd->add_option("--shots", showcase.shots, "Folder holding the three shot scripts (default: the project's shots/)")
       ->check(CLI::ExistingDirectory);
   showcase_cmd->add_option("--threads", showcase.threads, "Render threads per process (as render --threads)")

@@ -80,6 +80,7 @@ int render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const Sho
     rc.force = cmd.force;
     rc.progress = cmd.progress;
     rc.camera = std::string(name_of(plan.camera));
+    rc.png_bits = cmd.png_bits;
     if (master)
       fmt::print(stderr, "showcase: [{}/{}] rendering {}: {} of its {} frames\n", k + 1, plan.sequences.size(), s.name,
                  s.frames.size(), s.shot_frames);
@@ -149,7 +150,10 @@ void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const In
     } else {
       fmt::print(stderr, "showcase: encoding {} frames of {} at {:g} fps -> {}\n", seq.files.size(), s.name, plan.fps,
                  video.string());
-      encode_sequence(seq.files, o, video, progress_printer(guard, "showcase", "frames"));
+      // A 360-degree sequence's video is marked as one, as the film is.
+      EncodeOptions marked = o;
+      if (plan.camera == DeliveryCamera::sphere) marked.layout.projection = VideoProjection::equirectangular;
+      encode_sequence(seq.files, marked, video, progress_printer(guard, "showcase", "frames"));
     }
     // Thumbnails no larger than the frames.
     const ContactSheetOptions sheet{4, 4 * std::min(plan.width, 320), 16};

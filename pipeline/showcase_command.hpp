@@ -22,6 +22,7 @@ struct ShowcaseCommand {
   bool force = false;                          // as render --force
   bool thermal = false;                        // the fourth sequence too
   std::string camera = "shot";                 // --camera: shot, dome or 360
+  int png_bits = 8;                            // as render --png-depth
   double progress = 5.0;                       // as render --progress
 };
 

@@ -59,7 +59,12 @@ class EquirectCamera {
                          "degrees"),
                    field("latitude", &Params::latitude, std::optional<double>{180.0}, above(0.0), at_most(180.0),
                          "the span of latitude up the image, centred on forward (180: pole to pole)", "degrees")},
-        stereo_fields<Params>(), orientation_fields<Params>());
+        std::tuple{field("stereo", &Params::stereo, std::optional<StereoLayout>{StereoLayout::mono}, std::nullopt,
+                         std::nullopt,
+                         "mono (one eye) or top-bottom: omnidirectional stereo, the left eye's sphere above the "
+                         "right's (side-by-side is refused: a 4:1 sphere no video site takes)"),
+                   separation_field<Params>()},
+        orientation_fields<Params>());
     // ODS is delivered top-bottom (the 360-degree video sites' layout); a
     // side-by-side sphere would be 4:1.
     void validate() const {

@@ -76,13 +76,17 @@ class StereoFrame {
 // with members `stereo` (StereoLayout) and `separation` (M): a camera's
 // fields are std::tuple_cat of its own, these and orientation_fields.
 template <class P>
+constexpr auto separation_field() {
+  return field("separation", &P::separation, std::optional<double>{1.0}, above(0.0), std::nullopt,
+               "stereo: the distance between the eyes, in the observer's frame", "M");
+}
+template <class P>
 constexpr auto stereo_fields() {
   return std::tuple{
       field("stereo", &P::stereo, std::optional<StereoLayout>{StereoLayout::mono}, std::nullopt, std::nullopt,
             "both eyes in one frame: mono (one eye), top-bottom (the left eye's picture above the right's) or "
             "side-by-side (left, right)"),
-      field("separation", &P::separation, std::optional<double>{1.0}, above(0.0), std::nullopt,
-            "stereo: the distance between the eyes, in the observer's frame", "M"),
+      separation_field<P>(),
   };
 }
 

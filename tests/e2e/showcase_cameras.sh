@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # The paper's film for a dome and a headset (docs/showcase.md), at a tiny
 # preview (a frame every 4 s of story):
-#   1. showcase --camera dome: square clips and film; the frames are dome
-#      masters (the corners transparent in the EXRs, the journal says the
-#      camera); the hole of the disk's first frame is in the lower half of
+#   1. showcase --camera dome --png-depth 16: square clips and film; the
+#      frames are dome masters (the corners transparent in the EXRs, the
+#      journal says the camera and the PNGs' depth); the hole of the disk's first frame is in the lower half of
 #      the disc (above the dome's front horizon), not at its centre; the
 #      title cards are drawn inside the disc (black corners, the text in
 #      its lower half, none at the zenith).
-#   2. showcase --camera 360: 2:1 clips and film, the film marked as a
-#      360-degree video, the frames' EXRs record the projection.
+#   2. showcase --camera 360: 2:1 clips and film, each sequence's video and
+#      the film marked as 360-degree video, the frames' EXRs record the
+#      projection.
 #   3. A camera the showcase does not know is refused.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
@@ -16,9 +17,9 @@ ARGS=(--rate 0.25 --progress 0)
 
 # 1. The dome.
 CHECKS=$((CHECKS + 1))
-"$LIGHTCONE" showcase "${ARGS[@]}" --camera dome --size 192x192 --out dome 2>dome.log || fail "showcase --camera dome: $(cat dome.log)"
+"$LIGHTCONE" showcase "${ARGS[@]}" --camera dome --size 192x192 --png-depth 16 --out dome 2>dome.log || fail "showcase --camera dome: $(cat dome.log)"
 check_probe dome/showcase.mp4 width=192 height=192
-grep -q " camera=dome " dome/frames/kerr_accrDisk/kerr_accrDisk.journal || fail "the journal does not say the dome camera"
+grep -q " png_depth=16 camera=dome " dome/frames/kerr_accrDisk/kerr_accrDisk.journal || fail "the journal does not say the dome camera and the 16-bit PNGs: $(tail -1 dome/frames/kerr_accrDisk/kerr_accrDisk.journal)"
 "$PY" - dome/frames/kerr_accrDisk/kerr_accrDisk.0000.exr <<'PY' || fail "the dome's first frame is not a dome master framed for a dome"
 import sys
 import OpenImageIO as oiio
@@ -54,8 +55,10 @@ PY
 CHECKS=$((CHECKS + 1))
 "$LIGHTCONE" showcase "${ARGS[@]}" --camera 360 --size 128x64 --out vr 2>vr.log || fail "showcase --camera 360: $(cat vr.log)"
 check_probe vr/showcase.mp4 width=128 height=64
-side=$(ffprobe -v error -show_entries stream_side_data=projection -of default=nw=1 vr/showcase.mp4 2>&1)
-grep -qx "projection=equirectangular" <<<"$side" || fail "the 360 film is not marked as one: $side"
+for video in vr/showcase.mp4 vr/dihole.mp4; do
+  side=$(ffprobe -v error -show_entries stream_side_data=projection -of default=nw=1 "$video" 2>&1)
+  grep -qx "projection=equirectangular" <<<"$side" || fail "$video is not marked as a 360-degree video: $side"
+done
 "$PY" -c 'import sys, OpenImageIO as o; b = o.ImageBuf(sys.argv[1]); sys.exit(0 if b.spec().getattribute("lightcone/projection") == "equirectangular" else "no projection")' \
   vr/frames/dihole/dihole.0000.exr || fail "the 360 frames do not record their projection"
 
