@@ -246,6 +246,10 @@ int main(int argc, char** argv) {
   trace_cmd->add_option("-o,--output", trace.output, "CSV file to write (default: standard output)");
   trace_cmd->add_option("--size", trace.size, "Image size WxH instead of the shot's");
   trace_cmd->add_option("--scale", trace.scale, "Scale the image size by S")->check(number());
+  trace_cmd
+      ->add_option("--camera", trace.camera,
+                   "The pixel of the frame delivered through a dome master or a 360-degree camera (as render --camera)")
+      ->check(CLI::IsMember({"shot", "dome", "360"}));
   trace_cmd->add_flag("--json", trace.json,
                       "Print the report as one JSON object on standard output (the path then only with -o)");
 

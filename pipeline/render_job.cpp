@@ -12,16 +12,6 @@
 
 namespace lc {
 
-namespace {
-
-// --camera's text -> the camera; throws std::invalid_argument naming it.
-DeliveryCamera parse_delivery(const std::string& name) {
-  for (const DeliveryCamera d : {DeliveryCamera::shot, DeliveryCamera::dome, DeliveryCamera::sphere})
-    if (name == name_of(d)) return d;
-  throw std::invalid_argument(fmt::format("--camera {}: expected shot, dome or 360", name));
-}
-
-}  // namespace
 
 RenderJob load_render_job(const RenderCommand& cmd) {
   RenderJob job;
@@ -42,7 +32,9 @@ RenderJob load_render_job(const RenderCommand& cmd) {
     job.range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
     job.frames = job.range->frames();
   }
-  job.delivery = parse_delivery(cmd.camera);
+  const auto delivery = delivery_named(cmd.camera);
+  if (!delivery) throw std::invalid_argument(fmt::format("--camera {}: expected shot, dome or 360", cmd.camera));
+  job.delivery = *delivery;
   job.shot->set_delivery(job.delivery);
   const auto [shot_width, shot_height] = delivery_size(job.delivery, info.width, info.height);
   std::tie(job.rs.width, job.rs.height) = output_size(shot_width, shot_height, cmd.size, cmd.scale);

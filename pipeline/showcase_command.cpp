@@ -177,8 +177,7 @@ void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const In
 int run_showcase(const ShowcaseCommand& cmd) {
   const Clock::time_point start = Clock::now();
   ShowcaseSettings settings{parse_showcase_quality(cmd.quality), cmd.size, cmd.rate, cmd.thermal};
-  for (const DeliveryCamera d : {DeliveryCamera::shot, DeliveryCamera::dome, DeliveryCamera::sphere})
-    if (cmd.camera == name_of(d)) settings.camera = d;
+  if (const auto camera = delivery_named(cmd.camera)) settings.camera = *camera;
   // Each camera's film in a folder of its own (a dome's frames are not
   // the flat film's: a shared folder would refuse to resume).
   const std::string folder = settings.camera == DeliveryCamera::shot ? cmd.quality : cmd.quality + "-" + cmd.camera;

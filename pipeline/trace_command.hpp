@@ -19,6 +19,7 @@ struct TraceCommand {
   std::optional<std::string> size;
   double scale = 1.0;
   bool json = false;  // the report as one JSON object on standard output (the path only with -o)
+  std::string camera = "shot";  // as render --camera: the pixel of the frame delivered through it
 };
 
 int run_trace(const TraceCommand& cmd);

@@ -6,7 +6,8 @@
 #      journal says the camera and the PNGs' depth); the hole of the disk's first frame is in the lower half of
 #      the disc (above the dome's front horizon), not at its centre; the
 #      title cards are drawn inside the disc (black corners, the text in
-#      its lower half, none at the zenith).
+#      its lower half, none at the zenith); trace --camera dome finds the
+#      shadow at the hole's pixel.
 #   2. showcase --camera 360: 2:1 clips and film, each sequence's video and
 #      the film marked as 360-degree video, the frames' EXRs record the
 #      projection.
@@ -38,6 +39,12 @@ cy = sum(j + 0.5 for _, j in pts) / len(pts)
 want = H / 2 + 55 / 90 * H / 2
 if abs(cy - want) > 4: sys.exit(f"the shadow's centre is at row {cy:.1f}, want about {want:.1f} (35 degrees above the front horizon)")
 PY
+# trace --camera dome looks at the same frame: the pixel at the hole's
+# place (55/90 of the radius below the centre) is the shadow.
+"$LIGHTCONE" trace "$SRC/shots/kerr_accrDisk.lua" --frame 0 --camera dome --size 192x192 --pixel 96,154 --json \
+  >hole.json 2>hole.err || fail "trace --camera dome: $(cat hole.err)"
+"$PY" -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if d["hit"] == "horizon" else f"{d}")' hole.json ||
+  fail "trace --camera dome at the hole's pixel did not reach the horizon: $(cat hole.json)"
 ffmpeg -v error -i dome/cards/opening.mp4 -frames:v 1 -y card.png || fail "cannot decode the dome's opening card"
 "$PY" - card.png <<'PY' || fail "the dome's title card is not drawn inside the disc where a dome shows it"
 import sys
