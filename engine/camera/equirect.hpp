@@ -123,17 +123,23 @@ class EquirectCamera {
   // to a player.  Its stereo layout, in stereo.
   VideoLayout video_layout() const { return layout_; }
 
-  // Pixels that are not square (the spans' ratio is not the frame's): a
-  // 360-degree frame that is not 2:1.  Players and video sites expect
-  // square pixels; the frame is still rendered as asked.
+  // Pixels that are not square (the spans' ratio is not each picture's):
+  // a 360-degree frame that is not 2:1, or a top-bottom ODS frame that is
+  // not square.  Players and video sites expect square pixels; the frame
+  // is still rendered as asked.  Says the size the frame should have at
+  // its width.
   std::optional<std::string> size_warning() const {
     const double ratio = lon_per_px_ / lat_per_px_;
     if (std::abs(ratio - 1.0) <= 1e-3) return std::nullopt;
+    const double lon_span = 2 * half_width_ * lon_per_px_ / degree, lat_span = 2 * half_height_ * lat_per_px_ / degree;
+    const int width = frame_.eye_width(), picture_height = static_cast<int>(std::lround(width * lat_span / lon_span));
+    const bool stereo = frame_.layout() == StereoLayout::top_bottom;
     return fmt::format(
-        "equirect: the frame's pixels span {:.4g} degrees of longitude but {:.4g} of latitude (not square); a "
-        "{}x{}-degree window wants a frame {:.4g} times as wide as it is high (2:1 for the whole sphere)",
-        lon_per_px_ / degree, lat_per_px_ / degree, 2 * half_width_ * lon_per_px_ / degree,
-        2 * half_height_ * lat_per_px_ / degree, (half_width_ * lon_per_px_) / (half_height_ * lat_per_px_));
+        "equirect: the {}pixels span {:.4g} degrees of longitude but {:.4g} of latitude (not square); a {:.4g}x{:.4g}-"
+        "degree window wants {} {:.4g} times as wide as it is high: a {}x{} frame at this width{}",
+        stereo ? "eyes' pictures' " : "frame's ", lon_per_px_ / degree, lat_per_px_ / degree, lon_span, lat_span,
+        stereo ? "each eye's picture" : "a frame", lon_span / lat_span, width, stereo ? 2 * picture_height : picture_height,
+        stereo ? " (the two pictures one above the other)" : "");
   }
 
   const CameraAxes& axes() const { return axes_; }

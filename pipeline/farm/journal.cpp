@@ -137,15 +137,26 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
 
 }  // namespace
 
-std::string FrameSettings::describe() const {
-  const std::string of = window.windowed() ? fmt::format(" (the window at {},{} of a {}x{} frame)", window.x0, window.y0,
-                                                        window.frame_width, window.frame_height)
-                                            : "";
-  const std::string through =
-      camera != DeliveryCamera::shot ? fmt::format(", through the {} camera", name_of(camera)) : "";
+std::string FrameSettings::describe() const { return describe(*this); }
+
+std::string FrameSettings::describe(const FrameSettings& against) const {
+  std::string of;
+  if (window.windowed())
+    of = fmt::format(" (the window at {},{} of a {}x{} frame)", window.x0, window.y0, window.frame_width,
+                     window.frame_height);
+  else if (against.window.windowed())
+    of = " (the whole frame)";
+  std::string through;
+  if (camera != DeliveryCamera::shot)
+    through = fmt::format(", through the {} camera", name_of(camera));
+  else if (against.camera != DeliveryCamera::shot)
+    through = ", through the shot's own camera";
+  const char* depth = png_depth == PngDepth::sixteen ? ", 16-bit PNG"
+                      : against.png_depth == PngDepth::sixteen ? ", 8-bit PNG"
+                                                               : "";
   return fmt::format("{}x{}{}{}, {}x{} samples per pixel{}, {}{}", width, height, of, through, supersample, supersample,
                      adaptive && supersample > 1 ? " (adaptive)" : "", layers ? "with data layers" : "no data layers",
-                     png_depth == PngDepth::sixteen ? ", 16-bit PNG" : "");
+                     depth);
 }
 
 std::string journal_header_line() { return with_check(header); }

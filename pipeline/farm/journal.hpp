@@ -41,8 +41,12 @@ struct FrameSettings {
   ImageWindow window{};  // the window of the frame the image is (render --region), if any
   DeliveryCamera camera = DeliveryCamera::shot;  // the camera the shot was delivered through (render --camera)
   bool operator==(const FrameSettings&) const = default;
-  // "48x32, 1x1 samples per pixel, no data layers": for messages.
+  // "48x32, 1x1 samples per pixel, no data layers": for messages.  The
+  // defaults of the PNG's depth, the window and the camera are said only
+  // where `against` (the settings it is shown beside) differs in them:
+  // "..., 8-bit PNG" beside "..., 16-bit PNG".
   std::string describe() const;
+  std::string describe(const FrameSettings& against) const;
 };
 
 // What a frame's input hash is made of, recorded beside it: a reader

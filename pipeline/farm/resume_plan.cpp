@@ -38,18 +38,23 @@ namespace {
 std::string explain_stale(const FrameStore& store, const ShotSurvey& survey, const FrameSettings& settings,
                           const std::vector<int>& stale) {
   std::vector<std::string> reasons;
-  std::map<std::string, std::vector<int>> by_settings;
+  // Grouped by their settings' words beside this render's (each group's
+  // first frame stands for it).
+  std::map<std::string, std::pair<FrameSettings, std::vector<int>>> by_settings;
   std::vector<int> by_inputs;
   for (int f : stale) {
     const JournalFrame& jf = store.journal().frames.at(f);
-    if (!(jf.settings == settings))
-      by_settings[jf.settings.describe()].push_back(f);
-    else
+    if (!(jf.settings == settings)) {
+      auto& group = by_settings[jf.settings.describe(settings)];
+      group.first = jf.settings;
+      group.second.push_back(f);
+    } else {
       by_inputs.push_back(f);
+    }
   }
-  for (const auto& [desc, frames] : by_settings)
-    reasons.push_back(fmt::format("{} rendered at {}, this render asks for {}", frames_were(frames), desc,
-                                  settings.describe()));
+  for (const auto& [desc, group] : by_settings)
+    reasons.push_back(fmt::format("{} rendered at {}, this render asks for {}", frames_were(group.second), desc,
+                                  settings.describe(group.first)));
   if (!by_inputs.empty()) {
     std::vector<std::string> changed;
     for (const auto& [path, hash] : survey.files) {

@@ -94,7 +94,21 @@ TEST(Equirect, PixelsThatAreNotSquareAreWarnedAbout) {
   const auto w = EquirectCamera(equirect(360, 180, 0, 0, 0), 1280, 720).size_warning();
   ASSERT_TRUE(w);
   EXPECT_NE(w->find("not square"), std::string::npos) << *w;
-  EXPECT_NE(w->find("2 times as wide"), std::string::npos) << *w;
+  EXPECT_NE(w->find("a 360x180-degree window wants a frame 2 times as wide as it is high: a 1280x640 frame"),
+            std::string::npos)
+      << *w;
+  // Float noise is not printed: 300 pixels of 1.2 degrees each make 360.
+  const auto odd = EquirectCamera(equirect(360, 180, 0, 0, 0), 300, 200).size_warning();
+  ASSERT_TRUE(odd);
+  EXPECT_NE(odd->find("a 360x180-degree window"), std::string::npos) << *odd;
+  // Top-bottom stereo: each eye's picture 2:1, the frame square.
+  EquirectCamera::Params ods = equirect(360, 180, 0, 0, 0);
+  ods.stereo = StereoLayout::top_bottom;
+  EXPECT_FALSE(EquirectCamera(ods, 512, 512).size_warning());
+  const auto flat_pair = EquirectCamera(ods, 512, 256).size_warning();
+  ASSERT_TRUE(flat_pair);
+  EXPECT_NE(flat_pair->find("each eye's picture 2 times as wide as it is high: a 512x512 frame"), std::string::npos)
+      << *flat_pair;
   // Through the registry's Camera, as the render asks it.
   CameraSpec spec = equirect(360, 180, 0, 0, 0);
   EXPECT_TRUE(Camera(spec, 1280, 720).size_warning());

@@ -81,6 +81,15 @@ TEST(Journal, PngDepthAndWindowRoundTripAndAreSettings) {
   EXPECT_FALSE(j.frames.at(4).settings == frame(4).settings);
   EXPECT_NE(f.settings.describe().find("the window at 1024,2048 of a 8192x8192 frame"), std::string::npos);
   EXPECT_NE(f.settings.describe().find("16-bit PNG"), std::string::npos);
+  // Beside settings that differ in them, the defaults are said too.
+  FrameSettings plain_settings = frame(4).settings;
+  f.settings.camera = DeliveryCamera::dome;
+  const std::string beside = plain_settings.describe(f.settings);
+  EXPECT_NE(beside.find("8-bit PNG"), std::string::npos) << beside;
+  EXPECT_NE(beside.find("(the whole frame)"), std::string::npos) << beside;
+  EXPECT_NE(beside.find("through the shot's own camera"), std::string::npos) << beside;
+  EXPECT_EQ(plain_settings.describe(), plain_settings.describe(plain_settings));
+  EXPECT_EQ(plain_settings.describe().find("8-bit"), std::string::npos);
 }
 
 TEST(Journal, EmptyTextIsAnEmptyJournal) {
