@@ -19,7 +19,8 @@
 #      pixel of the window's edge and glare of stars outside it),
 #      the EXR and the journal say which window; a window outside the frame
 #      is refused naming the frame's size, nothing written.  --png-depth 16
-#      writes 16-bit PNGs.
+#      writes 16-bit PNGs; --png-depth 12 and --camera fisheye (render and
+#      trace) are refused.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 use_mpirun  # lib.sh: Open MPI settings, and `mpi N CMD...`
@@ -122,7 +123,11 @@ if png.spec().format != oiio.UINT16:
 PY
 expect_error outside "--region 0,0,65,10: reaches outside the 64x64 frame" -- \
   "$LIGHTCONE" render "$SHOT" --out outside --size 64x64 --region 0,0,65,10
+expect_error depth "--png-depth: 12 not in {8,16}" -- "$LIGHTCONE" render "$SHOT" --out depth --size 32x32 --png-depth 12
+expect_error camera "--camera: fisheye not in {shot,dome,360}" -- "$LIGHTCONE" render "$SHOT" --out camera --camera fisheye
+expect_error trace_camera "--camera: fisheye not in {shot,dome,360}" -- \
+  "$LIGHTCONE" trace "$SHOT" --frame 0 --pixel 1,1 --camera fisheye
 CHECKS=$((CHECKS + 1))
-if ls outside/*.png >/dev/null 2>&1; then fail "a refused region wrote frames"; fi
+if ls outside/*.png depth/*.png camera/*.png >/dev/null 2>&1; then fail "a refused render wrote frames"; fi
 
 e2e_end

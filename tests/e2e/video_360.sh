@@ -13,7 +13,8 @@
 #      2:1 pictures whose MP4 carries the stereo layout beside the
 #      spherical mapping; a stereo pinhole side by side says so too.
 #   5. A span out of range, a separation of 0 and a side-by-side sphere are
-#      errors at the shot's line, nothing written.
+#      errors at the shot's line, a --region of a stereo frame an error
+#      naming the flag; nothing written.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 SHOT="$SRC/shots/equirect_example.lua"
@@ -93,7 +94,9 @@ expect_error blind "blind.lua:20: equirect: field 'separation' must be greater t
 sed 's/lc.equirect{}/lc.equirect{stereo = "side-by-side"}/' "$SHOT" >wide4.lua
 expect_error wide4 "wide4.lua:20: equirect: stereo 'side-by-side' is not offered for the equirect" -- \
   "$LIGHTCONE" render wide4.lua --out wide4 --size 64x16
+expect_error ods_region "--region: frame 0's camera is stereo; a region of a stereo frame is not offered" -- \
+  "$LIGHTCONE" render ods.lua --out ods_region --size 128x128 --region 0,0,64,64
 CHECKS=$((CHECKS + 1))
-if ls far/*.png flat/*.png blind/*.png wide4/*.png >/dev/null 2>&1; then fail "a refused shot wrote frames"; fi
+if ls far/*.png flat/*.png blind/*.png wide4/*.png ods_region/*.png >/dev/null 2>&1; then fail "a refused shot wrote frames"; fi
 
 e2e_end
