@@ -211,6 +211,16 @@ int main(int argc, char** argv) {
       ->add_option("--png-depth", render.png_bits,
                    "Bits per channel of the PNG frames: 8 (the default) or 16 (dome masters: docs/cameras.md)")
       ->check(CLI::IsMember({8, 16}));
+  render_cmd
+      ->add_option("--shutter", render.shutter,
+                   "Motion blur: the shutter open this share of each frame interval, 0 to 1 (0.5: the film camera's "
+                   "180 degrees; 0: closed), over the shot's and its frames' own (docs/motion_blur.md)");
+  render_cmd->add_option("--shutter-position", render.shutter_position,
+                         "Where the open shutter lies against each frame's moment: centre (the default), start or "
+                         "end, over the shot's");
+  render_cmd->add_option("--time-samples", render.time_samples,
+                         "Instants the open shutter is cut into (the shot's `time_samples`, default 8): each a scene, "
+                         "and at least that many samples in a pixel sampled in full");
   render_cmd->add_option("--progress", render.progress,
                          "Seconds between progress lines when stderr is not a terminal (default 5; 0: none)")
       ->check(number());

@@ -145,6 +145,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   farm::FrameSettings settings = farm::frame_settings(job.rs);
   settings.png_depth = cmd.png_depth();
   settings.camera = job.delivery;
+  settings.shutter = job.shutter;
   const farm::ResumePlan plan = farm::plan_resume(store, survey, settings, job.frames, cmd.force, info.name);
 
   const int threads = mpi ? 0 : (cmd.threads > 0 ? cmd.threads : farm::usable_cpus());

@@ -33,6 +33,11 @@ struct RenderCommand {
   int png_bits = 8;                   // --png-depth: 8 or 16 (CLI11 zeroes an enum option not given)
   PngDepth png_depth() const { return png_bits == 16 ? PngDepth::sixteen : PngDepth::eight; }
   double progress = 5.0;              // seconds between plain progress lines (0: none)
+  // The shutter over the shot's (docs/motion_blur.md): --shutter,
+  // --shutter-position, --time-samples.
+  std::optional<double> shutter;
+  std::optional<std::string> shutter_position;
+  std::optional<int> time_samples;
 };
 
 int run_render(const RenderCommand& cmd);

@@ -1,5 +1,6 @@
 #include "render_job.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
@@ -12,6 +13,42 @@
 
 namespace lc {
 
+
+namespace {
+
+// The command line's shutter (docs/motion_blur.md).  Throws
+// std::invalid_argument naming the flag.
+ShutterOverride shutter_override(std::optional<double> open, const std::optional<std::string>& position,
+                                 std::optional<int> time_samples) {
+  ShutterOverride out;
+  if (open) {
+    if (!(*open >= 0.0 && *open <= 1.0))
+      throw std::invalid_argument(fmt::format(
+          "--shutter {}: must be between 0 (closed) and 1 (open for the whole frame interval); 0.5 is the film "
+          "camera's 180 degrees",
+          *open));
+    out.open = *open;
+  }
+  if (position) {
+    const auto names = choice_names(ShutterPosition{});
+    const auto it = std::find(names.begin(), names.end(), *position);
+    if (it == names.end())
+      throw std::invalid_argument(
+          fmt::format("--shutter-position {}: expected {}", *position, choices_text<ShutterPosition>()));
+    out.position = static_cast<ShutterPosition>(it - names.begin());
+  }
+  if (time_samples) {
+    if (*time_samples < 1 || *time_samples > max_time_samples)
+      throw std::invalid_argument(fmt::format(
+          "--time-samples {}: must be between 1 and {} (each is an evaluation of the shot and a scene held while the "
+          "frame renders)",
+          *time_samples, max_time_samples));
+    out.time_samples = *time_samples;
+  }
+  return out;
+}
+
+}  // namespace
 
 RenderJob load_render_job(const RenderCommand& cmd) {
   RenderJob job;
@@ -36,6 +73,8 @@ RenderJob load_render_job(const RenderCommand& cmd) {
   if (!delivery) throw std::invalid_argument(fmt::format("--camera {}: expected shot, dome or 360", cmd.camera));
   job.delivery = *delivery;
   job.shot->set_delivery(job.delivery);
+  job.shutter = shutter_override(cmd.shutter, cmd.shutter_position, cmd.time_samples);
+  job.shot->set_shutter(job.shutter);
   const auto [shot_width, shot_height] = delivery_size(job.delivery, info.width, info.height);
   std::tie(job.rs.width, job.rs.height) = output_size(shot_width, shot_height, cmd.size, cmd.scale);
   if (cmd.region) {

@@ -26,6 +26,7 @@ struct RenderJob {
   int preview = 0;                  // --preview
   std::uint64_t digest = 0;         // farm::job_digest: what an MPI master and its workers compare
   DeliveryCamera delivery = DeliveryCamera::shot;  // --camera
+  ShutterOverride shutter{};                       // --shutter, --shutter-position, --time-samples
   std::optional<long> test_pause;   // LIGHTCONE_TEST_PAUSE_AFTER (farm/test_pause.hpp)
 };
 

@@ -15,7 +15,9 @@ namespace lc {
 
 struct CameraSample {
   double px = 0.0, py = 0.0;  // image point in pixel units: pixel (i, j) spans [i, i+1] x [j, j+1], j = 0 at the top
-  double time = 0.0;          // within the frame, in units of the frame interval (0: the frame's own moment)
+  // Its offset from the frame's moment, in frame intervals (0: the frame's
+  // own moment; an instant of its shutter: render/sample_times.hpp).
+  double time = 0.0;
 };
 
 struct CameraRay {
@@ -24,7 +26,7 @@ struct CameraRay {
   // the observer's own event).
   Vec3 eye{};
   double time = 0.0;  // the sample's time, as CameraSample::time
-  bool at_observer() const { return eye[0] == 0.0 && eye[1] == 0.0 && eye[2] == 0.0 && time == 0.0; }
+  bool at_observer() const { return eye[0] == 0.0 && eye[1] == 0.0 && eye[2] == 0.0; }
 };
 
 }  // namespace lc

@@ -108,6 +108,10 @@ inline constexpr std::size_t max_shot_name_length = 128;
 // the scene is copied out of Lua (a script can list one sphere a million
 // times in a few MiB of Lua memory, which would take GiBs here).
 inline constexpr std::size_t max_scene_objects = 1000;
+// The most instants a shutter may be cut into (scene/shutter.hpp): each is
+// an evaluation of the shot, a scene held while the frame renders and,
+// under a sky of point stars, a ray per pixel for the star stage.
+inline constexpr int max_time_samples = 64;
 
 // How far from the origin an observer may be (M): a ray from farther away
 // starts at a coordinate time and radius so large that double precision

@@ -28,13 +28,20 @@ struct FrameImage {
   std::vector<Layer> layers;
   // Each pixel's ray where the frame's sky has stars drawn as points (the
   // star pass reads them; render/renderer.hpp's prepare_frame makes room),
-  // else empty.  Not written to the frame's files.
+  // else empty; a plane of width * height of them per instant of a blurred
+  // frame's shutter (docs/motion_blur.md).  Not written to the frame's files.
   std::vector<SkyPoint> sky;
   // Per pixel, the share of its samples the camera had a ray for (0 outside
   // a dome master's disc), where make_frame made room for it; empty: every
   // pixel opaque.  The frame's files carry it only where some pixel is not
   // (image_io).
   std::vector<float> alpha;
+
+  // Planes of sky points held: 0, 1, or one per instant of the shutter.
+  std::size_t sky_planes() const {
+    const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    return n == 0 ? 0 : sky.size() / n;
+  }
 };
 
 // Whether some pixel of `image` is not opaque: the frame's EXR then has an

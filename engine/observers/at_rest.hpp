@@ -45,6 +45,8 @@ struct AtRestParams {
   std::string extra_key() const { return fmt::format(" at {:a} {:a} {:a}", position[1], position[2], position[3]); }
   // The scene's `time` field.
   void set_time(double t) { position[0] = t; }
+  // Its clock: the scene time (an exact scene key holds it: scene_key).
+  double clock() const { return position[0]; }
 };
 
 // The path of an observer held at one place: the same scene position at

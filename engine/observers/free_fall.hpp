@@ -52,6 +52,8 @@ class FreeFall {
     std::string extra_json(bool) const { return ", \"worldline\": " + worldline.json(); }
     // ... and exactly.
     std::string extra_key() const { return " along " + worldline.key(); }
+    // Its clock: proper time along the worldline.
+    double clock() const { return proper_time; }
     // Where on the worldline it may be.
     void validate() const {
       if (proper_time > worldline.duration)

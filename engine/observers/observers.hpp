@@ -83,6 +83,11 @@ inline bool observer_fixed_in_space(const ObserverSpec& spec) {
   return fixed;
 }
 
+// The observer's clock: scene time for one at rest, proper time for a fall.
+inline double observer_clock(const ObserverSpec& spec) {
+  return std::visit([](const auto& p) { return p.clock(); }, spec);
+}
+
 // The scene's `time` given to the observer: "" where its kind takes it,
 // else why not ("a free-falling observer's time comes from its worldline;
 // remove 'time'").

@@ -12,6 +12,10 @@
 //   reconstruct  samples -> pixels: colour, alpha (the share of samples with
 //                a ray), the layers from the pixel's centre ray, the sky
 //                point of its first ray (reconstruct_row).
+// Where the frame's shutter is open and its scene changes within it
+// (SceneIn::instants), each sample is at one instant of it
+// (render/sample_times.hpp) and is generated, traced and shaded in that
+// instant's scene.
 // Templated on the camera so that any class satisfying CameraModel (a
 // registered one, through Camera, or a test's own) drives the same stages.
 
@@ -32,6 +36,7 @@
 #include "render/ray_start.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_memo.hpp"
+#include "render/sample_times.hpp"
 #include "render/shade.hpp"
 #include "render/trace.hpp"
 
@@ -67,6 +72,22 @@ struct RowGrid {
     const int a = static_cast<int>(k) % N, b = static_cast<int>(k) / N;
     return {static_cast<double>(i) + (a + 0.5) / N, j + (b + 0.5) / N, 0.0};
   }
+};
+
+// The instants of a row's grid samples in a frame whose shutter is open
+// (sample_instants: the same for any split of the frame into rows and
+// windows), and where each instant's sky points go.
+struct RowTimes {
+  std::vector<int> instant;  // of row sample g < W N N
+  std::size_t plane = 0;     // pixels of the image: FrameImage::sky holds a plane of them per instant
+  RowTimes(const RowGrid& grid, int instants, int j, const ImageWindow& window, std::size_t pixels)
+      : instant(grid.W * grid.NN), plane(pixels) {
+    for (std::size_t i = 0; i < grid.W; ++i)
+      sample_instants(window.x0 + static_cast<std::int64_t>(i), window.y0 + static_cast<std::int64_t>(j), instants,
+                      static_cast<int>(grid.first_index(i)), grid.first_sample(i).first != 0,
+                      std::span<int>(instant.data() + i * grid.NN, grid.NN));
+  }
+  int of_first(const RowGrid& grid, std::size_t i) const { return instant[i * grid.NN + grid.first_index(i)]; }
 };
 
 // A sample as adaptive sampling compares it: its hit kind and its colour
@@ -267,10 +288,11 @@ void take_samples(const SceneIn<S>& sc, const C& camera, const Tracer& tracer, i
 // The reconstruct stage: row j's pixels from its samples.  Colour: the mean
 // of the samples taken (the whole grid, or the first sample of an
 // unrefined pixel); alpha (where the image has it): the share of them with
-// a ray; the layers: the centre sample's; the sky point: the first
-// sample's, with where in the pixel it passed.
+// a ray; the layers: the centre sample's (in a blurred frame, `times`, the
+// centre ray at the frame's own moment); the sky point: the first
+// sample's, with where in the pixel it passed (in its instant's plane).
 inline void reconstruct_row(const RowGrid& grid, const RowPlan& plan, const std::vector<FrameSample>& samples, int j,
-                            bool layers, FrameImage& img) {
+                            bool layers, FrameImage& img, const RowTimes* times = nullptr) {
   const std::size_t W = grid.W, NN = grid.NN;
   for (std::size_t i = 0; i < W; ++i) {
     double acc[3] = {0, 0, 0};
@@ -287,13 +309,13 @@ inline void reconstruct_row(const RowGrid& grid, const RowPlan& plan, const std:
     if (!img.alpha.empty()) img.alpha[p] = static_cast<float>(with_ray) / static_cast<float>(n);
     if (!img.sky.empty()) {
       const auto [a, b] = grid.first_sample(i);
-      SkyPoint& sp = img.sky[p];
+      SkyPoint& sp = img.sky[(times ? static_cast<std::size_t>(times->of_first(grid, i)) * times->plane : 0) + p];
       sp = samples[i * NN + grid.first_index(i)].sky;
       sp.dx = static_cast<float>((a + 0.5) / grid.N);
       sp.dy = static_cast<float>((b + 0.5) / grid.N);
     }
     if (layers) {
-      const FrameSample& centre_sample = plan.has_centre_sample(i)
+      const FrameSample& centre_sample = !times && plan.has_centre_sample(i)
                                              ? samples[i * NN + static_cast<std::size_t>(grid.centre)]
                                              : samples[W * NN + i];
       for (std::size_t l = 0; l < layer_count; ++l) img.layers[l].values[p] = centre_sample.layers[l];
@@ -309,49 +331,114 @@ inline void reconstruct_row(const RowGrid& grid, const RowPlan& plan, const std:
 // ones.  Each pixel's first sample is its ray for point stars (their grid:
 // a fixed point of every pixel, traced whatever adaptive sampling does).
 // `tracer` is the trace stage (pixel_rows::TraceRays).
+//
+// A blurred frame (sc.instants not empty: docs/motion_blur.md) takes a grid
+// of at least as many samples as instants (samples_per_side), each in its
+// instant's scene seen by that instant's camera; it neither takes nor
+// keeps samples in the memo (its samples are not the frame's scene shifted
+// in time); its layers are the centre ray's at the frame's own moment
+// (sc, `camera`); and under point stars every instant gets a plane of sky
+// points (a ray at each pixel's first-sample point: the instant's own
+// sample where the pixel's first sample took it, else one more ray).
 template <class S, class C, class Tracer = pixel_rows::TraceRays>
 RenderStats render_rows_with(const SceneIn<S>& sc, const C& camera, const RenderSettings& rs, std::span<const int> rows,
                              FrameImage& img, SampleMemo* memo, const Tracer& tracer = {}) {
   using namespace pixel_rows;
   RenderStats stats;
-  const RowGrid grid(rs.supersample, rs.width);
+  const int K = static_cast<int>(sc.instants.size());
+  const bool blurred = K > 0;
+  const RowGrid grid(blurred ? samples_per_side(rs.supersample, K) : rs.supersample, rs.width);
   const std::size_t W = grid.W, NN = grid.NN;
   const bool adaptive = rs.adaptive && grid.N >= 2;
   const bool sky_points = !img.sky.empty();
+  if (blurred) memo = nullptr;
   RowBuffers buffers;
-  std::vector<FrameSample> samples(W * NN + W);  // the row's samples by index (RowGrid)
+  // The row's samples by index (RowGrid), then (blurred, point stars) the
+  // star grid's extra rays W N N + W + i.
+  std::vector<FrameSample> samples(W * NN + 2 * W);
+  std::vector<std::size_t> at_instant, extra;
   for (int j : rows) {
     std::optional<SampleMemo::Row> kept;
     if (memo) kept = memo->row(j, sc.still_key, sc.eye.time);
     // Rays work out how long they stay valid near a moving object only
     // where a later frame is likely to use it (0: not worked out).
     const float window = kept && kept->continues() ? std::numeric_limits<float>::infinity() : 0.0f;
-    auto grid_point = [&](std::size_t g) { return grid.point(g, j); };
     // Pixel i's first grid sample carries its sky point for point stars.
     auto grid_sky = [&](std::size_t g) -> std::optional<std::size_t> {
       if (sky_points && g % NN == grid.first_index(g / NN)) return g / NN;
       return std::nullopt;
     };
+    std::optional<RowTimes> times;
+    if (blurred) times.emplace(grid, K, j, rs.window, static_cast<std::size_t>(img.width) * img.height);
+    // Image point `p` at instant `at`.
+    auto at_moment = [](CameraSample p, const SceneIn<S>& at) {
+      p.time = at.moment;
+      return p;
+    };
+    // The samples `where` of the row, each in its instant's scene.
+    auto take = [&](std::span<const std::size_t> where) {
+      if (!blurred) {
+        take_samples(sc, camera, tracer, j, W, where, [&](std::size_t g) { return grid.point(g, j); }, grid_sky, kept,
+                     window, buffers, samples, stats);
+        return;
+      }
+      for (int k = 0; k < K; ++k) {
+        const SceneIn<S>& at = sc.instants[static_cast<std::size_t>(k)];
+        at_instant.clear();
+        for (const std::size_t g : where)
+          if (times->instant[g] == k) at_instant.push_back(g);
+        take_samples(
+            at, at.camera, tracer, j, W, std::span<const std::size_t>(at_instant),
+            [&](std::size_t g) { return at_moment(grid.point(g, j), at); }, grid_sky, kept, window, buffers, samples,
+            stats);
+      }
+    };
     RowPlan plan(grid, adaptive, camera.wrap().columns);
     std::vector<std::size_t>& where = buffers.where;
     plan.first_round(where);
     do {
-      take_samples(sc, camera, tracer, j, W, std::span<const std::size_t>(where), grid_point, grid_sky, kept, window, buffers,
-                   samples, stats);
+      take(std::span<const std::size_t>(where));
     } while (plan.next_round(where, samples));
 
     // The layers take the pixel-centre sample; it is traced where no grid
-    // sample sits there (even N) or it was not taken (an unrefined pixel).
+    // sample sits there (even N), it was not taken (an unrefined pixel) or
+    // it is not at the frame's moment (a blurred frame).
     std::vector<std::size_t> centres;
     if (rs.layers)
       for (std::size_t i = 0; i < W; ++i)
-        if (!plan.has_centre_sample(i)) centres.push_back(W * NN + i);
+        if (blurred || !plan.has_centre_sample(i)) centres.push_back(W * NN + i);
     take_samples(
         sc, camera, tracer, j, W, std::span<const std::size_t>(centres),
         [&](std::size_t g) { return CameraSample{static_cast<double>(g - W * NN) + 0.5, j + 0.5, 0.0}; },
         [](std::size_t) { return std::optional<std::size_t>{}; }, kept, window, buffers, samples, stats);
 
-    reconstruct_row(grid, plan, samples, j, rs.layers, img);
+    reconstruct_row(grid, plan, samples, j, rs.layers, img, times ? &*times : nullptr);
+
+    // A blurred frame's star grid: every instant's ray through each pixel's
+    // first-sample point, into the instant's plane (the point-star stage
+    // draws each instant's stars from its own).
+    if (blurred && sky_points)
+      for (int k = 0; k < K; ++k) {
+        const SceneIn<S>& at = sc.instants[static_cast<std::size_t>(k)];
+        extra.clear();
+        for (std::size_t i = 0; i < W; ++i)
+          if (times->of_first(grid, i) != k) extra.push_back(W * NN + W + i);
+        auto first_point = [&](std::size_t g) {
+          const std::size_t i = g - W * NN - W;
+          return at_moment(grid.point(i * NN + grid.first_index(i), j), at);
+        };
+        std::optional<SampleMemo::Row> none;
+        take_samples(at, at.camera, tracer, j, W, std::span<const std::size_t>(extra), first_point,
+                     [](std::size_t) { return std::optional<std::size_t>{}; }, none, 0.0f, buffers, samples, stats);
+        for (const std::size_t g : extra) {
+          const std::size_t i = g - W * NN - W;
+          const auto [a, b] = grid.first_sample(i);
+          SkyPoint& sp = img.sky[static_cast<std::size_t>(k) * times->plane + static_cast<std::size_t>(j) * W + i];
+          sp = samples[g].sky;
+          sp.dx = static_cast<float>((a + 0.5) / grid.N);
+          sp.dy = static_cast<float>((b + 0.5) / grid.N);
+        }
+      }
   }
   return stats;
 }

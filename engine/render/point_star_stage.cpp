@@ -1,6 +1,9 @@
 #include "render/point_star_stage.hpp"
 
+#include <stdexcept>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "stars/star_pass.hpp"
 
@@ -62,6 +65,24 @@ long draw_point_stars(const PointStars& stars, const Camera& camera, std::span<c
     }
   }
   if (!camera.rays_everywhere()) black_outside_rays(camera, image);
+  return drawn;
+}
+
+long draw_point_stars(std::span<const InstantStars> instants, std::span<const SkyPoint> rays, FrameImage& image,
+                      int threads, double* cpu_seconds) {
+  const std::size_t n = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+  if (rays.size() != n * instants.size())
+    throw std::logic_error(fmt::format("the star stage got {} sky points for {} instants of {} pixels", rays.size(),
+                                       instants.size(), n));
+  const float weight = 1.0f / static_cast<float>(instants.size());
+  FrameImage stars_only{image.width, image.height, {}, {}, {}, {}};
+  long drawn = 0;
+  for (std::size_t k = 0; k < instants.size(); ++k) {
+    stars_only.rgb.assign(3 * n, 0.0f);
+    drawn += draw_point_stars(*instants[k].stars, *instants[k].camera, rays.subspan(k * n, n), stars_only, threads,
+                              cpu_seconds);
+    for (std::size_t p = 0; p < 3 * n; ++p) image.rgb[p] += weight * stars_only.rgb[p];
+  }
   return drawn;
 }
 

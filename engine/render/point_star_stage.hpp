@@ -24,4 +24,19 @@ namespace lc {
 long draw_point_stars(const PointStars& stars, const Camera& camera, std::span<const SkyPoint> rays,
                       FrameImage& image, int threads = 1, double* cpu_seconds = nullptr);
 
+// One instant of a blurred frame's shutter as the star stage sees it: its
+// sky's stars and its camera.
+struct InstantStars {
+  const PointStars* stars;
+  const Camera* camera;
+};
+
+// The stars of a blurred frame (docs/motion_blur.md): each instant's drawn
+// from its own plane of `rays` (FrameImage::sky: a plane per instant) and
+// added with weight 1/K, so a star moving across the image leaves a streak
+// of K images whose light sums to the star's.  Otherwise as
+// draw_point_stars.
+long draw_point_stars(std::span<const InstantStars> instants, std::span<const SkyPoint> rays, FrameImage& image,
+                      int threads = 1, double* cpu_seconds = nullptr);
+
 }  // namespace lc

@@ -61,13 +61,14 @@ Eye displaced_eye(const SceneIn<S>& sc, const Vec3& offset) {
 class EyePool {
  public:
   void clear() { eyes_.clear(); }
-  // Where the camera ray `r` starts in the scene sc.  Samples with their
-  // own time need the observer's path at that time, which no camera asks
-  // for yet (std::invalid_argument: motion blur is the issue that adds it).
+  // Where the camera ray `r` starts in the scene sc, which must be the
+  // scene at the ray's time (the frame's, or the instant of its shutter the
+  // sample took: SceneIn::moment), whose eye is the observer there.
   template <class S>
   RayStart start(const SceneIn<S>& sc, const CameraRay& r) {
-    if (r.time != 0.0)
-      throw std::invalid_argument("a camera sample with its own time: this build traces every ray at the frame's moment");
+    if (r.time != sc.moment)
+      throw std::logic_error(fmt::format("a camera ray at {:+g} of the frame started in its scene at {:+g}", r.time,
+                                         sc.moment));
     if (r.at_observer()) return {&sc.eye, r.direction};
     // A stereo pinhole's eye is the same for a row of rays: made once.
     if (eyes_.empty() || r.eye != last_offset_) {

@@ -27,7 +27,9 @@ FrameImage make_frame(const RenderSettings& rs) {
 
 void prepare_frame(const Scene& scene, FrameImage& image) {
   const bool stars = std::visit([](const auto& sc) { return sc.sky.point_stars() != nullptr; }, scene);
-  const std::size_t n = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+  // A plane per instant of a blurred frame's shutter (docs/motion_blur.md).
+  const std::size_t planes = std::visit([](const auto& sc) { return std::max<std::size_t>(1, sc.instants.size()); }, scene);
+  const std::size_t n = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * planes;
   if (stars && image.sky.size() != n) image.sky.assign(n, SkyPoint{});
 }
 

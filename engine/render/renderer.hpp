@@ -17,8 +17,9 @@ class SampleMemo;
 
 
 // Makes room in `image` (made by make_frame) for its rays' sky points when
-// the scene's sky has stars drawn as points (FrameImage::sky; the star pass
-// after the pixels reads them).  Not thread-safe: call it once for a frame
+// the scene's sky has stars drawn as points (FrameImage::sky, a plane per
+// instant of a blurred frame's shutter; the star pass after the pixels
+// reads them).  Not thread-safe: call it once for a frame
 // before rendering its rows.
 void prepare_frame(const Scene& scene, FrameImage& image);
 

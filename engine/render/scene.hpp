@@ -45,6 +45,14 @@ struct SceneIn {
   // The observer as a path: the eye at a time offset within the frame
   // (observers/observers.hpp); observer_path.at(0) is `eye`, bit for bit.
   ObserverPath<S> observer_path{};
+  // Where this scene lies in its frame's shutter: its offset from the
+  // frame's moment, in frame intervals (0: the frame's own scene).
+  double moment = 0.0;
+  // The frame's scene at each instant of its open shutter, in order
+  // (scene/frame_specs.hpp); each sample takes one (render/sample_times.hpp).
+  // Empty: the shutter is closed or nothing changes within it, and every
+  // sample is at the frame's moment.
+  std::vector<SceneIn> instants{};
 
   const Sky& sky_of(std::size_t end) const {
     for (const auto& [e, s] : end_skies)

@@ -1,6 +1,7 @@
 #include "render/scene_builder.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -66,13 +67,53 @@ Scene build_scene(const SceneSpec& fs, int width, int height, ShotResources& res
   return std::visit([&](const auto& s) { return build(s, fs, width, height, resources, rays, window); }, st);
 }
 
-Scene build_scene(const SceneSpec& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
-                        ShotResources& resources, const RayOptions& rays, const ImageWindow& window) {
+Scene build_scene(const FrameSpecs& specs, int width, int height, ShotResources& resources, const RayOptions& rays,
+                  const ImageWindow& window) {
+  Scene scene = build_scene(specs.frame, width, height, resources, rays, window);
+  for (std::size_t k = 0; k < specs.instants.size(); ++k) {
+    std::optional<Scene> at;
+    try {
+      at.emplace(build_scene(specs.instants[k], width, height, resources, rays, window));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(
+          fmt::format("at {:+g} of the frame (an instant of its shutter): {}", specs.times[k], e.what()));
+    }
+    if (at->index() != scene.index())  // (Shot::frame_specs refuses a change of spacetime first)
+      throw std::invalid_argument(fmt::format("at {:+g} of the frame: the spacetime changes kind within the shutter",
+                                              specs.times[k]));
+    std::visit(
+        [&](auto& sc) {
+          auto& instant = std::get<std::decay_t<decltype(sc)>>(*at);
+          instant.moment = specs.times[k];
+          sc.instants.push_back(std::move(instant));
+        },
+        scene);
+  }
+  return scene;
+}
+
+namespace {
+
+// f() with its std::invalid_argument prefixed by the shot file and frame.
+template <class F>
+Scene naming_frame(const std::filesystem::path& shot_file, int frame, F&& f) {
   try {
-    return build_scene(fs, width, height, resources, rays, window);
+    return f();
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(fmt::format("{}: frame {}: {}", shot_file.string(), frame, e.what()));
   }
+}
+
+}  // namespace
+
+Scene build_scene(const SceneSpec& fs, const std::filesystem::path& shot_file, int frame, int width, int height,
+                        ShotResources& resources, const RayOptions& rays, const ImageWindow& window) {
+  return naming_frame(shot_file, frame, [&] { return build_scene(fs, width, height, resources, rays, window); });
+}
+
+Scene build_scene(const FrameSpecs& specs, const std::filesystem::path& shot_file, int frame, int width, int height,
+                  ShotResources& resources, const RayOptions& rays, const ImageWindow& window) {
+  return naming_frame(shot_file, frame, [&] { return build_scene(specs, width, height, resources, rays, window); });
 }
 
 }  // namespace lc

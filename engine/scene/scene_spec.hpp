@@ -33,6 +33,9 @@ struct SceneSpec {
   SkySpec sky;
   std::vector<ObjectSpec> objects;  // the scene's `disk`, then its `objects`
   LightParams light;                // how its light is shown (lc.light{...})
+  // The frame's own `shutter` (scene/shutter.hpp), over the shot's; unset:
+  // the shot's.
+  std::optional<double> shutter{};
 };
 
 }  // namespace lc

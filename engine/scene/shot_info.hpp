@@ -14,6 +14,7 @@
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "image/display.hpp"
+#include "scene/shutter.hpp"
 
 namespace lc {
 
@@ -25,6 +26,11 @@ struct ShotInfo {
   int supersample = 1;
   double exposure = 0.0;
   int filmic = 0;
+  // The shutter (scene/shutter.hpp; docs/motion_blur.md); a frame may give
+  // its own `shutter`.
+  double shutter = 0.0;
+  ShutterPosition shutter_position = ShutterPosition::centre;
+  int time_samples = 8;
 
   static constexpr auto fields = std::tuple{
       field("name", &ShotInfo::name, std::optional<std::string>{}, std::nullopt, std::nullopt,
@@ -43,6 +49,17 @@ struct ShotInfo {
       field("filmic", &ShotInfo::filmic, std::optional<int>{0}, at_least(0), at_most(1),
             "the PNG's and the video's tone curve: 0, light above 1 shows as 1 (the paper's look); 1, highlights roll "
             "off along a film-like curve (for a glowing disk; docs/light.md)"),
+      field("shutter", &ShotInfo::shutter, std::optional<double>{0.0}, at_least(0.0), at_most(1.0),
+            "how long the shutter is open, in frame intervals: 0 (closed: every frame an instant), 0.5 (the film "
+            "camera's 180 degrees), up to 1; a frame's `shutter` overrides it (docs/motion_blur.md)",
+            "frames"),
+      field("shutter_position", &ShotInfo::shutter_position, std::optional<ShutterPosition>{ShutterPosition::centre},
+            std::nullopt, std::nullopt,
+            "where the open shutter lies against the frame's moment: centre, start (opens at it) or end (closes at "
+            "it)"),
+      field("time_samples", &ShotInfo::time_samples, std::optional<int>{8}, at_least(1), at_most(max_time_samples),
+            "instants the open shutter is cut into: the shot is evaluated at each, and a pixel sampled in full takes "
+            "at least this many samples, one instant each"),
   };
 
   // What the fields' ranges cannot say: the name must make file names.
@@ -56,6 +73,9 @@ struct ShotInfo {
         throw std::invalid_argument(
             fmt::format("name '{}' may only use letters, digits, '_' and '-' (it names the output files)", name));
   }
+
+  // The shutter the shot gives its frames.
+  Shutter shot_shutter() const { return {shutter, shutter_position, time_samples}; }
 
   // What the PNG and the video show of the frame's linear light.
   DisplayTransform display() const {

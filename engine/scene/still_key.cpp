@@ -16,7 +16,8 @@ namespace {
 #if defined(__x86_64__) && defined(__GLIBCXX__)
 constexpr std::size_t aligned(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; }
 static_assert(sizeof(SceneSpec) == aligned(sizeof(Spacetime) + sizeof(ObserverSpec) + sizeof(CameraSpec) +
-                                               sizeof(SkySpec) + sizeof(std::vector<ObjectSpec>) + sizeof(LightParams),
+                                               sizeof(SkySpec) + sizeof(std::vector<ObjectSpec>) + sizeof(LightParams) +
+                                               sizeof(std::optional<double>) /* shutter: see still_key */,
                                            alignof(SceneSpec)),
               "SceneSpec has a member still_key does not know: add it to still_key");
 // An observer at rest is keyed by its position alone (AtRestParams'
@@ -26,19 +27,32 @@ static_assert(sizeof(AtRestParams<StaticObserver>) ==
               "AtRestParams has a member its extra_key does not know: add it there");
 #endif
 
-}  // namespace
-
-std::string still_key(const SceneSpec& fs) {
+// The key of everything but the observer's clock (for one fixed in space,
+// whose extra_key leaves it out).
+std::string key_without_clock(const SceneSpec& fs) {
   std::string k = "spacetime " + describe(fs.spacetime, true);
-  // A moving observer: no two of its frames are the same scene shifted in
-  // time.  One fixed in space is keyed without its time (its extra_key).
-  if (!observer_fixed_in_space(fs.observer)) return {};
   k += "|observer " + ObserverRegistry::key(fs.observer);
   k += "|camera " + CameraRegistry::key(fs.camera);
   k += "|sky " + SkyRegistry::key(fs.sky);
   for (const ObjectSpec& o : fs.objects) k += "|object " + ObjectRegistry::key(o);
   k += "|light" + fields_key(fs.light);
+  // Not the shutter: a frame whose scene changes within an open shutter
+  // neither takes nor keeps samples (render/pixel_rows.hpp), and any other
+  // renders as with the shutter closed.
   return k;
+}
+
+}  // namespace
+
+std::string still_key(const SceneSpec& fs) {
+  // A moving observer: no two of its frames are the same scene shifted in
+  // time.  One fixed in space is keyed without its time (its extra_key).
+  if (!observer_fixed_in_space(fs.observer)) return {};
+  return key_without_clock(fs);
+}
+
+std::string scene_key(const SceneSpec& fs) {
+  return key_without_clock(fs) + fmt::format("|clock {:a}", observer_clock(fs.observer));
 }
 
 }  // namespace lc

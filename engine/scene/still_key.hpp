@@ -14,4 +14,9 @@ namespace lc {
 
 std::string still_key(const SceneSpec& scene);
 
+// Every parameter of the scene exactly, the observer's clock included (and
+// not the frame's shutter): two scenes with equal keys are the same picture
+// (a shutter's instants that all equal the frame's: scene/frame_specs.hpp).
+std::string scene_key(const SceneSpec& scene);
+
 }  // namespace lc

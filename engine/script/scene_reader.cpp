@@ -211,6 +211,12 @@ SceneSpec read_scene_spec(TableReader& t) {
   if (auto d = t.optional_table("disk")) fs.objects.push_back(read_object(*d, &fs.spacetime));
   if (auto s = t.optional_table("sky")) fs.sky = read_sky(*s);
   if (auto l = t.optional_table("light")) fs.light = read_light(*l);
+  if (auto shutter = t.optional_number("shutter")) {
+    if (!(*shutter >= 0.0 && *shutter <= 1.0))
+      fail(t, fmt::format("field 'shutter' must be between 0 and 1 (frame intervals the shutter is open), got {:g}",
+                          *shutter));
+    fs.shutter = *shutter;
+  }
   if (auto objs = t.optional_table("objects")) {
     if (objs->length() > max_scene_objects)
       fail(*objs, fmt::format("at most {} objects, got {}", max_scene_objects, objs->length()));

@@ -7,6 +7,7 @@
 #include "lua/table_reader.hpp"
 #include "script/engine_api.hpp"
 #include "script/scene_reader.hpp"
+#include "scene/still_key.hpp"
 #include "script/script_paths.hpp"
 
 namespace lc {
@@ -50,12 +51,46 @@ SceneSpec Shot::frame(int i) {
   const std::string ctx = fmt::format("{}: frame {}", file_.string(), i);
   if (i < 0 || i >= info_.frames)
     throw lua::FieldError(fmt::format("{}: no such frame (the shot has frames 0 to {})", ctx, info_.frames - 1));
+  return evaluate(i, ctx);
+}
+
+FrameSpecs Shot::frame_specs(int i) {
+  FrameSpecs out;
+  out.frame = frame(i);
+  out.shutter = frame_shutter(info_.shot_shutter(), out.frame.shutter, shutter_override_);
+  if (out.shutter.closed()) return out;
+  const std::string frame_key = scene_key(out.frame);
+  bool changes = false;
+  for (const double t : out.shutter.instants()) {
+    const double at = std::clamp(i + t, 0.0, static_cast<double>(info_.frames - 1));
+    SceneSpec s = at == i ? out.frame
+                          : evaluate(at, fmt::format("{}: frame {} at {:g} (an instant of its shutter; with the "
+                                                     "shutter open frame(i) is also called between frames: "
+                                                     "docs/motion_blur.md)",
+                                                     file_.string(), i, at));
+    if (s.spacetime.index() != out.frame.spacetime.index())
+      throw std::invalid_argument(fmt::format(
+          "{}: frame {}: the spacetime is {} at the frame but {} at {:g}, within its shutter; a shutter cannot be "
+          "open across a change of spacetime: close it for this frame (its `shutter = 0`)",
+          file_.string(), i, spacetime_name(out.frame.spacetime), spacetime_name(s.spacetime), at));
+    changes = changes || scene_key(s) != frame_key;
+    out.times.push_back(t);
+    out.instants.push_back(std::move(s));
+  }
+  if (!changes) {
+    out.times.clear();
+    out.instants.clear();
+  }
+  return out;
+}
+
+SceneSpec Shot::evaluate(double at, const std::string& ctx) {
   ShotInfo unused_info;
   Loaded fresh = unused_ ? std::move(*unused_) : load(unused_info);
   unused_.reset();
   lua_State* L = fresh.sandbox.state();
   lua_rawgeti(L, LUA_REGISTRYINDEX, fresh.frame_ref);
-  lua_pushinteger(L, i);
+  lua_pushnumber(L, at);
   try {
     fresh.sandbox.call(1, 1);
     note_loaded_files(fresh.sandbox);  // modules required inside frame()

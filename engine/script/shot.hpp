@@ -17,6 +17,7 @@
 
 #include "camera/delivery.hpp"
 #include "lua/sandbox.hpp"
+#include "scene/frame_specs.hpp"
 #include "scene/scene_spec.hpp"
 #include "script/engine_api.hpp"
 
@@ -35,6 +36,20 @@ class Shot {
   // the frame and the field.  Its camera is the one the shot is delivered
   // through (camera/delivery.hpp): its own unless set_delivery said other.
   SceneSpec frame(int i);
+
+  // Frame i with its shutter (scene/frame_specs.hpp): where the shutter is
+  // open, frame(i + t) at each instant t of it, clamped to the shot's
+  // frames [0, frames-1] (the shot holds still before its first frame and
+  // after its last: a script need only make sense on its own frames).
+  // Errors name the fractional frame the script failed at.  Throws
+  // std::invalid_argument where the spacetime's kind changes within the
+  // shutter.
+  FrameSpecs frame_specs(int i);
+
+  // The command line's shutter over the shot's and its frames' (render
+  // --shutter ...).
+  void set_shutter(const ShutterOverride& over) { shutter_override_ = over; }
+  const ShutterOverride& shutter_override() const { return shutter_override_; }
 
   // Every frame from now on through `to`'s camera (render --camera).
   void set_delivery(DeliveryCamera to) { delivery_ = to; }
@@ -56,6 +71,9 @@ class Shot {
   // Runs the script in a new sandbox and reads the shot table it returns
   // into `info`; throws as the constructor does.
   Loaded load(ShotInfo& info);
+  // The script's frame(at) (at: a frame number, fractional at a shutter's
+  // instants), its errors prefixed with `ctx`.
+  SceneSpec evaluate(double at, const std::string& ctx);
   void note_loaded_files(const lua::Sandbox& sandbox);
 
   std::filesystem::path file_;
@@ -65,6 +83,7 @@ class Shot {
   std::optional<Loaded> unused_;  // the constructor's sandbox, until a frame uses it
   std::vector<std::filesystem::path> loaded_files_;
   DeliveryCamera delivery_ = DeliveryCamera::shot;
+  ShutterOverride shutter_override_{};
 };
 
 }  // namespace lc

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 #include <cstring>
@@ -110,6 +111,23 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
         !parse_number(region->substr(x + 1), w.frame_height) || w.frame_width < 1 || w.frame_height < 1)
       return std::nullopt;
   }
+  // Written where the command line set the shutter (render --shutter ...).
+  if (const std::string* open = get("shutter")) {
+    double v = 0.0;
+    if (!parse_number(*open, v) || v > 1.0) return std::nullopt;
+    jf.settings.shutter.open = v;
+  }
+  if (const std::string* position = get("shutter_position")) {
+    const auto names = choice_names(ShutterPosition{});
+    const auto it = std::find(names.begin(), names.end(), *position);
+    if (it == names.end()) return std::nullopt;
+    jf.settings.shutter.position = static_cast<ShutterPosition>(it - names.begin());
+  }
+  if (const std::string* samples = get("time_samples")) {
+    int v = 0;
+    if (!parse_number(*samples, v) || v < 1 || v > max_time_samples) return std::nullopt;
+    jf.settings.shutter.time_samples = v;
+  }
   if (inputs->size() != 16) return std::nullopt;
   jf.inputs = *inputs;
   // Written since encode checks for stale frames (both, or neither).
@@ -154,9 +172,15 @@ std::string FrameSettings::describe(const FrameSettings& against) const {
   const char* depth = png_depth == PngDepth::sixteen ? ", 16-bit PNG"
                       : against.png_depth == PngDepth::sixteen ? ", 8-bit PNG"
                                                                : "";
-  return fmt::format("{}x{}{}{}, {}x{} samples per pixel{}, {}{}", width, height, of, through, supersample, supersample,
-                     adaptive && supersample > 1 ? " (adaptive)" : "", layers ? "with data layers" : "no data layers",
-                     depth);
+  // The shutter as the command line set it, where it or `against` did.
+  std::string shutter_text;
+  if (shutter.open) shutter_text += fmt::format(", shutter {}", *shutter.open);
+  if (shutter.position) shutter_text += fmt::format(", shutter at {}", choice_name(*shutter.position));
+  if (shutter.time_samples) shutter_text += fmt::format(", {} time samples", *shutter.time_samples);
+  if (!shutter.any() && against.shutter.any()) shutter_text = ", the shot's shutter";
+  return fmt::format("{}x{}{}{}, {}x{} samples per pixel{}, {}{}{}", width, height, of, through, supersample,
+                     supersample, adaptive && supersample > 1 ? " (adaptive)" : "",
+                     layers ? "with data layers" : "no data layers", depth, shutter_text);
 }
 
 std::string journal_header_line() { return with_check(header); }
@@ -176,6 +200,13 @@ std::string journal_frame_line(const JournalFrame& f) {
                                           : "") +
                             (f.settings.camera != DeliveryCamera::shot
                                  ? fmt::format(" camera={}", name_of(f.settings.camera))
+                                 : "") +
+                            (f.settings.shutter.open ? fmt::format(" shutter={}", *f.settings.shutter.open) : "") +
+                            (f.settings.shutter.position
+                                 ? fmt::format(" shutter_position={}", choice_name(*f.settings.shutter.position))
+                                 : "") +
+                            (f.settings.shutter.time_samples
+                                 ? fmt::format(" time_samples={}", *f.settings.shutter.time_samples)
                                  : "");
   return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}",
                                 f.frame, f.settings.width, f.settings.height, f.settings.supersample,

@@ -30,6 +30,8 @@
 #include "camera/image_window.hpp"
 #include "image/image_io.hpp"
 
+#include "scene/shutter.hpp"
+
 namespace lc::farm {
 
 // The settings a frame was rendered with, as the journal spells them.
@@ -40,6 +42,7 @@ struct FrameSettings {
   PngDepth png_depth = PngDepth::eight;  // the PNG's bits per channel (render --png-depth)
   ImageWindow window{};  // the window of the frame the image is (render --region), if any
   DeliveryCamera camera = DeliveryCamera::shot;  // the camera the shot was delivered through (render --camera)
+  ShutterOverride shutter{};  // what the command line set of the shutter (render --shutter ...), over the shot's
   bool operator==(const FrameSettings&) const = default;
   // "48x32, 1x1 samples per pixel, no data layers": for messages.  The
   // defaults of the PNG's depth, the window and the camera are said only

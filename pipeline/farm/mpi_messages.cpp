@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "core/constants.hpp"
+
 namespace lc::farm {
 
 namespace {
@@ -29,7 +31,8 @@ T get(std::span<const char> b, std::size_t& at) {
 
 struct ResultHeader {
   std::int32_t frame, stripe, pass;
-  std::int32_t sky;    // 1 when the rows' sky points follow their pixels
+  std::int32_t sky;    // planes of sky points that follow the rows' pixels (FrameImage::sky_planes): 0, 1 or a
+                       // blurred frame's instants
   std::int32_t alpha;  // 1 when the rows' alpha follows their RGB (some pixel is not opaque)
   std::int32_t unused = 0;
   std::int64_t rays, steps, gave_up, reused;
@@ -91,8 +94,8 @@ std::vector<WorkItem> unpack_items(std::span<const char> b) {
 namespace {
 
 // Bytes of the rows that follow a result's header.
-std::size_t row_bytes(std::size_t rows, std::size_t w, std::size_t layers, bool alpha, bool sky) {
-  return rows * w * ((3 + (alpha ? 1 : 0) + layers) * sizeof(float) + (sky ? sizeof(SkyPoint) : 0));
+std::size_t row_bytes(std::size_t rows, std::size_t w, std::size_t layers, bool alpha, std::size_t sky_planes) {
+  return rows * w * ((3 + (alpha ? 1 : 0) + layers) * sizeof(float) + sky_planes * sizeof(SkyPoint));
 }
 
 // Whether a pixel of these rows is not opaque: only then is alpha sent (a
@@ -112,12 +115,13 @@ bool rows_have_transparency(const FrameImage& canvas, const std::vector<int>& ro
 Bytes pack_result(const WorkItem& item, const RenderStats& stats, const FrameImage& canvas,
                   const std::vector<int>& rows) {
   const std::size_t w = static_cast<std::size_t>(canvas.width);
-  const bool sky = !canvas.sky.empty();
+  const std::size_t sky = canvas.sky_planes(), plane = w * static_cast<std::size_t>(canvas.height);
   const bool alpha = rows_have_transparency(canvas, rows);
   const std::size_t bytes = row_bytes(rows.size(), w, canvas.layers.size(), alpha, sky);
   Bytes b;
   b.reserve(sizeof(ResultHeader) + bytes);
-  put(b, ResultHeader{item.frame, item.stripe, static_cast<std::int32_t>(item.pass), sky ? 1 : 0, alpha ? 1 : 0, 0,
+  put(b, ResultHeader{item.frame, item.stripe, static_cast<std::int32_t>(item.pass),
+                      static_cast<std::int32_t>(sky), alpha ? 1 : 0, 0,
                       stats.rays, stats.steps, stats.gave_up, stats.reused, stats.seconds});
   auto append = [&](const auto* p, std::size_t n) {
     const char* c = reinterpret_cast<const char*>(p);
@@ -127,7 +131,7 @@ Bytes pack_result(const WorkItem& item, const RenderStats& stats, const FrameIma
     append(canvas.rgb.data() + 3 * w * j, 3 * w);
     if (alpha) append(canvas.alpha.data() + w * j, w);
     for (const auto& layer : canvas.layers) append(layer.values.data() + w * j, w);
-    if (sky) append(canvas.sky.data() + w * j, w);
+    for (std::size_t k = 0; k < sky; ++k) append(canvas.sky.data() + k * plane + w * j, w);
   }
   return b;
 }
@@ -145,12 +149,16 @@ RenderStats unpack_result(std::span<const char> b, FrameImage& canvas, const std
   if (h.alpha && canvas.alpha.size() != w * static_cast<std::size_t>(canvas.height))
     throw std::runtime_error(fmt::format("farm message: stripe {} of frame {} has alpha its canvas has no room for",
                                          h.stripe, h.frame));
-  const std::size_t bytes = row_bytes(rows.size(), w, canvas.layers.size(), h.alpha != 0, h.sky != 0);
+  if (h.sky < 0 || h.sky > max_time_samples)
+    throw std::runtime_error(fmt::format("farm message: stripe {} of frame {} has {} planes of sky points", h.stripe,
+                                         h.frame, h.sky));
+  const std::size_t sky = static_cast<std::size_t>(h.sky), plane = w * static_cast<std::size_t>(canvas.height);
+  const std::size_t bytes = row_bytes(rows.size(), w, canvas.layers.size(), h.alpha != 0, sky);
   if (b.size() != sizeof(ResultHeader) + bytes)
     throw std::runtime_error(fmt::format("farm message: stripe {} of frame {} has {} bytes, expected {}", h.stripe,
                                          h.frame, b.size(), sizeof(ResultHeader) + bytes));
   // The first stripe with sky points makes room for the frame's.
-  if (h.sky) canvas.sky.resize(w * static_cast<std::size_t>(canvas.height));
+  if (sky) canvas.sky.resize(sky * plane);
   auto take = [&](auto* p, std::size_t n) {
     std::memcpy(p, b.data() + at, n * sizeof(*p));
     at += n * sizeof(*p);
@@ -159,7 +167,7 @@ RenderStats unpack_result(std::span<const char> b, FrameImage& canvas, const std
     take(canvas.rgb.data() + 3 * w * j, 3 * w);
     if (h.alpha) take(canvas.alpha.data() + w * j, w);
     for (auto& layer : canvas.layers) take(layer.values.data() + w * j, w);
-    if (h.sky) take(canvas.sky.data() + w * j, w);
+    for (std::size_t k = 0; k < sky; ++k) take(canvas.sky.data() + k * plane + w * j, w);
   }
   return {h.rays, h.steps, h.gave_up, h.reused, h.seconds};
 }

@@ -13,12 +13,13 @@ SceneCache::SceneCache(Shot& shot, int width, int height, std::size_t capacity, 
 // Evaluates the frame (serialised: one Lua state) and builds its scene
 // (in parallel with other builds: ShotResources is thread-safe).
 std::shared_ptr<const Scene> SceneCache::build(int frame) {
-  SceneSpec fs;
+  FrameSpecs specs;
   {
     std::lock_guard lock(lua_mutex_);
-    fs = shot_.frame(frame);
+    specs = shot_.frame_specs(frame);
   }
-  return std::make_shared<const Scene>(build_scene(fs, shot_.file(), frame, width_, height_, resources_, RayOptions{}, window_));
+  return std::make_shared<const Scene>(
+      build_scene(specs, shot_.file(), frame, width_, height_, resources_, RayOptions{}, window_));
 }
 
 std::shared_ptr<const Scene> SceneCache::get(int frame) {

@@ -17,10 +17,13 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
   const auto dirs = shot.asset_dirs();
   std::map<int, std::vector<std::string>> sky_files_of;  // frame -> the files its sky reads
   for (int f : frames) {
-    const SceneSpec fs = shot.frame(f);
+    const FrameSpecs specs = shot.frame_specs(f);
+    const SceneSpec& fs = specs.frame;
     out.frames[f].spacetime = describe(fs.spacetime);
     out.frames[f].sky = fs.sky;
     out.frames[f].camera = fs.camera;
+    for (const SceneSpec& at : specs.instants) out.frames[f].instants.push_back({at.sky, at.camera});
+    if (specs.blurred()) out.frames[f].shutter = specs.shutter.describe();
     for (const std::string& asset : sky_assets(fs.sky)) {
       // The file the render will load (the same rules): checked before
       // anything reads it, for the hash below.
@@ -70,6 +73,10 @@ std::uint64_t job_digest(const Shot& shot, const RenderSettings& rs, int stripes
   if (rs.window.windowed())  // (frames without a window hash as they always did)
     h.add(std::uint64_t(rs.window.x0)).add(std::uint64_t(rs.window.y0)).add(std::uint64_t(rs.window.frame_width))
         .add(std::uint64_t(rs.window.frame_height));
+  if (const ShutterOverride& s = shot.shutter_override(); s.any())  // (as for the window)
+    h.add(fmt::format("shutter {} {} {}", s.open ? fmt::format("{:a}", *s.open) : "-",
+                      s.position ? std::string(choice_name(*s.position)) : "-",
+                      s.time_samples ? std::to_string(*s.time_samples) : "-"));
   for (const auto& p : shot.loaded_files()) h.add(hash_file(p));
   return h.value();
 }

@@ -23,6 +23,15 @@ struct FrameFacts {
   std::string spacetime;  // describe(spacetime), for the EXR header
   SkySpec sky;            // for the stage after the pixels (point stars)
   CameraSpec camera;
+  // Each instant's sky and camera where the frame is blurred (its shutter
+  // open and its scene changing within it: scene/frame_specs.hpp), for the
+  // star stage, which draws each instant's stars; else empty.
+  struct Instant {
+    SkySpec sky;
+    CameraSpec camera;
+  };
+  std::vector<Instant> instants;
+  std::string shutter;  // where blurred, its shutter (Shutter::describe) for the EXR header
   std::string inputs;     // 16 hex digits
   InputParts parts;       // what `inputs` combines, for the journal
 };

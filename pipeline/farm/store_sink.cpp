@@ -44,7 +44,25 @@ void StoreSink::store(const CompletedFrame& cf) {
     const auto start = std::chrono::steady_clock::now();
     with_stars = {cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}, cf.image.alpha};
     double cpu = 0.0;
-    draw_point_stars(*stars, camera, cf.image.sky, with_stars, star_threads_, &cpu);
+    if (facts.instants.empty()) {
+      draw_point_stars(*stars, camera, cf.image.sky, with_stars, star_threads_, &cpu);
+    } else {
+      // A blurred frame: each instant's stars through its own camera.
+      std::vector<PointStars> instant_stars;
+      std::vector<Camera> cameras;
+      for (const FrameFacts::Instant& at : facts.instants) {
+        const auto s = sky_point_stars(at.sky, resources_);
+        if (!s)
+          throw std::invalid_argument(fmt::format("frame {}: its sky has stars drawn as points at the frame's moment "
+                                                  "but not at every instant of its shutter",
+                                                  cf.frame));
+        instant_stars.push_back(*s);
+        cameras.emplace_back(at.camera, cf.image.width, cf.image.height, rs_.window);
+      }
+      std::vector<InstantStars> instants;
+      for (std::size_t k = 0; k < cameras.size(); ++k) instants.push_back({&instant_stars[k], &cameras[k]});
+      draw_point_stars(std::span<const InstantStars>(instants), cf.image.sky, with_stars, star_threads_, &cpu);
+    }
     written = &with_stars;
     cost.star_seconds = cpu;
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
@@ -63,6 +81,7 @@ void StoreSink::store(const CompletedFrame& cf) {
                                   {"lightcone/supersample", std::to_string(rs_.supersample)},
                                   {"lightcone/version", LIGHTCONE_VERSION}};
   for (auto& attribute : layout_metadata(camera.video_layout())) metadata.push_back(std::move(attribute));
+  if (!facts.shutter.empty()) metadata.emplace_back("lightcone/shutter", facts.shutter);
   if (const ImageWindow& w = rs_.window; w.windowed())
     metadata.emplace_back("lightcone/region", fmt::format("{},{},{},{} of {}x{}", w.x0, w.y0, w.x0 + cf.image.width,
                                                           w.y0 + cf.image.height, w.frame_width, w.frame_height));
