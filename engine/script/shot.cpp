@@ -63,11 +63,7 @@ FrameSpecs Shot::frame_specs(int i) {
   bool changes = false;
   for (const double t : out.shutter.instants()) {
     const double at = std::clamp(i + t, 0.0, static_cast<double>(info_.frames - 1));
-    SceneSpec s = at == i ? out.frame
-                          : evaluate(at, fmt::format("{}: frame {} at {:g} (an instant of its shutter; with the "
-                                                     "shutter open frame(i) is also called between frames: "
-                                                     "docs/motion_blur.md)",
-                                                     file_.string(), i, at));
+    SceneSpec s = at == i ? out.frame : evaluate_instant(i, at);
     if (s.spacetime.index() != out.frame.spacetime.index())
       throw std::invalid_argument(fmt::format(
           "{}: frame {}: the spacetime is {} at the frame but {} at {:g}, within its shutter; a shutter cannot be "
@@ -82,6 +78,21 @@ FrameSpecs Shot::frame_specs(int i) {
     out.instants.clear();
   }
   return out;
+}
+
+SceneSpec Shot::evaluate_instant(int i, double at) {
+  const std::string ctx = fmt::format("{}: frame {} at {:g}", file_.string(), i, at);
+  const std::string hint = fmt::format(
+      " (frame {}'s shutter is open: frame(i) is also called at fractional i, the instants of its shutter; a script "
+      "that only knows whole frames can close it with `shutter = 0`: docs/motion_blur.md)",
+      i);
+  try {
+    return evaluate(at, ctx);
+  } catch (const lua::FieldError& e) {
+    throw lua::FieldError(std::string(e.what()) + hint);
+  } catch (const lua::ScriptError& e) {
+    throw lua::ScriptError(std::string(e.what()) + hint);
+  }
 }
 
 SceneSpec Shot::evaluate(double at, const std::string& ctx) {

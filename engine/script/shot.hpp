@@ -74,6 +74,9 @@ class Shot {
   // The script's frame(at) (at: a frame number, fractional at a shutter's
   // instants), its errors prefixed with `ctx`.
   SceneSpec evaluate(double at, const std::string& ctx);
+  // evaluate at `at`, an instant of frame i's shutter, its errors saying
+  // so.
+  SceneSpec evaluate_instant(int i, double at);
   void note_loaded_files(const lua::Sandbox& sandbox);
 
   std::filesystem::path file_;

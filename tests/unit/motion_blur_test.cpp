@@ -1,0 +1,418 @@
+// Motion blur (docs/motion_blur.md): a shutter cut into instants
+// (scene/shutter.hpp), the shot evaluated at each (Shot::frame_specs), each
+// sample of a pixel at one of them (render/sample_times.hpp), and the
+// renderer and the star stage taking each sample in its instant's scene.
+// The pictures are checked against formulas in flat space: a sphere's
+// image dragged across the view, a star's streak under a camera pan.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numeric>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/constants.hpp"
+#include "render/point_star_stage.hpp"
+#include "render/renderer.hpp"
+#include "render/sample_times.hpp"
+#include "render/scene_builder.hpp"
+#include "render/trace.hpp"
+#include "scratch_dir.hpp"
+#include "script/shot.hpp"
+#include "stars/star_field.hpp"
+#include "test_errors.hpp"
+
+namespace lc {
+namespace {
+
+using test::ScratchDir;
+
+std::filesystem::path write_shot(const ScratchDir& dir, const std::string& text) {
+  const std::filesystem::path file = dir / "shot.lua";
+  std::ofstream(file) << text;
+  return file;
+}
+
+// --- the shutter and the sample times ------------------------------------
+
+TEST(Shutter, InstantsAreTheCentresOfEqualPartsOfTheOpenInterval) {
+  const Shutter centre{0.5, ShutterPosition::centre, 4};
+  EXPECT_EQ(centre.instants(), (std::vector<double>{-0.1875, -0.0625, 0.0625, 0.1875}));
+  const Shutter start{0.5, ShutterPosition::start, 2};
+  EXPECT_EQ(start.instants(), (std::vector<double>{0.125, 0.375}));
+  const Shutter end{1.0, ShutterPosition::end, 2};
+  EXPECT_EQ(end.instants(), (std::vector<double>{-0.75, -0.25}));
+  EXPECT_TRUE(Shutter{}.instants().empty());  // closed by default
+  // The command line over the frame's over the shot's.
+  const Shutter shot{0.5, ShutterPosition::centre, 8};
+  EXPECT_EQ(frame_shutter(shot, 0.25, {}).open, 0.25);
+  EXPECT_EQ(frame_shutter(shot, 0.25, {.open = 0.0}).open, 0.0);
+  EXPECT_EQ(frame_shutter(shot, std::nullopt, {.time_samples = 3}).time_samples, 3);
+}
+
+TEST(SampleTimes, APixelSampledInFullTakesEveryInstantAsEvenlyAsItsGridAllows) {
+  for (const auto [N, K] : {std::pair{3, 8}, {4, 16}, {4, 5}, {2, 4}, {5, 1}}) {
+    ASSERT_GE(N * N, K);
+    const int NN = N * N;
+    std::set<std::vector<int>> orders;
+    for (int x = 0; x < 40; ++x) {
+      const int first = x % 2 == 0 ? 0 : NN - 1;
+      std::vector<int> when(static_cast<std::size_t>(NN));
+      sample_instants(x, 7, K, first, x % 2 == 1, when);
+      std::vector<int> count(static_cast<std::size_t>(K), 0);
+      for (int k : when) {
+        ASSERT_GE(k, 0);
+        ASSERT_LT(k, K);
+        ++count[static_cast<std::size_t>(k)];
+      }
+      for (int c : count) {
+        EXPECT_GE(c, NN / K) << N << " " << K;
+        EXPECT_LE(c, (NN + K - 1) / K) << N << " " << K;
+      }
+      // The first sample at the shutter's first or last instant.
+      EXPECT_EQ(when[static_cast<std::size_t>(first)], x % 2 == 0 ? 0 : K - 1);
+      // The same pixel gives the same times, whoever asks.
+      std::vector<int> again(static_cast<std::size_t>(NN));
+      sample_instants(x, 7, K, first, x % 2 == 1, again);
+      EXPECT_EQ(when, again);
+      orders.insert(when);
+    }
+    // Shuffled per pixel: neighbours do not share one pattern.
+    if (K > 1 && NN > 4) {
+      EXPECT_GT(orders.size(), 20u) << N << " " << K;
+    }
+  }
+  EXPECT_EQ(samples_per_side(2, 8), 3);
+  EXPECT_EQ(samples_per_side(4, 8), 4);
+  EXPECT_EQ(samples_per_side(1, 1), 1);
+}
+
+// --- the shot at fractional frames ----------------------------------------
+
+TEST(FrameSpecs, TheShotIsEvaluatedAtEachInstantClampedToItsFrames) {
+  ScratchDir dir;
+  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
+return {name = 's', frames = 3, width = 8, height = 8, shutter = 0.5, time_samples = 2,
+  frame = function(i)
+    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0}, time = 10 * i}
+  end})");
+  Shot shot(file);
+  const FrameSpecs mid = shot.frame_specs(1);
+  ASSERT_TRUE(mid.blurred());
+  EXPECT_EQ(mid.times, (std::vector<double>{-0.125, 0.125}));
+  EXPECT_EQ(observer_clock(mid.frame.observer), 10.0);
+  EXPECT_EQ(observer_clock(mid.instants[0].observer), 8.75);
+  EXPECT_EQ(observer_clock(mid.instants[1].observer), 11.25);
+  // Before the first frame the shot holds still.
+  const FrameSpecs first = shot.frame_specs(0);
+  EXPECT_EQ(observer_clock(first.instants[0].observer), 0.0);
+  EXPECT_EQ(observer_clock(first.instants[1].observer), 1.25);
+  // The command line closes it.
+  shot.set_shutter({.open = 0.0});
+  EXPECT_FALSE(shot.frame_specs(1).blurred());
+}
+
+TEST(FrameSpecs, AFrameThatDoesNotChangeWithinItsShutterIsNotBlurred) {
+  ScratchDir dir;
+  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
+return {name = 's', frames = 3, width = 8, height = 8, shutter = 1,
+  frame = function(i)
+    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0},
+            shutter = i == 2 and 0 or nil}
+  end})");
+  Shot shot(file);
+  const FrameSpecs specs = shot.frame_specs(1);
+  EXPECT_EQ(specs.shutter.open, 1.0);
+  EXPECT_FALSE(specs.blurred());
+  EXPECT_EQ(shot.frame_specs(2).shutter.open, 0.0);  // a frame's own shutter
+}
+
+TEST(FrameSpecs, ErrorsNameTheFractionalFrameAndTheShutter) {
+  ScratchDir dir;
+  // A script that only knows whole frames: a table indexed by i.
+  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
+local heights = {20, 21, 22}
+return {name = 's', frames = 3, width = 8, height = 8, shutter = 0.5, time_samples = 2,
+  frame = function(i)
+    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = heights[i + 1], z = 0}}
+  end})");
+  Shot shot(file);
+  const std::string e = test::error_of([&] { shot.frame_specs(1); });
+  EXPECT_EQ(e.find("shot.lua: frame 1 at 0.875: "), e.find("shot.lua")) << e;
+  EXPECT_NE(e.find("(frame 1's shutter is open: frame(i) is also called at fractional i"), std::string::npos) << e;
+  EXPECT_NE(e.find("docs/motion_blur.md"), std::string::npos) << e;
+
+  const auto change = write_shot(dir, R"(local lc = require 'lightcone'
+return {name = 's', frames = 3, width = 8, height = 8, shutter = 1,
+  frame = function(i)
+    local st = i < 1.2 and lc.minkowski{} or lc.dihole{m1 = 0.4, m2 = 0.4, d = 1}
+    return {spacetime = st, observer = lc.static_observer{x = 0, y = 20, z = 0}}
+  end})");
+  Shot changing(change);
+  const std::string c = test::error_of<std::invalid_argument>([&] { changing.frame_specs(1); });
+  EXPECT_NE(c.find("frame 1: the spacetime is minkowski at the frame but dihole at 1.3125"), std::string::npos) << c;
+
+  const auto bad = write_shot(dir, R"(local lc = require 'lightcone'
+return {name = 's', frames = 3, width = 8, height = 8,
+  frame = function(i)
+    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0}, shutter = 2}
+  end})");
+  Shot too_long(bad);
+  const std::string b = test::error_of([&] { too_long.frame_specs(0); });
+  EXPECT_NE(b.find("field 'shutter' must be between 0 and 1"), std::string::npos) << b;
+  EXPECT_NE(b.find("frame 0"), std::string::npos) << b;
+}
+
+// --- pictures ----------------------------------------------------------------
+
+// The frame's scene with its shutter, built at width x height.
+Scene build_frame(Shot& shot, int frame, int width, int height, ShotResources& res) {
+  return build_scene(shot.frame_specs(frame), width, height, res);
+}
+
+// A white sphere of radius R at rest on the x axis, moved by the script
+// at speed v (M per frame) across the view of a static observer at
+// (0, D, 0) looking at the origin, on a black sky: along the centre row a
+// pixel's value is the share of its samples that meet the sphere.  With the
+// shutter open (1 frame, centred, K = 16 instants, 4 x 4 samples), the
+// limb at u(t) (the pinhole's projection of the tangent directions)
+// sweeps from u(-1/2) to u(+1/2): the blurred row is the time average of
+// the sharp coverages, so each limb ramps linearly across the distance it
+// travels, and the image's centroid is where the sphere's is at mid-shutter.
+TEST(MotionBlur, ASphereMovingAcrossTheViewRampsOverTheDistanceItTravels) {
+  ScratchDir dir;
+  const double D = 20, R = 2, v = 1.5, fov = 60;  // ~ 24 px of travel a frame at 256 px
+  const auto file = write_shot(dir, fmt::format(R"(local lc = require 'lightcone'
+return {{name = 's', frames = 3, width = 256, height = 32, supersample = 4, shutter = 1, time_samples = 16,
+  frame = function(i)
+    return {{spacetime = lc.minkowski{{}}, observer = lc.static_observer{{x = 0, y = {}, z = 0}},
+      camera = lc.camera{{fov = {}}},
+      sky = lc.sky_checker{{colors = {{{{0, 0, 0}}, {{0, 0, 0}}}}}},
+      objects = {{lc.sphere{{radius = {}, position = {{x = {} * (i - 1), y = 0, z = 0}},
+                             colors = {{{{1, 1, 1}}, {{1, 1, 1}}}}}}}}}}
+  end}})",
+                                                D, fov, R, v));
+  Shot shot(file);
+  ShotResources res;
+  const int W = 256, H = 32;
+  RenderSettings rs{W, H, 4, false, true};
+  const Scene blurred = build_frame(shot, 1, W, H, res);
+  ASSERT_EQ(std::get<SceneIn<Minkowski>>(blurred).instants.size(), 16u);
+  const FrameImage img = render_frame(blurred, rs, 2);
+  // The pinhole's image coordinates of the limbs at time t (frames from
+  // the frame's moment), the sphere at angle atan(x / D) from the axis.
+  const double f = 0.5 * W / std::tan(0.5 * fov * degree);
+  auto limbs = [&](double t) {
+    const double x = v * t, d = std::hypot(x, D), centre = std::atan2(x, D), half = std::asin(R / d);
+    return std::pair{0.5 * W + f * std::tan(centre - half), 0.5 * W + f * std::tan(centre + half)};
+  };
+  const int j = H / 2;
+  auto value = [&](int i) { return static_cast<double>(img.rgb[3 * (static_cast<std::size_t>(j) * W + i)]); };
+  double sum = 0, moment = 0;
+  for (int i = 0; i < W; ++i) {
+    sum += value(i);
+    moment += value(i) * (i + 0.5);
+  }
+  // The expected coverage of pixel i: the time average over the shutter of
+  // the share of [i, i+1] inside the sharp image at t, integrated finely.
+  auto expected = [&](int i, int sign) {
+    const int steps = 2000;
+    double acc = 0;
+    for (int s = 0; s < steps; ++s) {
+      const double t = -0.5 + (s + 0.5) / steps;
+      auto [a, b] = limbs(sign * t);
+      acc += std::max(0.0, std::min<double>(i + 1, b) - std::max<double>(i, a));
+    }
+    return acc / steps;
+  };
+  double err_plus = 0, err_minus = 0;
+  for (int i = 0; i < W; ++i) {
+    err_plus = std::max(err_plus, std::abs(value(i) - expected(i, +1)));
+    err_minus = std::max(err_minus, std::abs(value(i) - expected(i, -1)));
+  }
+  // (Which way the image's x runs against the scene's is the camera's
+  // convention: the better of the two orientations is the one.)
+  const int sign = err_plus < err_minus ? +1 : -1;
+  // Each pixel is within sampling noise of the linear ramps: its 16
+  // samples each sit at another instant and another sub-pixel, so a ramp
+  // pixel's value is off by at most ~1/16 per quantisation of time (the
+  // instants, 1.5 px apart at 24 px of travel) and of place (the 4
+  // sub-columns), plus the ramps' curvature within a pixel: 0.15.
+  const double err = std::min(err_plus, err_minus);
+  EXPECT_LT(err, 0.15);
+
+  // The ramps: where the value rises from 0 to 1 (leading and trailing
+  // edges), spanning the limbs' travel.  Within 1.5 px at each end: the
+  // last instant is half a time stratum (0.75 px of travel) inside the
+  // shutter's end, and a pixel's sub-columns are 1/4 px apart.
+  const auto [l0, r0] = limbs(-0.5 * sign);
+  const auto [l1, r1] = limbs(+0.5 * sign);
+  int first_lit = W, last_lit = -1, first_full = W, last_full = -1;
+  for (int i = 0; i < W; ++i) {
+    if (value(i) > 0) first_lit = std::min(first_lit, i), last_lit = i;
+    if (value(i) >= 1) first_full = std::min(first_full, i), last_full = i;
+  }
+  EXPECT_NEAR(first_lit, std::min(l0, l1), 1.5);
+  EXPECT_NEAR(last_lit + 1, std::max(r0, r1), 1.5);
+  EXPECT_NEAR(first_full, std::max(l0, l1), 1.5);
+  EXPECT_NEAR(last_full + 1, std::min(r0, r1), 1.5);
+  // The centroid: the sphere's image at mid-shutter (t = 0: the image's
+  // centre, as the sphere is on the axis then), within a quarter pixel.
+  EXPECT_NEAR(moment / sum, 0.5 * W, 0.25);
+  // And the light is the sharp frame's: the sphere's image area, averaged.
+  double area = 0;
+  for (int s = 0; s < 200; ++s) {
+    auto [a, b] = limbs(-0.5 + (s + 0.5) / 200);
+    area += (b - a) / 200;
+  }
+  EXPECT_NEAR(sum, area, 0.01 * area);
+}
+
+// A static scene: nothing changes within the shutter, so the frame renders
+// as with the shutter closed, to the bit (and takes no more samples).
+TEST(MotionBlur, AStaticSceneRendersTheSameWithTheShutterOpen) {
+  ScratchDir dir;
+  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
+return {name = 's', frames = 4, width = 48, height = 32, supersample = 2,
+  frame = function(i)
+    return {spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 30, theta = 80, phi = 0},
+      camera = lc.camera{fov = 40}, disk = lc.disk{inner = 6, outer = 15}, sky = lc.sky_checker{}}
+  end})");
+  Shot shot(file);
+  ShotResources res;
+  RenderSettings rs{48, 32, 2, true, true};
+  RenderStats closed_stats, open_stats;
+  const FrameImage closed = render_frame(build_frame(shot, 2, 48, 32, res), rs, 2, &closed_stats);
+  shot.set_shutter({.open = 1.0});
+  const FrameImage open = render_frame(build_frame(shot, 2, 48, 32, res), rs, 2, &open_stats);
+  EXPECT_EQ(closed.rgb, open.rgb);
+  ASSERT_EQ(closed.layers.size(), open.layers.size());
+  for (std::size_t l = 0; l < closed.layers.size(); ++l) EXPECT_EQ(closed.layers[l].values, open.layers[l].values);
+  EXPECT_EQ(closed_stats.rays, open_stats.rays);
+}
+
+// A camera panning at a constant rate (yaw, degrees per frame) past a
+// single star: with the shutter open the star's image is a streak as long
+// as the arc the pan sweeps during the shutter, 2 f tan(pan / 2) on the
+// image (f: the pinhole's focal length in pixels), within a pixel, and its
+// light is the unblurred star's within 2%.  The streak's length is read
+// from its light's spread along the row: a uniform streak of length L has
+// variance L^2 / 12 more than the sharp star's image (K = 32 images 0.6
+// px apart: their spread is L^2 (1 - 1/K^2) / 12, 0.1% short).
+TEST(MotionBlur, APanDrawsAStarAsAStreakOfThePansArcWithItsLight) {
+  ScratchDir dir;
+  const double fov = 40, pan = 3.0;  // degrees a frame: ~19 px at 256 px
+  const auto file = write_shot(dir, fmt::format(R"(local lc = require 'lightcone'
+return {{name = 's', frames = 3, width = 256, height = 64, shutter = 1, time_samples = 32,
+  frame = function(i)
+    return {{spacetime = lc.minkowski{{}}, observer = lc.static_observer{{x = 0, y = 20, z = 0}},
+      camera = lc.camera{{fov = {}, yaw = {} * (i - 1)}}, sky = lc.starfield{{faintest = -2}}}}
+  end}})",
+                                                fov, pan));
+  Shot shot(file);
+  ShotResources res;
+  const int W = 256, H = 64;
+  const RenderSettings rs{W, H, 1, false, true};
+  // The star where the frame's centre ray escapes (flat space: its own
+  // direction, in the sky's frame).
+  const Scene blurred_scene = build_frame(shot, 1, W, H, res);
+  const auto& sc = std::get<SceneIn<Minkowski>>(blurred_scene);
+  ASSERT_EQ(sc.instants.size(), 32u);
+  const RaySample centre = trace_sample(sc, unit3(sc.camera.direction(0.5 * W + 0.3, 0.5 * H + 0.2)), NoPath{});
+  ASSERT_EQ(centre.kind, HitKind::sky);
+  const double th = centre.sky.theta, ph = centre.sky.phi;
+  const StarField field({{{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)}, {1, 1, 1}}},
+                        nullptr, nullptr);
+  const PointStars star{std::shared_ptr<const StarField>(&field, [](const StarField*) {})};
+  // Its light along the row: total, mean and variance of x.
+  struct Spread {
+    double light = 0, mean = 0, var = 0;
+  };
+  auto spread = [&](const FrameImage& img) {
+    Spread s;
+    double m1 = 0, m2 = 0;
+    for (int j = 0; j < H; ++j)
+      for (int i = 0; i < W; ++i) {
+        const double l = img.rgb[3 * (static_cast<std::size_t>(j) * W + i)];
+        s.light += l;
+        m1 += l * (i + 0.5);
+        m2 += l * (i + 0.5) * (i + 0.5);
+      }
+    s.mean = m1 / s.light;
+    s.var = m2 / s.light - s.mean * s.mean;
+    return s;
+  };
+  // Sharp: the frame's own scene alone.
+  Scene sharp_scene = blurred_scene;
+  std::get<SceneIn<Minkowski>>(sharp_scene).instants.clear();
+  FrameImage sharp = render_frame(sharp_scene, rs, 2);
+  for (float& c : sharp.rgb) c = 0.0f;
+  EXPECT_EQ(draw_point_stars(star, sc.camera, sharp.sky, sharp), 1);
+  FrameImage blurred = render_frame(blurred_scene, rs, 2);
+  ASSERT_EQ(blurred.sky_planes(), 32u);
+  for (float& c : blurred.rgb) c = 0.0f;
+  std::vector<InstantStars> instants;
+  for (const auto& at : sc.instants) instants.push_back({&star, &at.camera});
+  EXPECT_EQ(draw_point_stars(std::span<const InstantStars>(instants), blurred.sky, blurred), 32);
+  const Spread a = spread(sharp), b = spread(blurred);
+  const double f = 0.5 * W / std::tan(0.5 * fov * degree);
+  const double arc = 2 * f * std::tan(0.5 * pan * degree);
+  const double length = std::sqrt(12 * (b.var - a.var));
+  EXPECT_NEAR(length, arc, 1.0) << "arc " << arc;
+  EXPECT_NEAR(b.light, a.light, 0.02 * a.light);
+  EXPECT_NEAR(b.mean, a.mean, 0.5);  // centred on the frame's moment
+}
+
+// A free-falling observer: each instant's rays start from the worldline's
+// event at the instant's proper time, with the frame transported there
+// (Worldline::at_proper_time: what `lightcone geodesic` writes), and the
+// frame is orthonormal to 1e-12.
+TEST(MotionBlur, AFallsInstantsStartFromItsWorldlineAtTheirProperTime) {
+  ScratchDir dir;
+  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
+local hole = lc.kerr{mass = 1, spin = 0.9}
+local orbit = lc.worldline{spacetime = hole, start = {t = 0, r = 40, theta = 75, phi = 180},
+                           velocity = {r = -0.4, theta = -0.11, phi = 0}, duration = 180}
+return {name = 's', frames = 100, width = 16, height = 16, shutter = 0.5, time_samples = 4,
+  frame = function(i)
+    return {spacetime = hole, observer = lc.free_fall{worldline = orbit, proper_time = 1.7 * i}}
+  end})");
+  Shot shot(file);
+  ShotResources res;
+  const FrameSpecs specs = shot.frame_specs(50);
+  ASSERT_TRUE(specs.blurred());
+  const Scene scene = build_scene(specs, 16, 16, res);
+  const auto& sc = std::get<SceneIn<Kerr>>(scene);
+  const auto& w = std::get<FreeFall::Params>(specs.frame.observer).worldline;
+  const auto worldline = res.worldline(w);
+  ASSERT_EQ(sc.instants.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto& at = sc.instants[k];
+    const double tau = 1.7 * (50 + specs.times[k]);
+    const WorldlineEvent ev = worldline->at_proper_time(tau);
+    for (int mu = 0; mu < 4; ++mu) {
+      EXPECT_EQ(at.eye.event[mu], ev.x[mu]) << k;
+      for (int a = 0; a < 4; ++a) EXPECT_EQ(at.eye.frame.e[a][mu], ev.frame.e[a][mu]) << k;
+    }
+    // Orthonormal: g(e_a, e_b) = eta_ab.
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        double g = 0;
+        for (int m = 0; m < 4; ++m)
+          for (int n = 0; n < 4; ++n) g += at.eye.metric[m][n] * at.eye.frame.e[a][m] * at.eye.frame.e[b][n];
+        EXPECT_NEAR(g, a == b ? (a == 0 ? -1.0 : 1.0) : 0.0, 1e-12) << k << " " << a << b;
+      }
+    // A camera ray at the instant's time starts from that eye.
+    EyePool eyes;
+    const RayStart start = eyes.start(at, CameraRay{{1, 0, 0}, {}, specs.times[k]});
+    EXPECT_EQ(start.eye, &at.eye);
+    // ... and not in another instant's scene.
+    EXPECT_THROW(eyes.start(sc, CameraRay{{1, 0, 0}, {}, specs.times[k]}), std::logic_error);
+  }
+}
+
+}  // namespace
+}  // namespace lc
