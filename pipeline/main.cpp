@@ -329,10 +329,14 @@ int main(int argc, char** argv) {
   showcase_cmd->add_option("--rate", showcase.rate, "Preview only: frames per second of story (default 3; the video plays at this rate)")
       ->check(number());
   showcase_cmd->add_option("-o,--out", showcase.out,
-                           "Output directory (default out/showcase/<quality>, or <quality>-dome, <quality>-360)");
+                           "Output directory (default out/showcase/<quality>, or <quality>-dome, <quality>-360; "
+                           "-blur added with --motion-blur)");
   showcase_cmd
       ->add_option("--png-depth", showcase.png_bits, "Bits per channel of the frames' PNGs: 8 (the default) or 16 (as render)")
       ->check(CLI::IsMember({8, 16}));
+  showcase_cmd->add_flag("--motion-blur", showcase.motion_blur,
+                         "Blur motion as a film camera does: every shot's shutter open half of each frame interval "
+                         "(render --shutter 0.5; into <quality>-blur: docs/motion_blur.md)");
   showcase_cmd->add_option("--shots", showcase.shots, "Folder holding the three shot scripts (default: the project's shots/)")
       ->check(CLI::ExistingDirectory);
   showcase_cmd->add_option("--threads", showcase.threads, "Render threads per process (as render --threads)")

@@ -60,6 +60,9 @@ FrameSequence rendered_frames(const SequencePlan& s, const ShowcaseLayout& layou
   return seq;
 }
 
+// The shutter of `showcase --motion-blur`: the film camera's 180 degrees.
+constexpr double showcase_shutter = 0.5;
+
 // Renders every sequence on every rank.  Returns 0 when all went well, else
 // the exit status of an interrupted render (128 + the signal; the master
 // has said what it kept), or -1 on a worker whose master failed (it has
@@ -81,6 +84,7 @@ int render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const Sho
     rc.progress = cmd.progress;
     rc.camera = std::string(name_of(plan.camera));
     rc.png_bits = cmd.png_bits;
+    if (cmd.motion_blur) rc.shutter = showcase_shutter;
     if (master)
       fmt::print(stderr, "showcase: [{}/{}] rendering {}: {} of its {} frames\n", k + 1, plan.sequences.size(), s.name,
                  s.frames.size(), s.shot_frames);
@@ -180,7 +184,9 @@ int run_showcase(const ShowcaseCommand& cmd) {
   if (const auto camera = delivery_named(cmd.camera)) settings.camera = *camera;
   // Each camera's film in a folder of its own (a dome's frames are not
   // the flat film's: a shared folder would refuse to resume).
-  const std::string folder = settings.camera == DeliveryCamera::shot ? cmd.quality : cmd.quality + "-" + cmd.camera;
+  // A blurred film's too.
+  const std::string folder = (settings.camera == DeliveryCamera::shot ? cmd.quality : cmd.quality + "-" + cmd.camera) +
+                             (cmd.motion_blur ? "-blur" : "");
   const ShowcaseLayout layout{cmd.out.value_or(fs::path("out") / "showcase" / folder)};
   const fs::path shots = cmd.shots.value_or(library_dir().parent_path() / "shots");
   farm::MpiSession mpi;

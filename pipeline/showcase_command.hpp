@@ -23,6 +23,7 @@ struct ShowcaseCommand {
   bool thermal = false;                        // the fourth sequence too
   std::string camera = "shot";                 // --camera: shot, dome or 360
   int png_bits = 8;                            // as render --png-depth
+  bool motion_blur = false;                    // --motion-blur: every shot's shutter at 0.5 (docs/motion_blur.md)
   double progress = 5.0;                       // as render --progress
 };
 

@@ -69,6 +69,13 @@ FrameSpecs Shot::frame_specs(int i) {
           "{}: frame {}: the spacetime is {} at the frame but {} at {:g}, within its shutter; a shutter cannot be "
           "open across a change of spacetime: close it for this frame (its `shutter = 0`)",
           file_.string(), i, spacetime_name(out.frame.spacetime), spacetime_name(s.spacetime), at));
+    // The star stage draws each instant's point stars: a sky of another
+    // kind within the shutter is a cut, too.
+    if (s.sky.index() != out.frame.sky.index())
+      throw std::invalid_argument(fmt::format(
+          "{}: frame {}: the sky is lc.{} at the frame but lc.{} at {:g}, within its shutter; a shutter cannot be "
+          "open across a change of sky: close it for this frame (its `shutter = 0`)",
+          file_.string(), i, SkyRegistry::name(out.frame.sky), SkyRegistry::name(s.sky), at));
     changes = changes || scene_key(s) != frame_key;
     out.times.push_back(t);
     out.instants.push_back(std::move(s));

@@ -53,9 +53,9 @@ void StoreSink::store(const CompletedFrame& cf) {
       for (const FrameFacts::Instant& at : facts.instants) {
         const auto s = sky_point_stars(at.sky, resources_);
         if (!s)
-          throw std::invalid_argument(fmt::format("frame {}: its sky has stars drawn as points at the frame's moment "
-                                                  "but not at every instant of its shutter",
-                                                  cf.frame));
+          throw std::logic_error(fmt::format("frame {}: its sky has point stars at the frame's moment but not at "
+                                             "every instant (Shot::frame_specs refuses a change of sky)",
+                                             cf.frame));
         instant_stars.push_back(*s);
         cameras.emplace_back(at.camera, cf.image.width, cf.image.height, rs_.window);
       }

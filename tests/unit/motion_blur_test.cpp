@@ -155,6 +155,16 @@ return {name = 's', frames = 3, width = 8, height = 8, shutter = 1,
   const std::string c = test::error_of<std::invalid_argument>([&] { changing.frame_specs(1); });
   EXPECT_NE(c.find("frame 1: the spacetime is minkowski at the frame but dihole at 1.3125"), std::string::npos) << c;
 
+  const auto sky_cut = write_shot(dir, R"(local lc = require 'lightcone'
+return {name = 's', frames = 3, width = 8, height = 8, shutter = 1, time_samples = 2,
+  frame = function(i)
+    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0},
+            sky = i < 1.1 and lc.starfield{} or lc.sky_checker{}}
+  end})");
+  Shot cutting(sky_cut);
+  const std::string k = test::error_of<std::invalid_argument>([&] { cutting.frame_specs(1); });
+  EXPECT_NE(k.find("frame 1: the sky is lc.starfield at the frame but lc.sky_checker at 1.25"), std::string::npos) << k;
+
   const auto bad = write_shot(dir, R"(local lc = require 'lightcone'
 return {name = 's', frames = 3, width = 8, height = 8,
   frame = function(i)
