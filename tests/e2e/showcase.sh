@@ -7,7 +7,7 @@
 # do; the disk's last frame, M = 0, is an undistorted projection while a
 # lensed one is not); a second run resumes without redoing anything; under
 # mpirun the frames come out byte-identical; --thermal adds the fourth
-# sequence; bad flags are refused.
+# sequence; --motion-blur renders the film blurred; bad flags are refused.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 use_mpirun
@@ -87,6 +87,21 @@ check_probe mpi/showcase.mp4 nb_read_frames=56
 check_probe sc/kerr_accrDisk_thermal.mp4 nb_read_frames=8 duration=32.000000
 check_probe sc/cards/kerr_accrDisk_thermal.mp4 nb_read_frames=4
 check_probe sc/showcase.mp4 nb_read_frames=68 duration=272.000000
+
+# --- --motion-blur: the same film with every shot's shutter at 0.5, in a folder
+# of its own by default; its frames are blurred (their EXRs say so) and differ
+# from the sharp film's where anything moves.
+mkdir blur && (cd blur && "$LIGHTCONE" showcase "${ARGS[@]}" --motion-blur 2>../blur.log) \
+  || fail "showcase --motion-blur: $(cat blur.log)"
+check_probe blur/out/showcase/preview-blur/showcase.mp4 nb_read_frames=56 duration=224.000000
+for shot in kerr_accrDisk kerr_passing dihole; do
+  grep -q ' shutter=0.5 ' blur/out/showcase/preview-blur/frames/$shot/$shot.journal \
+    || fail "$shot: not rendered with the shutter open"
+done
+iinfo -v blur/out/showcase/preview-blur/frames/kerr_passing/kerr_passing.0915.exr | grep -q 'lightcone/shutter: "shutter 0.5' \
+  || fail "kerr_passing's frame 915 is not blurred"
+cmp -s blur/out/showcase/preview-blur/frames/kerr_passing/kerr_passing.0915.png sc/frames/kerr_passing/kerr_passing.0915.png \
+  && fail "the blurred kerr_passing frame 915 is the sharp one"
 
 # --- bad flags -----------------------------------------------------------------
 expect_error quality "--quality 'draft': choose preview or production" -- "$LIGHTCONE" showcase --quality draft --out bad
