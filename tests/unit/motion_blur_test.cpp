@@ -54,7 +54,7 @@ TEST(Shutter, InstantsAreTheCentresOfEqualPartsOfTheOpenInterval) {
 }
 
 TEST(SampleTimes, APixelSampledInFullTakesEveryInstantAsEvenlyAsItsGridAllows) {
-  for (const auto [N, K] : {std::pair{3, 8}, {4, 16}, {4, 5}, {2, 4}, {5, 1}}) {
+  for (const auto& [N, K] : {std::pair{3, 8}, {4, 16}, {4, 5}, {2, 4}, {5, 1}}) {
     ASSERT_GE(N * N, K);
     const int NN = N * N;
     std::set<std::vector<int>> orders;
