@@ -28,12 +28,7 @@ same_frames() {  # DIR: all ten frames equal the reference's
 # says so once it has the lock) until it is killed, however fast the machine.
 LIGHTCONE_TEST_PAUSE_AFTER=0 "$LIGHTCONE" render "$SHOT" --out locked --threads 1 --progress 0 2>locked_first.log &
 first=$!
-for _ in $(seq 1 1200); do
-  grep -q "test pause: pid $first" locked_first.log 2>/dev/null && break
-  kill -0 "$first" 2>/dev/null || break
-  sleep 0.05
-done
-grep -q "test pause: pid $first" locked_first.log || fail "the lock holder never paused: $(cat locked_first.log)"
+wait_for_pause locked_first.log "$first" || true
 expect_error second_render "another lightcone render is writing there (pid $first on" -- \
   "$LIGHTCONE" render "$SHOT" --out locked --progress 0
 kill -9 "$first" || fail "the lock holder was gone before the kill"

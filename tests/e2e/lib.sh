@@ -87,6 +87,21 @@ use_mpirun() {
   }
 }
 
+# wait_for_pause LOG PID: until LOG shows that the test hook
+# (LIGHTCONE_TEST_PAUSE_AFTER) paused a render; fails (returning 1) if
+# process PID ends first or no pause comes in 60 s.
+wait_for_pause() {
+  local log="$1" pid="$2"
+  for _ in $(seq 1 1200); do
+    grep -q 'test pause: pid' "$log" 2>/dev/null && return 0
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.05
+  done
+  grep -q 'test pause: pid' "$log" 2>/dev/null && return 0
+  fail "$log: the render never paused: $(cat "$log")"
+  return 1
+}
+
 e2e_end() {
   echo "$CHECKS error checks; $FAILURES failures"
   [ "$FAILURES" -eq 0 ]

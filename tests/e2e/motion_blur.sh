@@ -36,12 +36,7 @@ same_frames one mpi farm_orbit
 # them, so the kill lands mid-job), then resumed.
 LIGHTCONE_TEST_PAUSE_AFTER=30 "$LIGHTCONE" render "$ORBIT" --out resumed --threads 2 "${BLUR[@]}" 2>kill.log &
 pid=$!
-for _ in $(seq 1 1200); do
-  grep -q 'test pause: pid' kill.log 2>/dev/null && break
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.05
-done
-grep -q 'test pause: pid' kill.log || fail "the render never paused: $(cat kill.log)"
+wait_for_pause kill.log "$pid" || true
 kill -9 "$pid" 2>/dev/null || true
 wait "$pid" 2>/dev/null || true
 "$LIGHTCONE" render "$ORBIT" --out resumed --threads 2 "${BLUR[@]}" 2>resume.log || fail "resume: $(cat resume.log)"
