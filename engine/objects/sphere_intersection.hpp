@@ -57,10 +57,13 @@ struct MetricAt {
 // 1.5 R it stops once the centre is known to 10% of the room to spare, all
 // sphere tracing needs.  (Newton with the exact slope, from the metric's rate and
 // du/dt, converges in fewer steps but costs more per frame: docs/performance.md,
-// "Measured and rejected".)
+// "Measured and rejected".)  *settled, where given, says whether the
+// answer is a root: near a sphere whose centre swings through a strong field
+// (the dihole's), lag(t) may have no root near X's own time at all, and the
+// search then ends wherever its last step took it.
 template <class S>
 double sphere_simultaneous_time(const S& st, const SphereBody& sphere, const Vec4& X, double t_start, Vec4& C, Vec4& u,
-                                MetricAt<S>& g) {
+                                MetricAt<S>& g, bool* settled = nullptr) {
   const double R = sphere.radius;
   // To 1e-8 in proper time (the centre moves by less than that) near the
   // sphere; farther out sphere tracing only needs |xi| to a fraction of the
@@ -95,6 +98,7 @@ double sphere_simultaneous_time(const S& st, const SphereBody& sphere, const Vec
       lag = g(X - C, u);
       tolerance = tolerance_at(C);
     }
+    if (settled) *settled = std::abs(lag) < tolerance;
     if (std::abs(lag) < tolerance || attempt == 1 || t_start == X[0]) return t;
     // Not settled: a warm start far from this point's root can leave six
     // steps short.  Where it matters, within 2 R, search again from X's own
@@ -112,11 +116,24 @@ double sphere_simultaneous_time(const S& st, const SphereBody& sphere, const Vec
 // metric and Gram–Schmidt) only colour a hit.
 // t_near: where the search starts (NaN: at X's own time); set to the
 // simultaneous time found, so the next point along the ray starts near it.
+// Where the search does not settle, X lies on the rest slice of no centre
+// event near it (the model's sphere has no point there), and an unsettled
+// answer's centre may be anywhere on the worldline (a swinging centre
+// passes near X again later): X is then judged from where the centre is at
+// its own time, and the next search starts afresh.  Taking the unsettled
+// centre made false hits: slivers of the dihole's sphere in empty sky,
+// which a frame reusing the sky there did not show.
 template <class S>
 double sphere_distance2(const S& st, const SphereBody& sphere, const Vec4& X, double& t_near) {
   Vec4 C, u;
   MetricAt<S> g;
-  t_near = sphere_simultaneous_time(st, sphere, X, std::isnan(t_near) ? X[0] : t_near, C, u, g);
+  bool settled = true;
+  t_near = sphere_simultaneous_time(st, sphere, X, std::isnan(t_near) ? X[0] : t_near, C, u, g, &settled);
+  if (!settled) {
+    sphere.centre(X[0], C, u);
+    g = MetricAt<S>(st, C);
+    t_near = std::numeric_limits<double>::quiet_NaN();
+  }
   const Vec4 d = X - C;
   const double du = g(d, u);
   return g(d, d) + du * du / -g(u, u);
