@@ -56,7 +56,7 @@ WriteTiming time_frame_writes(const RenderSettings& rs, int writers) {
   for (std::size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = static_cast<float>((i * 2654435761u) % 1000) / 1000.0f;
   auto write = [&](int k) {
     farm::write_frame_files(farm::frame_path(dir, "bench", k, "exr"), farm::frame_path(dir, "bench", k, "png"), img,
-                            {{"lightcone/shot", "bench"}}, DisplayTransform{});
+                            {{"lightcone/shot", "bench"}}, Look{});
   };
   auto since = [](auto t0) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   WriteTiming t;

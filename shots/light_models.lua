@@ -25,7 +25,7 @@ return {
   width = 480,
   height = 270,
   supersample = 2,
-  filmic = 1,
+  view = "gamut_safe",
   frame = function(i)
     return {
       spacetime = lc.kerr{mass = 1, spin = 0.9},

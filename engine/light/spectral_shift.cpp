@@ -114,7 +114,7 @@ Color SpectralShift::operator()(const Color& c, double g) const {
       const float m = a[3 * i + j] + w * (b[3 * i + j] - a[3 * i + j]);
       v += m * c[j];
     }
-    out[i] = v > 0.0f ? v : 0.0f;
+    out[i] = v;  // below 0: outside the sRGB gamut, kept (the view transform compresses it)
   }
   return out;
 }

@@ -36,6 +36,9 @@ struct SceneSpec {
   // The frame's own `shutter` (scene/shutter.hpp), over the shot's; unset:
   // the shot's.
   std::optional<double> shutter{};
+  // The frame's own `exposure` (stops, image/look.hpp), over the shot's;
+  // unset: the shot's.  What the PNG shows, not what is traced.
+  std::optional<double> exposure{};
 };
 
 }  // namespace lc

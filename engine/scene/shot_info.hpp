@@ -13,7 +13,7 @@
 
 #include "core/constants.hpp"
 #include "core/fields.hpp"
-#include "image/display.hpp"
+#include "image/look.hpp"
 #include "scene/shutter.hpp"
 
 namespace lc {
@@ -26,6 +26,12 @@ struct ShotInfo {
   int supersample = 1;
   double exposure = 0.0;
   int filmic = 0;
+  // The rest of the look (image/look.hpp); a frame may give its own `exposure`.
+  View view = View::standard;
+  double white_balance = 0.0;
+  double saturation = 1.0;
+  double bloom = 0.0;
+  double bloom_radius = 0.01;
   // The shutter (scene/shutter.hpp; docs/motion_blur.md); a frame may give
   // its own `shutter`.
   double shutter = 0.0;
@@ -48,7 +54,22 @@ struct ShotInfo {
             "stops"),
       field("filmic", &ShotInfo::filmic, std::optional<int>{0}, at_least(0), at_most(1),
             "the PNG's and the video's tone curve: 0, light above 1 shows as 1 (the paper's look); 1, highlights roll "
-            "off along a film-like curve (for a glowing disk; docs/light.md)"),
+            "off along a film-like curve (for a glowing disk; docs/light.md); the same as view = \"filmic\""),
+      field("view", &ShotInfo::view, std::optional<View>{View::standard}, std::nullopt, std::nullopt,
+            "the PNG's and the video's view transform: standard (light above 1 clips, the paper's look), filmic "
+            "(the filmic curve per channel) or gamut_safe (a tone curve on luminance; colours too bright or too "
+            "saturated to show fade towards white, keeping their hue; docs/light.md)"),
+      field("white_balance", &ShotInfo::white_balance, std::optional<double>{0.0}, at_least(0.0), at_most(40000.0),
+            "the colour temperature the PNG shows as white (a 10000 K disk reads as hot gas at about 6500); 0: none, "
+            "else 1000 to 40000",
+            "K"),
+      field("saturation", &ShotInfo::saturation, std::optional<double>{1.0}, at_least(0.0), at_most(4.0),
+            "the PNG's colourfulness about each pixel's luminance: 1 as traced, 0 grey"),
+      field("bloom", &ShotInfo::bloom, std::optional<double>{0.0}, at_least(0.0), at_most(1.0),
+            "share of the light above the display's white (after exposure) spread into a glow around it, the light "
+            "kept; 0: none"),
+      field("bloom_radius", &ShotInfo::bloom_radius, std::optional<double>{0.01}, above(0.0), at_most(0.5),
+            "the glow's Gaussian width, a fraction of the frame's diagonal"),
       field("shutter", &ShotInfo::shutter, std::optional<double>{0.0}, at_least(0.0), at_most(1.0),
             "how long the shutter is open, in frame intervals: 0 (closed: every frame an instant), 0.5 (the film "
             "camera's 180 degrees), up to 1; a frame's `shutter` overrides it (docs/motion_blur.md)",
@@ -65,6 +86,12 @@ struct ShotInfo {
   // What the fields' ranges cannot say: the name must make file names.
   // Throws std::invalid_argument.
   void validate() const {
+    if (filmic && view != View::standard && view != View::filmic)
+      throw std::invalid_argument(fmt::format(
+          "filmic = 1 and view = '{}' disagree: give view alone (filmic = 1 is view = 'filmic')", choice_name(view)));
+    if (white_balance != 0.0 && white_balance < 1000.0)
+      throw std::invalid_argument(
+          fmt::format("white_balance {:g} K: must be 0 (none) or from 1000 to 40000 K", white_balance));
     if (name.size() > max_shot_name_length)
       throw std::invalid_argument(fmt::format(
           "name has {} characters, at most {} are allowed (it names the output files)", name.size(), max_shot_name_length));
@@ -77,9 +104,10 @@ struct ShotInfo {
   // The shutter the shot gives its frames.
   Shutter shot_shutter() const { return {shutter, shutter_position, time_samples}; }
 
-  // What the PNG and the video show of the frame's linear light.
-  DisplayTransform display() const {
-    return {exposure, filmic ? ToneCurve::filmic : ToneCurve::clip};
+  // What the PNG and the video show of a frame's linear light, at the
+  // shot's exposure (a frame's own `exposure` replaces it).
+  Look look() const {
+    return {exposure, filmic ? View::filmic : view, white_balance, saturation, bloom, bloom_radius};
   }
 };
 

@@ -17,7 +17,8 @@ namespace {
 constexpr std::size_t aligned(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; }
 static_assert(sizeof(SceneSpec) == aligned(sizeof(Spacetime) + sizeof(ObserverSpec) + sizeof(CameraSpec) +
                                                sizeof(SkySpec) + sizeof(std::vector<ObjectSpec>) + sizeof(LightParams) +
-                                               sizeof(std::optional<double>) /* shutter: see still_key */,
+                                               sizeof(std::optional<double>) /* shutter: see still_key */ +
+                                               sizeof(std::optional<double>) /* exposure: not in the key */,
                                            alignof(SceneSpec)),
               "SceneSpec has a member still_key does not know: add it to still_key");
 // An observer at rest is keyed by its position alone (AtRestParams'
@@ -38,7 +39,8 @@ std::string key_without_clock(const SceneSpec& fs) {
   k += "|light" + fields_key(fs.light);
   // Not the shutter: a frame whose scene changes within an open shutter
   // neither takes nor keeps samples (render/pixel_rows.hpp), and any other
-  // renders as with the shutter closed.
+  // renders as with the shutter closed.  Not the exposure: it changes what
+  // the PNG shows, not one ray.
   return k;
 }
 

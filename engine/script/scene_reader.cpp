@@ -217,6 +217,11 @@ SceneSpec read_scene_spec(TableReader& t) {
                           *shutter));
     fs.shutter = *shutter;
   }
+  if (auto exposure = t.optional_number("exposure")) {
+    if (!(*exposure >= -64.0 && *exposure <= 64.0))
+      fail(t, fmt::format("field 'exposure' must be between -64 and 64 (stops), got {:g}", *exposure));
+    fs.exposure = *exposure;
+  }
   if (auto objs = t.optional_table("objects")) {
     if (objs->length() > max_scene_objects)
       fail(*objs, fmt::format("at most {} objects, got {}", max_scene_objects, objs->length()));

@@ -105,10 +105,10 @@ void FrameStore::note_inputs(const std::map<std::string, std::string>& files) {
 
 void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata,
                              const FrameSettings& settings, const std::string& inputs, const InputParts& parts,
-                             FrameCost cost, const DisplayTransform& display) {
+                             FrameCost cost, const Look& look) {
   with_space_hint(dir_, [&] {
     write_frame_files(frame_path(dir_, shot_, frame, "exr"), frame_path(dir_, shot_, frame, "png"), image, metadata,
-                      display, settings.png_depth);
+                      look, settings.png_depth);
   });
   JournalFrame jf;
   jf.frame = frame;
@@ -157,13 +157,13 @@ void fill_missing_rows(FrameImage& image, const std::vector<int>& rendered) {
 }
 
 void FrameStore::write_preview(int frame, FrameImage image, const std::vector<int>& rendered,
-                               const DisplayTransform& display) {
+                               const Look& look) {
   fill_missing_rows(image, rendered);
   const fs::path dir = preview_dir();
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw std::runtime_error(fmt::format("cannot create {}: {}", dir.string(), ec.message()));
-  with_space_hint(dir, [&] { write_png_file(frame_path(dir, shot_, frame, "png"), image, display); });
+  with_space_hint(dir, [&] { write_png_file(frame_path(dir, shot_, frame, "png"), image, look); });
 }
 
 }  // namespace lc::farm

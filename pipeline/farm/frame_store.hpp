@@ -22,7 +22,7 @@
 
 #include "farm/dir_lock.hpp"
 #include "farm/journal.hpp"
-#include "image/display.hpp"
+#include "image/look.hpp"
 #include "image/image.hpp"
 
 namespace lc::farm {
@@ -57,16 +57,16 @@ class FrameStore {
   // durable, then appends its journal line.  Throws std::runtime_error
   // naming the file (a full disk, a vanished directory).  Thread-safe for
   // different frames (the journal appends are serialised).
-  // The PNG shows the image through `display`, at the settings' depth; the
+  // The PNG shows the image through `look`, at the settings' depth; the
   // line records `cost`,
   // stamped with the time it is written.
   void write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata, const FrameSettings& settings,
-                   const std::string& inputs, const InputParts& parts, FrameCost cost, const DisplayTransform& display);
+                   const std::string& inputs, const InputParts& parts, FrameCost cost, const Look& look);
 
   // Writes DIR/preview/<shot>.<NNNN>.png atomically from a frame of which
   // only `rendered` rows are filled: every other row is copied from the
   // nearest rendered row (the upper one on a tie).
-  void write_preview(int frame, FrameImage image, const std::vector<int>& rendered, const DisplayTransform& display);
+  void write_preview(int frame, FrameImage image, const std::vector<int>& rendered, const Look& look);
 
   std::filesystem::path preview_dir() const { return dir_ / "preview"; }
 

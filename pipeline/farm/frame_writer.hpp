@@ -8,21 +8,21 @@
 
 #include <filesystem>
 
-#include "image/display.hpp"
+#include "image/look.hpp"
 #include "image/image.hpp"
 
 namespace lc::farm {
 
 // Writes `image` as `exr` (linear float, with `metadata`) and `png` (sRGB
-// of the image through `display`, `png_depth` bits), each read back, and commits both together: after it returns both
+// of the image through `look`, `png_depth` bits), each read back, and commits both together: after it returns both
 // survive a crash, and if it throws (std::runtime_error naming the file)
 // neither final name has changed unless the failure came in the renames
 // themselves.  No temporary is left behind.
 void write_frame_files(const std::filesystem::path& exr, const std::filesystem::path& png, const FrameImage& image,
-                       const ImageMetadata& metadata, const DisplayTransform& display,
+                       const ImageMetadata& metadata, const Look& look,
                        PngDepth png_depth = PngDepth::eight);
 
 // The same for a PNG alone (a preview).
-void write_png_file(const std::filesystem::path& png, const FrameImage& image, const DisplayTransform& display);
+void write_png_file(const std::filesystem::path& png, const FrameImage& image, const Look& look);
 
 }  // namespace lc::farm

@@ -22,6 +22,7 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
     out.frames[f].spacetime = describe(fs.spacetime);
     out.frames[f].sky = fs.sky;
     out.frames[f].camera = fs.camera;
+    out.frames[f].exposure = fs.exposure;
     for (const SceneSpec& at : specs.instants) out.frames[f].instants.push_back({at.sky, at.camera});
     if (specs.blurred()) out.frames[f].shutter = specs.shutter.describe();
     for (const std::string& asset : sky_assets(fs.sky)) {

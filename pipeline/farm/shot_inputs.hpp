@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,7 @@ struct FrameFacts {
     CameraSpec camera;
   };
   std::vector<Instant> instants;
+  std::optional<double> exposure;  // the frame's own `exposure` (stops), over the shot's; unset: the shot's
   std::string shutter;  // where blurred, its shutter (Shutter::describe) for the EXR header
   std::string inputs;     // 16 hex digits
   InputParts parts;       // what `inputs` combines, for the journal

@@ -19,15 +19,21 @@ FrameSettings frame_settings(const RenderSettings& rs) {
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
                      const FrameSettings& settings, std::vector<int> preview_rows,
                      std::vector<std::filesystem::path> asset_dirs, int star_threads)
-    : store_(store), survey_(survey), shot_name_(shot.name), fps_(shot.fps), display_(shot.display()), rs_(rs),
+    : store_(store), survey_(survey), shot_name_(shot.name), fps_(shot.fps), look_(shot.look()), rs_(rs),
       settings_(settings), preview_rows_(std::move(preview_rows)), resources_(std::move(asset_dirs)), star_threads_(std::max(1, star_threads)) {}
+
+Look StoreSink::frame_look(const FrameFacts& facts) const {
+  Look look = look_;
+  if (facts.exposure) look.exposure = *facts.exposure;
+  return look;
+}
 
 void StoreSink::store(const CompletedFrame& cf) {
   if (cf.pass == Pass::preview) {
     // Previews show no point stars: their missing rows are copies, and
     // copied rays make no patches of sky.
     FrameImage preview{cf.image.width, cf.image.height, cf.image.rgb, cf.image.layers, {}, cf.image.alpha};
-    store_.write_preview(cf.frame, std::move(preview), preview_rows_, display_);
+    store_.write_preview(cf.frame, std::move(preview), preview_rows_, frame_look(survey_.frames.at(cf.frame)));
     return;
   }
   const FrameFacts& facts = survey_.frames.at(cf.frame);
@@ -85,8 +91,12 @@ void StoreSink::store(const CompletedFrame& cf) {
   if (const ImageWindow& w = rs_.window; w.windowed())
     metadata.emplace_back("lightcone/region", fmt::format("{},{},{},{} of {}x{}", w.x0, w.y0, w.x0 + cf.image.width,
                                                           w.y0 + cf.image.height, w.frame_width, w.frame_height));
-  store_.write_frame(cf.frame, *written, metadata, settings_, facts.inputs, facts.parts, cost,
-                     display_);
+  // Light outside the sRGB gamut (a colour shift can make it) is kept as
+  // negative components, and the header says so.
+  if (std::any_of(written->rgb.begin(), written->rgb.end(), [](float v) { return v < 0.0f; }))
+    metadata.emplace_back("lightcone/colour",
+                          "scene-linear, Rec. 709 primaries, D65; components below 0 are colours outside that gamut");
+  store_.write_frame(cf.frame, *written, metadata, settings_, facts.inputs, facts.parts, cost, frame_look(facts));
 }
 
 double StoreSink::star_seconds() const {

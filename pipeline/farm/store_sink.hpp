@@ -29,11 +29,14 @@ class StoreSink final : public FrameSink {
   double star_wall_seconds() const;
 
  private:
+  // The shot's look at the frame's own exposure, where it gives one.
+  Look frame_look(const FrameFacts& facts) const;
+
   FrameStore& store_;
   const ShotSurvey& survey_;
   std::string shot_name_;
   double fps_;
-  DisplayTransform display_;  // the shot's, for the PNGs
+  Look look_;  // the shot's, for the PNGs (a frame's own exposure replaces its exposure)
   RenderSettings rs_;
   FrameSettings settings_;
   std::vector<int> preview_rows_;

@@ -51,9 +51,9 @@ TEST(FarmStore, ResumeTrustsJournalAndFileSizes) {
   const FrameSettings st{4, 2, 1, false};
   {
     FrameStore store(dir.path(), "s");
-    store.write_frame(0, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, DisplayTransform{});
-    store.write_frame(1, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, DisplayTransform{});
-    store.write_frame(2, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, DisplayTransform{});
+    store.write_frame(0, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, Look{});
+    store.write_frame(1, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, Look{});
+    store.write_frame(2, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, Look{});
   }
   // A frame file without a journal line, and a damaged frame.
   write_exr(frame_path(dir.path(), "s", 3, "exr"), tiny());
@@ -75,8 +75,8 @@ TEST(FarmStore, RefusalNamesTheChangedInputAndForceRendersOnlyThose) {
   {
     FrameStore store(dir.path(), "s");
     store.note_inputs({{"/x/shot.lua", "00000000000000aa"}});
-    store.write_frame(0, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, DisplayTransform{});
-    store.write_frame(1, tiny(), {}, st, "00000000000000cc", {}, {.rays = 8}, DisplayTransform{});
+    store.write_frame(0, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, Look{});
+    store.write_frame(1, tiny(), {}, st, "00000000000000cc", {}, {.rays = 8}, Look{});
   }
   FrameStore store(dir.path(), "s");
   ShotSurvey survey;

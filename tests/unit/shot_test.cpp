@@ -159,7 +159,7 @@ TEST(Shot, ObjectsAndNamesAreBounded) {
             named.string() + ": name has 1000000 characters, at most 128 are allowed (it names the output files)");
 }
 
-TEST(Shot, ExposureAndToneReachTheDisplayTransform) {
+TEST(Shot, ExposureToneAndGradeReachTheLook) {
   ScratchDir dir;
   const auto shot_with = [&](const std::string& fields) {
     return write_shot(dir, "display.lua",
@@ -167,10 +167,24 @@ TEST(Shot, ExposureAndToneReachTheDisplayTransform) {
                           "\n  frame = function(i) return {} end}\n");
   };
   const lc::Shot plain(shot_with(""));
-  EXPECT_TRUE(plain.info().display().identity());
+  EXPECT_TRUE(plain.info().look().identity());
   const lc::Shot filmic(shot_with("exposure = -1.5, filmic = 1,"));
-  EXPECT_EQ(filmic.info().display().exposure, -1.5);
-  EXPECT_EQ(filmic.info().display().curve, lc::ToneCurve::filmic);
+  EXPECT_EQ(filmic.info().look().exposure, -1.5);
+  EXPECT_EQ(filmic.info().look().view, lc::View::filmic);
+  const lc::Shot graded(
+      shot_with("view = 'gamut_safe', white_balance = 9000, saturation = 1.2, bloom = 0.1, bloom_radius = 0.02,"));
+  const lc::Look g = graded.info().look();
+  EXPECT_EQ(g.view, lc::View::gamut_safe);
+  EXPECT_EQ(g.white_balance, 9000.0);
+  EXPECT_EQ(g.saturation, 1.2);
+  EXPECT_EQ(g.bloom, 0.1);
+  EXPECT_EQ(g.bloom_radius, 0.02);
+  const fs::path both = shot_with("filmic = 1, view = 'gamut_safe',");
+  EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot shot(both); }).find("give view alone"), std::string::npos);
+  const fs::path cold = shot_with("white_balance = 500,");
+  EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot shot(cold); }).find("white_balance 500 K"), std::string::npos);
+  const fs::path unknown = shot_with("view = 'agx',");
+  EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot shot(unknown); }).find("view"), std::string::npos);
   const fs::path bad = shot_with("filmic = 2,");
   EXPECT_NE(error_of<lc::lua::FieldError>([&] { lc::Shot shot(bad); }).find("filmic"), std::string::npos);
   const fs::path far = shot_with("exposure = 70,");

@@ -15,7 +15,7 @@
 
 #include "assets/shot_resources.hpp"
 #include "core/constants.hpp"
-#include "image/display.hpp"
+#include "image/look.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
@@ -63,7 +63,9 @@ TEST(Sky, CheckerSkyBrightnessLiftsItIntoPhysicalUnits) {
   lifted.brightness = 34;
   const std::vector<Color> a = sky_frame(plain), b = sky_frame(lifted);
   ASSERT_EQ(a.size(), b.size());
-  const DisplayTransform physical{-34.0, ToneCurve::clip};
+  const auto physical = [](float v) {
+    return Look{.exposure = -34.0}.applied(FrameImage{1, 1, {v, v, v}, {}, {}, {}}).rgb[0];
+  };
   for (std::size_t k = 0; k < a.size(); ++k)
     for (int c = 0; c < 3; ++c) {
       EXPECT_EQ(b[k][c], a[k][c] * 0x1p34f) << k;
