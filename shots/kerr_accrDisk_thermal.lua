@@ -17,7 +17,7 @@ local paper = require "kerr_accrDisk"
 local solar_masses = 4.3e6   -- per unit of the spacetime's mass
 local accretion_rate = 1e-8  -- Suns per year
 -- The light is in cd/m^2 (~1e10 at 10,000 K): 2^-34 brings the disk's
--- bright side to the filmic curve's shoulder, fixed for the whole film.
+-- bright side to the tone curve's shoulder, fixed for the whole film.
 -- The star field's texture has no units; it is brightened by as much, so
 -- the stars show as in the paper's sequence.
 local exposure = -34
@@ -26,7 +26,15 @@ local shot = {}
 for k, v in pairs(paper) do shot[k] = v end
 shot.name = "kerr_accrDisk_thermal"
 shot.exposure = exposure
-shot.filmic = 1
+-- The look (docs/light.md): the gamut-safe view lets the beamed side fade
+-- to white without clipping; white balanced for 5000 K, the ~10,000 K gas
+-- reads as hot, bluish white rather than grey-beige; a little more colour;
+-- and the brightest light glows.
+shot.view = "gamut_safe"
+shot.white_balance = 5000
+shot.saturation = 1.3
+shot.bloom = 0.25
+shot.bloom_radius = 0.015
 shot.frame = function(i)
   local scene = paper.frame(i)
   local M = scene.spacetime.mass

@@ -69,6 +69,17 @@ for a, b in zip(full, dim):
 sys.exit(0 if worst < 0.05 else 1)
 PY
 
+# A frame's own exposure replaces the shot's: the same PNG, to the byte,
+# as the shot at exposure -1; the EXR as traced.
+sed 's/supersample = 1,/supersample = 1, filmic = 1,/; s/^    return {$/    return { exposure = -1,/' \
+  "$SRC/shots/bench/kerr_disk.lua" >frame_dim.lua
+grep -q "return { exposure = -1," frame_dim.lua || fail "could not make the frame-exposure shot"
+"$LIGHTCONE" render frame_dim.lua --out frame_dim --size 48x32 --layers 2>frame_dim.log ||
+  fail "render with a frame's exposure: $(cat frame_dim.log)"
+cmp frame_dim/kerr_disk.0000.png dim/kerr_disk.0000.png || fail "a frame's exposure -1 is not the shot's exposure -1"
+idiff -a frames/kerr_disk.0000.exr frame_dim/kerr_disk.0000.exr >frame_dim.idiff 2>&1 ||
+  fail "a frame's exposure changed the EXR: $(cat frame_dim.idiff)"
+
 # The shipped light-model shot renders: its glowing disk (frame 5) is
 # blueshifted on one side (hit.g above 1.1); the checker seen shifted
 # (frame 3) looks different from the paper's look (frame 0) though every
