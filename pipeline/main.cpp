@@ -20,6 +20,7 @@
 #include "bench_command.hpp"
 #include "contact_sheet_command.hpp"
 #include "cost_command.hpp"
+#include "develop_command.hpp"
 #include "encode_command.hpp"
 #include "farm_bench_command.hpp"
 #include "farm/mpi_session.hpp"
@@ -288,6 +289,22 @@ int main(int argc, char** argv) {
   encode_cmd->add_option("--size", encode.size, "Title card size WxH");
   encode_cmd->add_option("--seconds", encode.seconds, "Title card length in seconds (default 3)")->check(number());
 
+  lc::DevelopCommand develop;
+  auto* develop_cmd = app.add_subcommand(
+      "develop", "Make a rendered shot's PNGs again from its EXRs through another look (exposure, view, white balance, "
+                 "saturation, bloom), without tracing: docs/light.md");
+  develop_cmd->add_option("dir", develop.dir, "The render's output directory")->required();
+  develop_cmd->add_option("--shot", develop.shot, "The shot when DIR holds several");
+  develop_cmd->add_option("--frames", develop.frames, "Frames A, A:B or A:B:STEP (default: every finished frame)");
+  for (const lc::LookFlag& f : lc::look_flags())
+    develop_cmd->add_option(f.flag, develop.look[f.field],
+                            f.help + (f.field == "exposure" ? "; replaces every frame's own (see --exposure-shift)" : ""));
+  develop_cmd->add_option("--exposure-shift", develop.exposure_shift,
+                          "Stops added to each frame's exposure (its own, its shot's or the metered one)")
+      ->check(number());
+  develop_cmd->add_option("--threads", develop.threads, "Frames developed at once (default: every core)")
+      ->check(number(End{1}, End{1024}));
+
   lc::ContactSheetCommand sheet;
   auto* sheet_cmd = app.add_subcommand("contact-sheet", "Write a PNG grid of frames picked evenly across a shot");
   sheet_cmd->add_option("dir", sheet.dir, "Frame directory")->required();
@@ -379,6 +396,10 @@ int main(int argc, char** argv) {
     if (*starfield_cmd) return lc::run_starfield(starfield);
     if (*encode_cmd) return lc::run_encode(encode);
     if (*sheet_cmd) return lc::run_contact_sheet(sheet);
+    if (*develop_cmd) {
+      std::erase_if(develop.look, [](const auto& kv) { return kv.second.empty(); });  // flags not given
+      return lc::run_develop(develop);
+    }
     if (*bench_cmd) return lc::run_bench(bench);
     if (*showcase_cmd) return lc::run_showcase(showcase);
   } catch (const std::exception& e) {

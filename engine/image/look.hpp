@@ -7,6 +7,9 @@
 // the shot's fields (ShotInfo) and a frame's own `exposure` meet here
 // (docs/light.md, "Exposure, look and view").
 
+#include <string>
+#include <string_view>
+
 #include "image/frame_image.hpp"
 #include "image/grade.hpp"
 #include "image/view_transform.hpp"
@@ -31,6 +34,19 @@ struct Look {
   // filmic view each channel is x 2^exposure (in double) through the
   // curve, as it always was, so those frames' PNGs do not change.
   FrameImage applied(const FrameImage& image) const;
+
+  bool operator==(const Look&) const = default;
 };
+
+// A look as one word, for the journal (which `lightcone develop` reads to
+// make a frame's PNG again): the members that differ from Look{}, as
+// "name:value" joined by ',' in the order above, named as the shot's fields
+// are, each number the shortest text that reads back as the same double
+// ("exposure:-1.5,view:gamut_safe"); "" for Look{}.
+std::string look_text(const Look& look);
+
+// Reads look_text's spelling.  Throws std::invalid_argument naming the part
+// at fault (an unknown name, a number that is not one, an unknown view).
+Look parse_look_text(std::string_view text);
 
 }  // namespace lc

@@ -11,6 +11,7 @@
 #include "durable_file.hpp"
 #include "farm/frame_files.hpp"
 #include "farm/frame_writer.hpp"
+#include "image/image_io.hpp"
 
 namespace lc::farm {
 
@@ -123,6 +124,11 @@ void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMeta
     throw std::runtime_error(fmt::format("frame {} vanished from {} right after it was written", frame, dir_.string()));
   jf.exr_bytes = *exr;
   jf.png_bytes = *png;
+  jf.look = look;
+  append_frame_line(jf);
+}
+
+void FrameStore::append_frame_line(const JournalFrame& jf) {
   std::lock_guard lock(journal_mutex_);
   with_space_hint(dir_, [&] {
     while (!pending_input_lines_.empty()) {
@@ -131,7 +137,35 @@ void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMeta
     }
     writer_->append(journal_frame_line(jf));
   });
-  journal_.frames[frame] = jf;
+  journal_.frames[jf.frame] = jf;
+}
+
+void FrameStore::develop_frame(int frame, const Look& look) {
+  JournalFrame jf;
+  {
+    std::lock_guard lock(journal_mutex_);
+    const auto it = journal_.frames.find(frame);
+    if (it == journal_.frames.end())
+      throw std::runtime_error(fmt::format("frame {} of '{}' has no line in {}: it is not recorded as finished", frame,
+                                           shot_, (dir_ / (shot_ + ".journal")).string()));
+    jf = it->second;
+  }
+  const fs::path exr = frame_path(dir_, shot_, frame, "exr");
+  const auto exr_bytes = size_of(exr);
+  if (!exr_bytes)
+    throw std::runtime_error(fmt::format("{}: missing (the journal records frame {} as finished)", exr.string(), frame));
+  if (*exr_bytes != jf.exr_bytes)
+    throw std::runtime_error(fmt::format("{}: {} bytes, but the journal records {}: not the file the render wrote "
+                                         "(cut short or replaced)",
+                                         exr.string(), *exr_bytes, jf.exr_bytes));
+  const FrameImage image = read_exr(exr);
+  const fs::path png = frame_path(dir_, shot_, frame, "png");
+  with_space_hint(dir_, [&] { write_png_file(png, image, look, jf.settings.png_depth); });
+  const auto png_bytes = size_of(png);
+  if (!png_bytes) throw std::runtime_error(fmt::format("{} vanished right after it was written", png.string()));
+  jf.png_bytes = *png_bytes;
+  jf.look = look;
+  append_frame_line(jf);
 }
 
 void fill_missing_rows(FrameImage& image, const std::vector<int>& rendered) {

@@ -63,6 +63,17 @@ class FrameStore {
   void write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata, const FrameSettings& settings,
                    const std::string& inputs, const InputParts& parts, FrameCost cost, const Look& look);
 
+  // Makes a finished frame's PNG again from its EXR through `look`, at the
+  // depth it was rendered with (`lightcone develop`): the PNG is replaced
+  // atomically and durably, then a journal line like the frame's with the
+  // new PNG's size and the look supersedes it.  The same look gives the
+  // same PNG to the byte (the EXR holds the floats the render's PNG was
+  // made from).  Throws std::runtime_error naming the file when the frame
+  // has no journal line, its EXR is missing or not of the size recorded
+  // (a half-written or replaced file), or unreadable; nothing is changed
+  // then.  Thread-safe for different frames.
+  void develop_frame(int frame, const Look& look);
+
   // Writes DIR/preview/<shot>.<NNNN>.png atomically from a frame of which
   // only `rendered` rows are filled: every other row is copied from the
   // nearest rendered row (the upper one on a tie).
@@ -78,6 +89,9 @@ class FrameStore {
   std::unique_ptr<JournalWriter> writer_;
   std::mutex journal_mutex_;  // writer_, journal_ and pending_input_lines_ after construction
   std::vector<std::string> pending_input_lines_;
+
+  // Appends `jf` (after any pending input lines) and records it.
+  void append_frame_line(const JournalFrame& jf);
 };
 
 // Rows j of `image` not in `rendered` (sorted, non-empty) copied from the

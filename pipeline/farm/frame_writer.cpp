@@ -42,9 +42,9 @@ void write_frame_files(const std::filesystem::path& exr, const std::filesystem::
   commit_together({&exr_file, &png_file});
 }
 
-void write_png_file(const std::filesystem::path& png, const FrameImage& image, const Look& look) {
+void write_png_file(const std::filesystem::path& png, const FrameImage& image, const Look& look, PngDepth png_depth) {
   DurableFile file(png, StaleTemporaries::cleaned_by_caller);
-  write_verified(file, FrameFormat::png, look.identity() ? image : look.applied(image));
+  write_verified(file, FrameFormat::png, look.identity() ? image : look.applied(image), {}, png_depth);
   file.commit();
 }
 

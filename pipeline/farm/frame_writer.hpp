@@ -22,7 +22,8 @@ void write_frame_files(const std::filesystem::path& exr, const std::filesystem::
                        const ImageMetadata& metadata, const Look& look,
                        PngDepth png_depth = PngDepth::eight);
 
-// The same for a PNG alone (a preview).
-void write_png_file(const std::filesystem::path& png, const FrameImage& image, const Look& look);
+// The same for a PNG alone (a preview, a developed frame).
+void write_png_file(const std::filesystem::path& png, const FrameImage& image, const Look& look,
+                    PngDepth png_depth = PngDepth::eight);
 
 }  // namespace lc::farm

@@ -10,12 +10,14 @@
 //   frame=<n> size=<W>x<H> supersample=<N> layers=<0|1> sampling=<adaptive|full> [png_depth=16]
 //     [region=<x0>,<y0>,<frame W>x<frame H>] [camera=<dome|360>]
 //     inputs=<16 hex> script=<16 hex> [sky=<16 hex>] exr=<bytes> png=<bytes> rays=<n>
-//     reused=<n> core_seconds=<s> star_seconds=<s> finished=<unix seconds>
+//     reused=<n> core_seconds=<s> star_seconds=<s> finished=<unix seconds> [look=<look_text>]
 // A later frame line for the same frame supersedes an earlier one.  Lines
 // of older journals lack sampling (full), script and sky, and what the
 // frame cost beyond its rays; png_depth is written only for 16-bit PNGs,
 // region only for a window of the frame (size is then the window's),
-// camera only for a shot delivered through another camera.
+// camera only for a shot delivered through another camera, look only where
+// the PNG shows the EXR through another look than the paper's (image/look.hpp:
+// what `lightcone develop` starts from).
 
 #include <cstdint>
 #include <cstddef>
@@ -29,6 +31,7 @@
 #include "camera/delivery_camera.hpp"
 #include "camera/image_window.hpp"
 #include "image/image_io.hpp"
+#include "image/look.hpp"
 
 #include "scene/shutter.hpp"
 
@@ -81,6 +84,7 @@ struct JournalFrame {
   InputParts parts;
   std::uintmax_t exr_bytes = 0, png_bytes = 0;
   FrameCost cost;
+  Look look;  // what the PNG shows of the EXR
 };
 
 struct JournalContents {

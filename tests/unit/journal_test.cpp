@@ -92,6 +92,27 @@ TEST(Journal, PngDepthAndWindowRoundTripAndAreSettings) {
   EXPECT_EQ(plain_settings.describe().find("8-bit"), std::string::npos);
 }
 
+// A frame's look (what its PNG shows of its EXR) is recorded only where it
+// is not the paper's, and read back to the bit: `lightcone develop` makes
+// the PNG again from it.  It is not a setting: a frame developed with
+// another look is still the render's frame.
+TEST(Journal, ALookIsRecordedWhereThePngHasOne) {
+  JournalFrame f = frame(4);
+  EXPECT_EQ(journal_frame_line(f).find("look"), std::string::npos);
+  f.look = Look{.exposure = -1.0 / 3.0, .view = View::gamut_safe, .bloom = 0.25};
+  const std::string line = journal_frame_line(f);
+  EXPECT_NE(line.find(" look=exposure:-0.3333333333333333,view:gamut_safe,bloom:0.25 #"), std::string::npos) << line;
+  const JournalContents j = parse_journal(journal_header_line() + "\n" + line + "\n", "j");
+  ASSERT_EQ(j.frames.size(), 1u);
+  EXPECT_EQ(j.frames.at(4).look, f.look);
+  EXPECT_EQ(j.frames.at(4).settings, frame(4).settings);
+  // A look this lightcone cannot read makes the line a bad one, like any field.
+  std::string bad = journal_frame_line(frame(5));
+  bad = bad.substr(0, bad.rfind(" #")) + " look=view:agx";
+  bad += " #" + to_hex(hash_bytes(bad));
+  EXPECT_EQ(parse_journal(journal_header_line() + "\n" + bad + "\n", "j").frames.size(), 0u);
+}
+
 TEST(Journal, EmptyTextIsAnEmptyJournal) {
   const JournalContents j = parse_journal("", "j");
   EXPECT_TRUE(j.frames.empty());

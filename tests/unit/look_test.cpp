@@ -71,5 +71,35 @@ TEST(Look, AGradeActsOnTheExposedLightBeforeTheView) {
   EXPECT_GT(b.rgb[3 * 41], 0.0f);  // ... for its neighbours
 }
 
+TEST(Look, ItsTextReadsBackAsTheSameLookToTheBit) {
+  EXPECT_EQ(look_text(Look{}), "");
+  EXPECT_EQ(parse_look_text(""), Look{});
+  // Numbers that decimal text rounds unless written in full.
+  const Look look{-1.0 / 3.0, View::gamut_safe, 5000.0, 1.3, 0.25, 0.015};
+  const std::string text = look_text(look);
+  EXPECT_EQ(text, "exposure:-0.3333333333333333,view:gamut_safe,white_balance:5000,saturation:1.3,bloom:0.25,"
+                  "bloom_radius:0.015");
+  EXPECT_EQ(parse_look_text(text), look);
+  // Only what differs from the paper's look is written.
+  EXPECT_EQ(look_text(Look{.exposure = 2.0}), "exposure:2");
+  EXPECT_EQ(look_text(Look{.view = View::filmic}), "view:filmic");
+}
+
+TEST(Look, ABadTextNamesThePartAtFault) {
+  auto message = [](std::string_view text) {
+    try {
+      parse_look_text(text);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("view:agx").find("'view:agx': the view is standard, filmic or gamut_safe"), std::string::npos);
+  EXPECT_NE(message("exposure:1,glow:2").find("'glow:2'"), std::string::npos);
+  EXPECT_NE(message("exposure:high").find("high is not a number"), std::string::npos);
+  EXPECT_NE(message("exposure:nan").find("not a number"), std::string::npos);
+  EXPECT_NE(message("exposure").find("name:value"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace lc

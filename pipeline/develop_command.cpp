@@ -1,0 +1,272 @@
+#include "develop_command.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "farm/frame_files.hpp"
+#include "farm/frame_store.hpp"
+#include "farm/threads.hpp"
+#include "frame_range.hpp"
+#include "interrupt.hpp"
+#include "scene/shot_info.hpp"
+#include "video/progress_printer.hpp"
+
+namespace lc {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The shot's fields a look is made of (ShotInfo::look).
+constexpr std::string_view look_fields[] = {"exposure", "view", "white_balance", "saturation", "bloom", "bloom_radius"};
+
+bool is_look_field(std::string_view name) {
+  return std::find(std::begin(look_fields), std::end(look_fields), name) != std::end(look_fields);
+}
+
+std::string flag_of(std::string_view field) {
+  std::string flag = "--" + std::string(field);
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag;
+}
+
+// A look as the shot's fields hold it, and back.
+ShotInfo as_fields(const Look& look) {
+  ShotInfo s;
+  s.exposure = look.exposure;
+  s.view = look.view;
+  s.white_balance = look.white_balance;
+  s.saturation = look.saturation;
+  s.bloom = look.bloom;
+  s.bloom_radius = look.bloom_radius;
+  return s;
+}
+
+// Sets field `f` of `s` from a flag's text, checked as a shot's value is.
+template <class F>
+void set_from_text(ShotInfo& s, const F& f, const std::string& text) {
+  using T = typename F::Value;
+  const std::string flag = flag_of(f.name);
+  if constexpr (Choice<T>) {
+    const auto names = choice_names(T{});
+    const auto it = std::find(names.begin(), names.end(), text);
+    if (it == names.end())
+      throw std::invalid_argument(fmt::format("{} {}: must be {}", flag, text, choices_text<T>()));
+    s.*(f.member) = static_cast<T>(it - names.begin());
+  } else if constexpr (std::is_floating_point_v<T>) {
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+      throw std::invalid_argument(fmt::format("{} {}: not a number", flag, text));
+    if (!in_range(v, f.lo, f.hi))
+      throw std::invalid_argument(fmt::format("{} {}: must be {}{}{}", flag, text, range_text(f.lo, f.hi),
+                                              f.unit.empty() ? "" : " ", f.unit));
+    s.*(f.member) = v;
+  } else {
+    throw std::logic_error(fmt::format("{}: a look field develop cannot set", f.name));
+  }
+}
+
+// The shots of `dir` that a render journalled ("<shot>.journal"), by name.
+std::vector<std::string> journalled_shots(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw std::runtime_error(fmt::format("{}: {}", dir.string(), fs::exists(dir, ec) ? "not a directory" : "no such directory"));
+  std::vector<std::string> shots;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.path().extension() == ".journal" && e.is_regular_file(ec)) shots.push_back(e.path().stem().string());
+  std::sort(shots.begin(), shots.end());
+  return shots;
+}
+
+std::string pick_shot(const fs::path& dir, const std::optional<std::string>& wanted) {
+  const std::vector<std::string> shots = journalled_shots(dir);
+  if (shots.empty())
+    throw std::runtime_error(fmt::format("{}: no render here (no <shot>.journal): develop makes a rendered shot's PNGs "
+                                         "again from the EXRs `lightcone render` wrote",
+                                         dir.string()));
+  if (wanted) {
+    if (std::find(shots.begin(), shots.end(), *wanted) == shots.end())
+      throw std::runtime_error(fmt::format("--shot {}: {} holds no render of it; it holds {}", *wanted, dir.string(),
+                                           fmt::join(shots, ", ")));
+    return *wanted;
+  }
+  if (shots.size() > 1)
+    throw std::runtime_error(
+        fmt::format("{} holds the renders of {} shots ({}): name one with --shot", dir.string(), shots.size(), fmt::join(shots, ", ")));
+  return shots.front();
+}
+
+// "3, 4, 9 and 2 more".
+std::string some_of(const std::vector<std::string>& items) {
+  if (items.size() <= 4) return fmt::format("{}", fmt::join(items, "; "));
+  return fmt::format("{}; ... and {} more", fmt::join(items.begin(), items.begin() + 3, "; "), items.size() - 3);
+}
+
+// The frames to develop: the journal's, or those of --frames (each must be
+// finished); each with its EXR whole (present, of the size the journal
+// records).  Throws naming every frame at fault, before anything is written.
+std::vector<int> frames_to_develop(const farm::FrameStore& store, const fs::path& dir, const std::string& shot,
+                                   const std::optional<std::string>& range) {
+  const auto& journal = store.journal().frames;
+  if (journal.empty())
+    throw std::runtime_error(fmt::format("{}: the journal of '{}' records no finished frame", dir.string(), shot));
+  std::vector<int> frames;
+  if (range) {
+    frames = parse_frame_range(*range, journal.rbegin()->first + 1, "--frames").frames();
+    std::vector<std::string> unfinished;
+    for (int f : frames)
+      if (!journal.contains(f)) unfinished.push_back(std::to_string(f));
+    if (!unfinished.empty())
+      throw std::runtime_error(fmt::format("--frames {}: frame{} {} of '{}' {} not finished in {}", *range,
+                                           unfinished.size() == 1 ? "" : "s", some_of(unfinished), shot,
+                                           unfinished.size() == 1 ? "is" : "are", dir.string()));
+  } else {
+    for (const auto& [f, line] : journal) frames.push_back(f);
+  }
+  std::vector<std::string> bad;
+  for (int f : frames) {
+    const fs::path exr = farm::frame_path(dir, shot, f, "exr");
+    std::error_code ec;
+    const auto bytes = fs::file_size(exr, ec);
+    if (ec)
+      bad.push_back(fmt::format("{} is missing", exr.filename().string()));
+    else if (bytes != journal.at(f).exr_bytes)
+      bad.push_back(fmt::format("{} has {} bytes where the render wrote {} (cut short or replaced)",
+                                exr.filename().string(), bytes, journal.at(f).exr_bytes));
+  }
+  if (!bad.empty())
+    throw std::runtime_error(fmt::format("{}: {} of the {} frames cannot be developed: {}. Nothing was changed; render "
+                                         "those frames again (the same render command resumes them)",
+                                         dir.string(), bad.size(), frames.size(), some_of(bad)));
+  return frames;
+}
+
+}  // namespace
+
+std::vector<LookFlag> look_flags() {
+  std::vector<LookFlag> flags;
+  for_each_field<ShotInfo>([&](const auto& f) {
+    if (!is_look_field(f.name)) return;
+    using T = typename std::decay_t<decltype(f)>::Value;
+    std::string range;
+    if constexpr (std::is_floating_point_v<T>)
+      range = fmt::format(" ({}{}{})", range_text(f.lo, f.hi), f.unit.empty() ? "" : " ", f.unit);
+    flags.push_back({std::string(f.name), flag_of(f.name), fmt::format("The shot's `{}`: {}{}", f.name, f.doc, range)});
+  });
+  return flags;
+}
+
+Look developed_look(const Look& recorded, const std::map<std::string, std::string>& flags,
+                    std::optional<double> exposure_shift) {
+  ShotInfo s = as_fields(recorded);
+  for_each_field<ShotInfo>([&](const auto& f) {
+    if (const auto it = flags.find(std::string(f.name)); it != flags.end() && is_look_field(f.name))
+      set_from_text(s, f, it->second);
+  });
+  for (const auto& [field, text] : flags)
+    if (!is_look_field(field)) throw std::logic_error(fmt::format("{}: not a field of a look", field));
+  try {
+    s.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("{}: {}", flags.contains("white_balance") ? "--white-balance" : "the look", e.what()));
+  }
+  Look look = s.look();
+  if (exposure_shift) {
+    look.exposure += *exposure_shift;
+    if (!(std::abs(look.exposure) <= 64.0))
+      throw std::invalid_argument(fmt::format("--exposure-shift {}: takes an exposure to {} stops, outside -64 to 64",
+                                              *exposure_shift, look.exposure));
+  }
+  return look;
+}
+
+int run_develop(const DevelopCommand& cmd) {
+  // Input: the parsed flags; output: the frames' PNGs and journal lines,
+  // and a summary on stderr.  Flags are checked before the directory is
+  // touched, every frame's EXR before any PNG is written.
+  developed_look(Look{}, cmd.look, cmd.exposure_shift);
+  InterruptGuard guard;
+  const std::string shot = pick_shot(cmd.dir, cmd.shot);
+  farm::FrameStore store(cmd.dir, shot, "DIR");  // its lock keeps a render out meanwhile
+  const std::vector<int> frames = frames_to_develop(store, cmd.dir, shot, cmd.frames);
+
+  const auto& journal = store.journal().frames;
+  std::vector<Look> looks;
+  for (int f : frames) looks.push_back(developed_look(journal.at(f).look, cmd.look, cmd.exposure_shift));
+  double render_seconds = 0.0;
+  bool render_recorded = true;
+  for (int f : frames) {
+    render_seconds += journal.at(f).cost.core_seconds + journal.at(f).cost.star_seconds;
+    render_recorded = render_recorded && journal.at(f).cost.recorded();
+  }
+  const int threads = std::clamp(cmd.threads > 0 ? cmd.threads : farm::usable_cpus(), 1, static_cast<int>(frames.size()));
+  fmt::print(stderr, "develop: {} frame{} of '{}' in {} on {} thread{}{}\n", frames.size(), frames.size() == 1 ? "" : "s",
+             shot, cmd.dir.string(), threads, threads == 1 ? "" : "s",
+             looks.front() == looks.back() ? fmt::format(", look: {}", look_text(looks.front()).empty()
+                                                                            ? "the paper's (the light as traced)"
+                                                                            : look_text(looks.front()))
+                                           : "");
+
+  const auto start = std::chrono::steady_clock::now();
+  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<bool> stop{false};
+  std::mutex error_mutex;
+  std::optional<std::string> error;
+  auto work = [&] {
+    for (std::size_t k; !stop && (k = next++) < frames.size();) {
+      try {
+        store.develop_frame(frames[k], looks[k]);
+        ++done;
+      } catch (const std::exception& e) {
+        std::lock_guard lock(error_mutex);
+        if (!error) error = e.what();
+        stop = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
+  const ProgressFn progress = progress_printer(guard, "develop", "frames");
+  std::optional<int> interrupted;
+  while (done < frames.size() && !stop) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    try {
+      progress(static_cast<int>(done), static_cast<int>(frames.size()));
+    } catch (const Interrupted& e) {
+      interrupted = e.signal;
+      stop = true;
+    }
+  }
+  for (std::thread& t : pool) t.join();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (error) {
+    fmt::print(stderr, "develop: stopped after {} of {} frames (each one developed is whole, with its journal line)\n",
+               done.load(), frames.size());
+    throw std::runtime_error(*error);
+  }
+  if (interrupted) {
+    fmt::print(stderr, "develop: interrupted by {}: {} of {} frames developed, each whole; the rest keep their PNGs\n",
+               signal_name(*interrupted), done.load(), frames.size());
+    return 128 + *interrupted;
+  }
+  fmt::print(stderr, "develop: done: {} frames in {:.2f} s ({:.1f} ms a frame){}\n", frames.size(), seconds,
+             1e3 * seconds / static_cast<double>(frames.size()),
+             render_recorded && render_seconds > 0.0
+                 ? fmt::format("; their render took {:.1f} core-seconds: developing cost {:.2f}% of it ({:.1f} core-seconds "
+                               "at most)",
+                               render_seconds, 100.0 * seconds * threads / render_seconds, seconds * threads)
+                 : "");
+  return 0;
+}
+
+}  // namespace lc

@@ -1,0 +1,47 @@
+#pragma once
+// `lightcone develop DIR [--shot NAME] [--frames A:B:S] [--exposure S]
+// [--exposure-shift S] [--view V] [--white-balance K] [--saturation S]
+// [--bloom B] [--bloom-radius R] [--threads N]`: a rendered shot's PNGs
+// made again from its EXRs through another look, without tracing a ray
+// (docs/light.md, "Develop without re-tracing").  Each frame starts from
+// the look its journal line records (the one its PNG was made with); the
+// flags replace parts of it; the PNG is replaced atomically and a journal
+// line records the new look, so `encode` and the contact sheet take the
+// developed frames as the render's own.
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "image/look.hpp"
+
+namespace lc {
+
+struct DevelopCommand {
+  std::filesystem::path dir;
+  std::optional<std::string> shot;            // which shot's frames when DIR holds several
+  std::optional<std::string> frames;          // A, A:B or A:B:STEP; default every finished frame
+  std::map<std::string, std::string> look;    // a look field of the shot's (look_flags) -> its flag's text
+  std::optional<double> exposure_shift;       // stops added to each frame's exposure
+  int threads = 0;                            // 0: every core
+};
+
+// The look's fields as develop's flags, from the shot's field declarations
+// (scene/shot_info.hpp): the field's name ("white_balance"), the flag
+// ("--white-balance") and its help (the field's documentation and range).
+struct LookFlag {
+  std::string field, flag, help;
+};
+std::vector<LookFlag> look_flags();
+
+// `recorded` with the flags' values in place of its own and
+// `exposure_shift` added to its exposure.  Throws std::invalid_argument
+// naming the flag when a value is not one the shot's field takes.
+Look developed_look(const Look& recorded, const std::map<std::string, std::string>& flags,
+                    std::optional<double> exposure_shift);
+
+int run_develop(const DevelopCommand& cmd);
+
+}  // namespace lc
