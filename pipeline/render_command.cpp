@@ -13,6 +13,7 @@
 #include "farm/frame_store.hpp"
 #include "farm/local_farm.hpp"
 #include "farm/memo_budget.hpp"
+#include "farm/exposure_meter.hpp"
 #include "farm/mpi_master.hpp"
 #include "farm/mpi_session.hpp"
 #include "farm/mpi_worker.hpp"
@@ -119,6 +120,19 @@ class WorkerStop {
   bool done_ = false;
 };
 
+// A shot with auto_exposure: each surveyed frame's exposure becomes the
+// metered one plus its own (farm/exposure_meter.hpp), for its PNG and
+// journal line.  The meter sees the whole frame, whatever --region renders.
+void meter_exposures(farm::ShotSurvey& survey, Shot& shot, const RenderSettings& rs, const std::filesystem::path& dir, int threads) {
+  const ImageWindow& w = rs.window;
+  const farm::MeterReadings meter = farm::shot_readings(shot, dir, w.windowed() ? w.frame_width : rs.width,
+                                                        w.windowed() ? w.frame_height : rs.height, threads);
+  std::map<int, std::optional<double>> own;
+  for (const auto& [frame, facts] : survey.frames) own[frame] = facts.exposure;
+  for (const auto& [frame, exposure] : farm::auto_exposures(shot.info(), meter, own))
+    survey.frames.at(frame).exposure = exposure;
+}
+
 // The local farm, or the master of an MPI farm (mpi non-null): everything
 // but the rendering itself.
 int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
@@ -139,7 +153,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
                *cmd.frames, list, job.range->last, job.range->last);
   }
   const ShotInfo& info = job.shot->info();
-  const farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
+  farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
   check_cameras(survey, job.rs);
   farm::FrameStore store(cmd.out, info.name);
   farm::FrameSettings settings = farm::frame_settings(job.rs);
@@ -166,6 +180,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     return 0;
   }
   store.note_inputs(survey.files);
+  if (info.auto_exposure) meter_exposures(survey, *job.shot, job.rs, cmd.out, mpi ? farm::usable_cpus() : threads);
 
   farm::WorkQueue queue(job.rs, job.layout, plan.todo,
                         {.preview_every = job.preview, .max_open_frames = farm::open_frames_for(std::max(threads, 1), job.layout.stripes())});

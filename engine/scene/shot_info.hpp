@@ -32,6 +32,11 @@ struct ShotInfo {
   double saturation = 1.0;
   double bloom = 0.0;
   double bloom_radius = 0.01;
+  // Automatic exposure (image/auto_exposure.hpp): each frame's own light
+  // metered, the exposure above added to it.
+  int auto_exposure = 0;
+  double auto_exposure_level = 1.0;
+  double auto_exposure_smoothing = 12.0;
   // The shutter (scene/shutter.hpp; docs/motion_blur.md); a frame may give
   // its own `shutter`.
   double shutter = 0.0;
@@ -70,6 +75,17 @@ struct ShotInfo {
             "kept; 0: none"),
       field("bloom_radius", &ShotInfo::bloom_radius, std::optional<double>{0.01}, above(0.0), at_most(0.5),
             "the glow's Gaussian width, a fraction of the frame's diagonal"),
+      field("auto_exposure", &ShotInfo::auto_exposure, std::optional<int>{0}, at_least(0), at_most(1),
+            "1: each frame's exposure follows its own light: a pass over every frame of the shot at 64 pixels wide "
+            "reads its 99th percentile of luminance, which is shown at auto_exposure_level, smoothed over "
+            "neighbouring frames; `exposure` (the shot's or a frame's) then adds to it; the same whichever frames are "
+            "rendered (docs/light.md)"),
+      field("auto_exposure_level", &ShotInfo::auto_exposure_level, std::optional<double>{1.0}, above(0.0),
+            at_most(1e6), "the light (before the view) the metered 99th percentile is shown at: 1 is the display's white"),
+      field("auto_exposure_smoothing", &ShotInfo::auto_exposure_smoothing, std::optional<double>{12.0}, at_least(0.0),
+            at_most(10000.0), "how many frames the metered exposure is smoothed over (a Gaussian's standard deviation; 0: "
+            "none)",
+            "frames"),
       field("shutter", &ShotInfo::shutter, std::optional<double>{0.0}, at_least(0.0), at_most(1.0),
             "how long the shutter is open, in frame intervals: 0 (closed: every frame an instant), 0.5 (the film "
             "camera's 180 degrees), up to 1; a frame's `shutter` overrides it (docs/motion_blur.md)",
