@@ -259,7 +259,8 @@ int run_develop(const DevelopCommand& cmd) {
                signal_name(*interrupted), done.load(), frames.size());
     return 128 + *interrupted;
   }
-  fmt::print(stderr, "develop: done: {} frames in {:.2f} s ({:.1f} ms a frame){}\n", frames.size(), seconds,
+  fmt::print(stderr, "develop: done: {} frame{} in {:.2f} s ({:.1f} ms a frame){}\n", frames.size(),
+             frames.size() == 1 ? "" : "s", seconds,
              1e3 * seconds / static_cast<double>(frames.size()),
              render_recorded && render_seconds > 0.0
                  ? fmt::format("; their render took {:.1f} core-seconds: developing cost {:.2f}% of it ({:.1f} core-seconds "

@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# Exposure that follows the light and develop without re-tracing
+# (docs/light.md): the fall into a glowing Kerr disk (shots/kerr_fall.lua,
+# auto_exposure) keeps its 99th percentile of display luminance in a band
+# over the whole fall, and its frames are byte-identical rendered together,
+# one alone, under mpirun and killed and resumed; `lightcone develop` makes
+# every PNG again to the byte with the recorded look, another look through
+# the journal (which encode then takes), and refuses bad input with nothing
+# changed.
+source "$(dirname "$0")/lib.sh"
+e2e_begin "$@"
+
+use_mpirun
+FALL="$SRC/shots/kerr_fall.lua"
+SMALL=(--size 96x54 --supersample 1 --progress 0)
+FRAMES=0:179:30
+
+# same_frames A B NAME: every EXR and PNG of A equals B's, byte for byte.
+same_frames() {
+  local n=0
+  for f in "$1"/"$3".*.exr "$1"/"$3".*.png; do
+    [ -e "$f" ] || continue
+    n=$((n + 1))
+    cmp -s "$f" "$2/$(basename "$f")" || fail "$2: $(basename "$f") differs from $1's"
+  done
+  [ "$n" -gt 0 ] || fail "$1: no frames"
+}
+
+# --- Automatic exposure: the band, and the same exposure however rendered.
+"$LIGHTCONE" render "$FALL" --out all --frames "$FRAMES" "${SMALL[@]}" 2>all.log || fail "render: $(cat all.log)"
+"$LIGHTCONE" render "$FALL" --out alone --frames 120 "${SMALL[@]}" 2>alone.log || fail "alone: $(cat alone.log)"
+cmp -s alone/kerr_fall.0120.png all/kerr_fall.0120.png || fail "frame 120 rendered alone has another PNG"
+cmp -s alone/kerr_fall.meter all/kerr_fall.meter || fail "the meter of a run of one frame differs"
+mpi 3 "$LIGHTCONE" render "$FALL" --out mpi --frames "$FRAMES" "${SMALL[@]}" 2>mpi.log || fail "mpirun -n 3: $(cat mpi.log)"
+same_frames all mpi kerr_fall
+# Resumed: three frames finished, then a run killed mid-job (the test hook
+# holds its working sets), then the rest.
+"$LIGHTCONE" render "$FALL" --out resumed --frames 0:60:30 "${SMALL[@]}" 2>first.log || fail "first: $(cat first.log)"
+LIGHTCONE_TEST_PAUSE_AFTER=30 "$LIGHTCONE" render "$FALL" --out resumed --frames "$FRAMES" --threads 2 "${SMALL[@]}" \
+  2>kill.log &
+pid=$!
+wait_for_pause kill.log "$pid" || true
+kill -9 "$pid" 2>/dev/null || true
+wait "$pid" 2>/dev/null || true
+"$LIGHTCONE" render "$FALL" --out resumed --frames "$FRAMES" "${SMALL[@]}" 2>resume.log || fail "resume: $(cat resume.log)"
+grep -q "3 more were finished before" resume.log || fail "the resume did not resume: $(cat resume.log)"
+same_frames all resumed kerr_fall
+# The last frame of the fall, from the readings the first run kept.
+"$LIGHTCONE" render "$FALL" --out all --frames 179 "${SMALL[@]}" 2>last.log || fail "render 179: $(cat last.log)"
+grep -q "auto exposure: metering every frame of the shot (180) at 64x36" all.log || fail "no meter pass: $(cat all.log)"
+grep -q "auto exposure: the readings of 180 frames from all/kerr_fall.meter" last.log \
+  || fail "the second run metered again: $(cat last.log)"
+# The light climbs ~3 stops over the fall (the EXR's 99th percentile); the
+# PNG's stays within 0.70 to 0.90 of the display's white (linear), where a
+# fixed exposure goes from 0.73 to 0.96, the last third washed out.
+$PY - all/kerr_fall.*.exr <<'PY' || fail "auto exposure: the display's 99th percentile left its band"
+import sys, numpy as np, OpenImageIO as oiio
+def p99(path, srgb):
+    a = oiio.ImageBuf(path).get_pixels(oiio.FLOAT)[..., :3].astype(np.float64)
+    if srgb: a = np.where(a <= 0.04045, a / 12.92, ((a + 0.055) / 1.055) ** 2.4)
+    return np.percentile(a @ np.array([0.2126, 0.7152, 0.0722]), 99)
+light = [p99(f, False) for f in sys.argv[1:]]
+shown = [p99(f[:-3] + "png", True) for f in sys.argv[1:]]
+print("light:", " ".join("%.3g" % v for v in light))
+print("shown:", " ".join("%.3f" % v for v in shown))
+assert light[-1] / light[0] > 6, "the fall's light should climb more than 2.5 stops"
+assert all(0.70 <= v <= 0.90 for v in shown), shown
+PY
+# A meter file that is not whole is metered again, not trusted.
+mkdir -p cut
+head -c 100 all/kerr_fall.meter >cut/kerr_fall.meter
+"$LIGHTCONE" render "$FALL" --out cut --frames 120 "${SMALL[@]}" 2>cut.log || fail "cut meter: $(cat cut.log)"
+grep -q "metering every frame" cut.log || fail "a cut meter file was trusted: $(cat cut.log)"
+cmp -s cut/kerr_fall.0120.png all/kerr_fall.0120.png || fail "after a cut meter file, frame 120 differs"
+# The journal records each frame's look, with its metered exposure.
+grep -q ' look=exposure:-3[0-9.]*,view:gamut_safe,white_balance:5000' all/kerr_fall.journal \
+  || fail "journal lacks the look: $(cat all/kerr_fall.journal)"
+
+# --- develop: the recorded look gives every PNG back, to the byte.
+cp -r all original
+"$LIGHTCONE" develop all 2>develop.log || fail "develop: $(cat develop.log)"
+grep -q "develop: done: 7 frames" develop.log || fail "develop's summary: $(cat develop.log)"
+same_frames original all kerr_fall
+ls all | grep -q tmp && fail "temporary files left by develop"
+# Another look: a stop brighter in the filmic view changes every PNG and
+# no EXR; the journal records it, encode takes the frames as current; the
+# recorded view back gives the original PNGs.
+"$LIGHTCONE" develop all --exposure-shift 1 --view filmic --bloom 0 2>brighter.log || fail "develop brighter: $(cat brighter.log)"
+for f in original/kerr_fall.*.png; do cmp -s "$f" "all/$(basename "$f")" && fail "develop left $(basename "$f") as it was"; done
+for f in original/kerr_fall.*.exr; do cmp -s "$f" "all/$(basename "$f")" || fail "develop changed $(basename "$f")"; done
+grep -q ' look=exposure:-3[0-9.]*,view:filmic,white_balance:5000,saturation:1.2 #' all/kerr_fall.journal \
+  || fail "journal lacks the developed look: $(tail -2 all/kerr_fall.journal)"
+"$LIGHTCONE" encode all -o developed.mp4 2>encode.log || fail "encode after develop: $(cat encode.log)"
+check_probe developed.mp4 nb_read_frames=7
+"$LIGHTCONE" develop all --exposure-shift -1 --view gamut_safe --bloom 0.2 --frames 120 2>back.log || fail "back: $(cat back.log)"
+cmp -s all/kerr_fall.0120.png original/kerr_fall.0120.png || fail "the recorded look again did not give frame 120 back"
+# A render resumed after develop keeps the developed frames (done, not damaged).
+"$LIGHTCONE" render "$FALL" --out all --frames "$FRAMES" "${SMALL[@]}" 2>again.log || fail "again: $(cat again.log)"
+grep -q "nothing to render" again.log || fail "developed frames were rendered again: $(cat again.log)"
+
+# --- Bad input: a clear error, nothing changed.
+mkdir -p empty
+expect_error no_render "no render here" -- "$LIGHTCONE" develop empty
+expect_error no_dir "no such directory" -- "$LIGHTCONE" develop nowhere
+expect_error bad_view "--view agx: must be standard, filmic or gamut_safe" -- "$LIGHTCONE" develop all --view agx
+expect_error bad_wb "--white-balance" -- "$LIGHTCONE" develop all --white-balance 300
+expect_error bad_saturation "--saturation 9: must be between 0 and 4" -- "$LIGHTCONE" develop all --saturation 9
+expect_error bad_shot "--shot nope" -- "$LIGHTCONE" develop all --shot nope
+expect_error unfinished "frame 5 of 'kerr_fall' is not finished" -- "$LIGHTCONE" develop all --frames 5
+cp all/kerr_fall.0060.png before.png
+head -c 2000 original/kerr_fall.0030.exr >all/kerr_fall.0030.exr
+expect_error torn_exr "kerr_fall.0030.exr has 2000 bytes where the render wrote" -- "$LIGHTCONE" develop all --exposure 0
+cmp -s before.png all/kerr_fall.0060.png || fail "a refused develop changed frame 60's PNG"
+
+e2e_end
