@@ -25,6 +25,7 @@
 
 #include "image/read_linear.hpp"
 #include "image/srgb.hpp"
+#include "image/srgb8_encoder.hpp"
 
 namespace lc {
 namespace {
@@ -307,7 +308,7 @@ void write_png(const std::filesystem::path& path, const FrameImage& image, const
     return;
   }
   std::vector<std::uint8_t> bytes(image.rgb.size());
-  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), linear_to_srgb8);
+  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), std::cref(Srgb8Encoder::shared()));
   write_with("png", spec, type, bytes.data(), what, path, named);
 }
 

@@ -4,54 +4,13 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 
 #include "image/image_io.hpp"
 #include "image/srgb.hpp"
+#include "image/srgb8_encoder.hpp"
 
 namespace lc {
-
-namespace {
-
-// Linear float -> 8-bit sRGB code exactly as linear_to_srgb8 rounds, but
-// without a pow() per channel (a 720p frame has 2.8 million): code k+1
-// begins where the curve crosses k + 0.5.  Those 255 boundaries are at
-// least 3e-4 apart (the curve's steepest part, near black), so a table over
-// [0, 1) in steps of 1/8192 has at most one boundary per bucket: the
-// bucket's first code plus one comparison gives the answer.
-class Srgb8Encoder {
- public:
-  Srgb8Encoder() {
-    for (int k = 0; k < 255; ++k) {
-      // The curve's crossing, rounded to float, then nudged to the smallest
-      // float linear_to_srgb8 sends to k+1: the two then agree on every float.
-      float b = static_cast<float>(srgb_to_linear((k + 0.5) / 255.0));
-      while (linear_to_srgb8(b) > k) b = std::nextafter(b, 0.0f);
-      while (linear_to_srgb8(b) <= k) b = std::nextafter(b, 2.0f);
-      upper_[static_cast<std::size_t>(k)] = b;
-    }
-    upper_[255] = 2.0f;  // above every value that reaches the lookup
-    int code = 0;
-    for (int b = 0; b < buckets; ++b) {
-      const float lo = static_cast<float>(b) / buckets;
-      while (code < 255 && upper_[static_cast<std::size_t>(code)] <= lo) ++code;
-      first_[static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(code);
-    }
-  }
-
-  std::uint8_t operator()(float c) const {
-    if (!(c > 0.0f)) return 0;  // also NaN, like linear_to_srgb8
-    if (c >= 1.0f) return 255;
-    const std::uint8_t k = first_[static_cast<std::size_t>(c * buckets)];
-    return static_cast<std::uint8_t>(k + (c >= upper_[k] ? 1 : 0));
-  }
-
- private:
-  static constexpr int buckets = 8192;
-  std::array<float, 256> upper_{};             // upper_[k]: where code k+1 begins
-  std::array<std::uint8_t, buckets> first_{};  // code at each bucket's lower edge
-};
-
-}  // namespace
 
 Rgb8Image Rgb8Image::filled(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
   // Inputs: a size (assumed non-negative) and a colour; output: that image.
@@ -66,10 +25,10 @@ Rgb8Image Rgb8Image::filled(int width, int height, std::uint8_t r, std::uint8_t 
 }
 
 Rgb8Image to_rgb8(const FrameImage& image) {
-  // Input: linear RGB; output: the sRGB codes (via the exact table above).
-  static const Srgb8Encoder encode;  // immutable once built
+  // Input: linear RGB; output: the sRGB codes (image/srgb8_encoder.hpp: exact).
+  const Srgb8Encoder& encode = Srgb8Encoder::shared();
   Rgb8Image out{image.width, image.height, std::vector<std::uint8_t>(image.rgb.size())};
-  std::transform(image.rgb.begin(), image.rgb.end(), out.pixels.begin(), [](float c) { return encode(c); });
+  std::transform(image.rgb.begin(), image.rgb.end(), out.pixels.begin(), std::cref(encode));
   return out;
 }
 
