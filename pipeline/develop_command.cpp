@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/cpu_time.hpp"
 #include "farm/frame_files.hpp"
 #include "farm/frame_store.hpp"
 #include "farm/threads.hpp"
@@ -218,6 +219,7 @@ int run_develop(const DevelopCommand& cmd) {
                                            : "");
 
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_at_start = process_cpu_seconds();
   std::atomic<std::size_t> next{0}, done{0};
   std::atomic<bool> stop{false};
   std::mutex error_mutex;
@@ -259,13 +261,15 @@ int run_develop(const DevelopCommand& cmd) {
                signal_name(*interrupted), done.load(), frames.size());
     return 128 + *interrupted;
   }
-  fmt::print(stderr, "develop: done: {} frame{} in {:.2f} s ({:.1f} ms a frame){}\n", frames.size(),
-             frames.size() == 1 ? "" : "s", seconds,
-             1e3 * seconds / static_cast<double>(frames.size()),
+  // What it cost beside what rendering the frames cost: the journal's
+  // core-seconds of their rays and stars (the render's writer, which made
+  // the same files, is not in them, so this overstates the share).
+  const double cpu = process_cpu_seconds() - cpu_at_start;
+  fmt::print(stderr, "develop: done: {} frame{} in {:.2f} s, {:.2f} core-seconds ({:.1f} ms a frame){}\n", frames.size(),
+             frames.size() == 1 ? "" : "s", seconds, cpu, 1e3 * cpu / static_cast<double>(frames.size()),
              render_recorded && render_seconds > 0.0
-                 ? fmt::format("; their render took {:.1f} core-seconds: developing cost {:.2f}% of it ({:.1f} core-seconds "
-                               "at most)",
-                               render_seconds, 100.0 * seconds * threads / render_seconds, seconds * threads)
+                 ? fmt::format("; {:.1f}% of the {:.1f} core-seconds the journal records for rendering them",
+                               100.0 * cpu / render_seconds, render_seconds)
                  : "");
   return 0;
 }

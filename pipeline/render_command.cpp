@@ -6,13 +6,13 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
-#include <sys/resource.h>
 
 #include "farm/content_hash.hpp"
 #include "farm/farm_run.hpp"
 #include "farm/frame_store.hpp"
 #include "farm/local_farm.hpp"
 #include "farm/memo_budget.hpp"
+#include "core/cpu_time.hpp"
 #include "farm/exposure_meter.hpp"
 #include "farm/mpi_master.hpp"
 #include "farm/mpi_session.hpp"
@@ -93,13 +93,6 @@ void report_plan(const farm::ResumePlan& plan, std::size_t asked, const RenderCo
   if (!plan.stale.empty())
     fmt::print(stderr, "render: --force: frames {} were made from other settings or inputs; rendering them again\n",
                farm::format_frame_list(plan.stale));
-}
-
-// CPU time of this process so far (user + system), all threads.
-double master_cpu_seconds() {
-  rusage u{};
-  ::getrusage(RUSAGE_SELF, &u);
-  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 // Stops the MPI workers once, on whichever way the master leaves (they
@@ -190,7 +183,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   farm::StoreSink sink(store, survey, info, job.rs, settings, preview_rows(queue), job.shot->asset_dirs(), star_threads);
   farm::Progress progress(farm::progress_style_for(stderr, cmd.progress), cmd.progress);
   int cores = threads;
-  const double cpu_at_start = master_cpu_seconds();
+  const double cpu_at_start = process_cpu_seconds();
   std::optional<std::string> error;
   int interrupted = 0;
   {
@@ -240,7 +233,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
                mpi ? "on the master's writers" : fmt::format("on up to {} thread{}", star_threads, star_threads == 1 ? "" : "s"));
   if (mpi)
     fmt::print(stderr, "render: the master used {:.2f} s of CPU in {:.2f} s ({:.0f}% of one core) while {} worker threads rendered\n",
-               master_cpu_seconds() - cpu_at_start, s, 100 * (master_cpu_seconds() - cpu_at_start) / s, cores);
+               process_cpu_seconds() - cpu_at_start, s, 100 * (process_cpu_seconds() - cpu_at_start) / s, cores);
   if (p.stats.gave_up)
     fmt::print(stderr,
                "render: {} rays gave up (drawn black): each ran out of steps or its step size fell below what double "

@@ -11,6 +11,10 @@ namespace lc {
 // CPU time of the calling thread so far, in seconds (CLOCK_THREAD_CPUTIME_ID).
 double thread_cpu_seconds();
 
+// CPU time of the whole process so far, every thread's (libraries' own
+// threads too), user and system, in seconds (getrusage RUSAGE_SELF).
+double process_cpu_seconds();
+
 // The load averages over 1, 5 and 15 minutes (/proc/loadavg), or nullopt
 // where the file is missing or does not read.
 struct LoadAverage {
