@@ -5,6 +5,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include "farm/content_hash.hpp"
@@ -13,6 +15,7 @@
 #include "farm/local_farm.hpp"
 #include "farm/memo_budget.hpp"
 #include "core/cpu_time.hpp"
+#include "farm/event_log.hpp"
 #include "farm/exposure_meter.hpp"
 #include "farm/mpi_master.hpp"
 #include "farm/mpi_session.hpp"
@@ -180,7 +183,13 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   // A frame's point stars on as many threads as render it (the MPI
   // master's writers draw four frames at once on a worker's node: one each).
   const int star_threads = mpi ? 1 : threads;
-  farm::StoreSink sink(store, survey, info, job.rs, settings, preview_rows(queue), job.shot->asset_dirs(), star_threads);
+  // What `lightcone monitor` shows of this run (farm/event_log.hpp).
+  farm::EventLog events(cmd.out, info.name);
+  events.run_started({.pid = static_cast<long>(::getpid()), .host = farm::host_name(), .ranks = mpi ? mpi->size() : 1,
+                      .threads = threads, .todo = static_cast<int>(plan.todo.size()),
+                      .done_before = static_cast<int>(plan.done.size()), .width = job.rs.width, .height = job.rs.height});
+  farm::StoreSink sink(store, survey, info, job.rs, settings, preview_rows(queue), job.shot->asset_dirs(), star_threads,
+                       &events);
   farm::Progress progress(farm::progress_style_for(stderr, cmd.progress), cmd.progress);
   int cores = threads;
   const double cpu_at_start = process_cpu_seconds();
@@ -190,8 +199,9 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     // The MPI master has its cores to itself but for a worker's share:
     // writing frames in parallel keeps up with many workers.
     farm::FarmRun run(queue, sink, mpi ? farm::master_writer_threads : 1, [&interrupts] { return interrupts.signal(); });
+    const farm::ProgressEvents progress_events(events, queue);
     if (mpi) {
-      cores = farm::run_mpi_master(*mpi, queue, run, progress, job.digest).worker_threads;
+      cores = farm::run_mpi_master(*mpi, queue, run, progress, job.digest, &events).worker_threads;
       stop_workers.now();
     } else {
       // Enough scenes for every frame that can be open at once.
@@ -209,6 +219,8 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   }
   progress.finish();
   const farm::QueueProgress p = queue.progress();
+  if (error) events.error(*error);
+  events.run_ended(error ? "error" : interrupted ? "interrupted" : "done", p.frames_stored);
   if (error) {
     if (p.frames_stored > 0 || !plan.done.empty())
       fmt::print(stderr, "render: stopped after {} new frame{}; finished frames are kept, the same command resumes\n",

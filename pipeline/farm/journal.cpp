@@ -18,6 +18,7 @@
 
 #include "core/line_reader.hpp"
 #include "durable_file.hpp"
+#include "farm/checked_line.hpp"
 #include "farm/content_hash.hpp"
 
 namespace lc::farm {
@@ -26,17 +27,6 @@ namespace {
 
 constexpr const char* header = "lightcone-journal 1";
 
-// Appends " #<check>" where check is the hash of everything before it.
-std::string with_check(const std::string& content) { return content + " #" + to_hex(hash_bytes(content)); }
-
-// The content of a complete line if its check matches, else nullopt.
-std::optional<std::string> checked_content(const std::string& line) {
-  const auto at = line.rfind(" #");
-  if (at == std::string::npos) return std::nullopt;
-  std::string content = line.substr(0, at);
-  if (line.substr(at + 2) != to_hex(hash_bytes(content))) return std::nullopt;
-  return content;
-}
 
 // A journal number: every one is a count, a size, seconds or a time, so
 // at least 0, and finite (std::from_chars reads "nan" and "inf", which a

@@ -25,7 +25,7 @@ struct WorkerState {
 }  // namespace
 
 MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& run, Progress& progress,
-                            std::uint64_t digest) {
+                            std::uint64_t digest, EventLog* events) {
   MasterReport report;
   std::vector<WorkerState> workers(static_cast<std::size_t>(mpi.size()));
 
@@ -44,6 +44,7 @@ MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& ru
         w.hello = true;
         ++report.workers;
         report.worker_threads += h.threads;
+        if (events) events->rank_joined(m.source, h.host, h.threads);
         queue.set_max_open_frames(open_frames_for(report.worker_threads, queue.layout().stripes()));
         return;
       }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "farm/event_log.hpp"
 #include "farm/farm_run.hpp"
 #include "farm/mpi_session.hpp"
 #include "farm/progress.hpp"
@@ -22,8 +23,9 @@ struct MasterReport {
 // (a signal here or on a worker).  Errors end up in run.error(), signals in
 // run.interrupted().  The workers are still waiting afterwards:
 // stop_mpi_workers.
+// Each worker that joins is written to `events` (may be null).
 MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& run, Progress& progress,
-                            std::uint64_t digest);
+                            std::uint64_t digest, EventLog* events = nullptr);
 
 // Tells every worker to stop and waits until each has said goodbye
 // (discarding whatever else they send).  Call it once on every way out of

@@ -45,6 +45,9 @@ Bytes pack_hello(const Hello& h) {
   Bytes b;
   put(b, h.digest);
   put(b, static_cast<std::int64_t>(h.threads));
+  const std::string host = h.host.substr(0, 255);
+  put(b, static_cast<std::uint8_t>(host.size()));
+  b.insert(b.end(), host.begin(), host.end());
   return b;
 }
 
@@ -53,6 +56,9 @@ Hello unpack_hello(std::span<const char> b) {
   Hello h;
   h.digest = get<std::uint64_t>(b, at);
   h.threads = static_cast<int>(get<std::int64_t>(b, at));
+  const auto n = get<std::uint8_t>(b, at);
+  if (at + n > b.size()) throw std::runtime_error("farm message: truncated");
+  h.host.assign(b.data() + at, n);
   return h;
 }
 

@@ -28,6 +28,7 @@ using Bytes = std::vector<char>;
 struct Hello {
   std::uint64_t digest = 0;
   int threads = 0;
+  std::string host;  // the worker's node, for the event log (at most 255 bytes are sent)
 };
 
 Bytes pack_hello(const Hello& h);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "farm/mpi_link.hpp"
+#include "farm/threads.hpp"
 
 namespace lc::farm {
 
@@ -78,7 +79,7 @@ int run_mpi_worker(const MpiSession& /*mpi*/, StripeRenderer* renderer, const Re
     out.post(0, Tag::error, Bytes(setup_error->begin(), setup_error->end()));
     s.failed = true;
   } else {
-    out.post(0, Tag::hello, pack_hello({digest, threads}));
+    out.post(0, Tag::hello, pack_hello({digest, threads, host_name()}));
     for (int k = 0; k < threads; ++k) pool.emplace_back(render_loop, std::ref(s), std::ref(*renderer), std::cref(layout));
   }
   const int reserve = std::max(1, reserve_per_thread) * threads;

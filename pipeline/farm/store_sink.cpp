@@ -18,9 +18,9 @@ FrameSettings frame_settings(const RenderSettings& rs) {
 
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
                      const FrameSettings& settings, std::vector<int> preview_rows,
-                     std::vector<std::filesystem::path> asset_dirs, int star_threads)
+                     std::vector<std::filesystem::path> asset_dirs, int star_threads, EventLog* events)
     : store_(store), survey_(survey), shot_name_(shot.name), fps_(shot.fps), look_(shot.look()), rs_(rs),
-      settings_(settings), preview_rows_(std::move(preview_rows)), resources_(std::move(asset_dirs)), star_threads_(std::max(1, star_threads)) {}
+      settings_(settings), preview_rows_(std::move(preview_rows)), resources_(std::move(asset_dirs)), star_threads_(std::max(1, star_threads)), events_(events) {}
 
 Look StoreSink::frame_look(const FrameFacts& facts) const {
   Look look = look_;
@@ -97,6 +97,7 @@ void StoreSink::store(const CompletedFrame& cf) {
     metadata.emplace_back("lightcone/colour",
                           "scene-linear, Rec. 709 primaries, D65; components below 0 are colours outside that gamut");
   store_.write_frame(cf.frame, *written, metadata, settings_, facts.inputs, facts.parts, cost, frame_look(facts));
+  if (events_) events_->frame_stored(cf.frame, cost.core_seconds + cost.star_seconds, cost.rays);
 }
 
 double StoreSink::star_seconds() const {

@@ -5,6 +5,7 @@
 #include "farm/farm_run.hpp"
 #include <mutex>
 
+#include "farm/event_log.hpp"
 #include "farm/frame_store.hpp"
 #include "farm/shot_inputs.hpp"
 #include "assets/shot_resources.hpp"
@@ -18,9 +19,11 @@ class StoreSink final : public FrameSink {
   // shot's (Shot::asset_dirs), where a point-star sky's background is read;
   // `star_threads` how many threads a frame's point stars are drawn on
   // (the writer's among them; the frame is the same for any number).
-  // `settings` are the journal's (frame_settings(rs) and the PNG's depth).
+  // `settings` are the journal's (frame_settings(rs) and the PNG's depth);
+  // each frame stored is written to `events` too (may be null).
   StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
-            const FrameSettings& settings, std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs, int star_threads = 1);
+            const FrameSettings& settings, std::vector<int> preview_rows, std::vector<std::filesystem::path> asset_dirs,
+            int star_threads = 1, EventLog* events = nullptr);
   void store(const CompletedFrame& frame) override;
   // CPU time spent drawing point stars so far, summed over every thread
   // that drew them (core-seconds).
@@ -42,6 +45,7 @@ class StoreSink final : public FrameSink {
   std::vector<int> preview_rows_;
   ShotResources resources_;  // the skies' stars, for the stage after the pixels
   int star_threads_;
+  EventLog* events_;
   mutable std::mutex star_mutex_;
   double star_seconds_ = 0.0, star_wall_seconds_ = 0.0;
 };

@@ -4,8 +4,15 @@
 #include <thread>
 
 #include <sched.h>
+#include <unistd.h>
 
 namespace lc::farm {
+
+std::string host_name() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof name - 1) != 0) return "";
+  return name;
+}
 
 int usable_cpus() {
   cpu_set_t set;

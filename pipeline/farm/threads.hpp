@@ -1,7 +1,12 @@
 #pragma once
-// How many render threads a process runs by default.
+// How many render threads a process runs by default, and where it runs.
+
+#include <string>
 
 namespace lc::farm {
+
+// This node's name (gethostname), "" if it has none: for the event log.
+std::string host_name();
 
 // CPUs this process may run on (its affinity mask: honours taskset and an
 // MPI launcher's binding), at least 1.

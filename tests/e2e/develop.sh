@@ -33,6 +33,9 @@ cmp -s alone/kerr_fall.0120.png all/kerr_fall.0120.png || fail "frame 120 render
 cmp -s alone/kerr_fall.meter all/kerr_fall.meter || fail "the meter of a run of one frame differs"
 mpi 3 "$LIGHTCONE" render "$FALL" --out mpi --frames "$FRAMES" "${SMALL[@]}" 2>mpi.log || fail "mpirun -n 3: $(cat mpi.log)"
 same_frames all mpi kerr_fall
+# The event log (for `lightcone monitor`) names the run's two workers, their node and threads.
+[ "$(grep -c " event=rank rank=[12] host=$(hostname) threads=[0-9]" mpi/kerr_fall.events)" = 2 ] \
+  || fail "the MPI run's event log lacks its workers: $(cat mpi/kerr_fall.events)"
 # Resumed: three frames finished, then a run killed mid-job (the test hook
 # holds its working sets), then the rest.
 "$LIGHTCONE" render "$FALL" --out resumed --frames 0:60:30 "${SMALL[@]}" 2>first.log || fail "first: $(cat first.log)"

@@ -1,0 +1,227 @@
+#include "farm/event_log.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <fstream>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "core/line_reader.hpp"
+#include "farm/checked_line.hpp"
+
+namespace lc::farm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view header = "lightcone-events 1";
+constexpr std::size_t max_event_line = 16 * 1024;
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+bool plain(unsigned char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+         std::strchr("-._~/:,+", c) != nullptr;
+}
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// "key=value key=value": nullopt when a token is not key=value.
+std::optional<Event> parse_event(const std::string& content) {
+  Event e;
+  std::size_t pos = 0;
+  while (pos < content.size()) {
+    const std::size_t end = std::min(content.find(' ', pos), content.size());
+    const std::string token = content.substr(pos, end - pos);
+    pos = end + 1;
+    if (token.empty()) continue;
+    const auto eq = token.find('=');
+    if (eq == std::string::npos || eq == 0) return std::nullopt;
+    e.fields[token.substr(0, eq)] = percent_decode(token.substr(eq + 1));
+  }
+  const auto t = e.fields.find("t"), kind = e.fields.find("event");
+  if (t == e.fields.end() || kind == e.fields.end()) return std::nullopt;
+  char* stop = nullptr;
+  e.time = std::strtod(t->second.c_str(), &stop);
+  if (stop != t->second.c_str() + t->second.size()) return std::nullopt;
+  e.kind = kind->second;
+  e.fields.erase(t);
+  e.fields.erase("event");
+  return e;
+}
+
+long field_long(const Event& e, const char* key) {
+  const auto it = e.fields.find(key);
+  return it == e.fields.end() ? 0 : std::strtol(it->second.c_str(), nullptr, 10);
+}
+
+}  // namespace
+
+std::string percent_encode(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (plain(u))
+      out += c;
+    else
+      out += fmt::format("%{:02X}", u);
+  }
+  return out;
+}
+
+std::string percent_decode(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '%' && i + 2 < text.size()) {
+      const int hi = hex_digit(text[i + 1]), lo = hex_digit(text[i + 2]);
+      if (hi >= 0 && lo >= 0) {
+        out += static_cast<char>(16 * hi + lo);
+        i += 2;
+        continue;
+      }
+    }
+    out += text[i];
+  }
+  return out;
+}
+
+fs::path EventLog::file_of(const fs::path& dir, const std::string& shot) { return dir / (shot + ".events"); }
+
+EventLog::EventLog(const fs::path& dir, const std::string& shot) : name_(file_of(dir, shot).string()) {
+  fd_ = ::open(name_.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) {
+    fmt::print(stderr, "render: warning: cannot write the event log {} ({}): `lightcone monitor` will not see this run\n",
+               name_, std::strerror(errno));
+    warned_ = true;
+    return;
+  }
+  struct stat st {};
+  if (::fstat(fd_, &st) == 0 && st.st_size == 0) append(std::string(header));
+}
+
+EventLog::~EventLog() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void EventLog::append(const std::string& content) {
+  if (fd_ < 0) return;
+  const std::string line = with_check(content) + "\n";
+  std::lock_guard lock(mutex_);
+  // One write: with O_APPEND the line lands whole after whatever is there.
+  const ssize_t n = ::write(fd_, line.data(), line.size());
+  if (n != static_cast<ssize_t>(line.size()) && !warned_) {
+    warned_ = true;
+    fmt::print(stderr, "render: warning: cannot write the event log {} ({}); the render goes on\n", name_,
+               n < 0 ? std::strerror(errno) : "a short write");
+  }
+}
+
+void EventLog::run_started(const RunStart& r) {
+  append(fmt::format("t={:.3f} event=run pid={} host={} ranks={} threads={} todo={} done={} size={}x{}", now_seconds(),
+                     r.pid, percent_encode(r.host), r.ranks, r.threads, r.todo, r.done_before, r.width, r.height));
+}
+
+void EventLog::rank_joined(int rank, const std::string& host, int threads) {
+  append(fmt::format("t={:.3f} event=rank rank={} host={} threads={}", now_seconds(), rank, percent_encode(host), threads));
+}
+
+void EventLog::progress(const QueueProgress& p) {
+  append(fmt::format("t={:.3f} event=progress stored={} total={} rows={}/{} rays={} core_seconds={:.3f}", now_seconds(),
+                     p.frames_stored, p.frames_total, p.rows_done, p.rows_total, p.stats.rays, p.stats.seconds));
+}
+
+void EventLog::frame_stored(int frame, double core_seconds, long rays) {
+  append(fmt::format("t={:.3f} event=frame frame={} core_seconds={:.3f} rays={}", now_seconds(), frame, core_seconds, rays));
+}
+
+void EventLog::error(const std::string& message) {
+  append(fmt::format("t={:.3f} event=error message={}", now_seconds(), percent_encode(message)));
+}
+
+void EventLog::run_ended(const char* status, int stored) {
+  append(fmt::format("t={:.3f} event=end status={} stored={}", now_seconds(), status, stored));
+}
+
+ProgressEvents::ProgressEvents(EventLog& log, const WorkQueue& queue, std::chrono::milliseconds interval)
+    : log_(log), queue_(queue) {
+  thread_ = std::thread([this, interval] {
+    std::unique_lock lock(mutex_);
+    while (!stop_.wait_for(lock, interval, [this] { return stopping_; })) log_.progress(queue_.progress());
+  });
+}
+
+ProgressEvents::~ProgressEvents() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  stop_.notify_all();
+  thread_.join();
+  log_.progress(queue_.progress());
+}
+
+EventSummary read_events(const fs::path& file, std::size_t keep) {
+  EventSummary s;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return s;
+  LineReader lines(in, max_event_line);
+  bool first = true;
+  while (const auto line = lines.next()) {
+    if (!line->complete || line->too_long) {
+      if (line->complete) ++s.bad_lines;
+      continue;
+    }
+    const auto content = checked_content(std::string(line->text));
+    if (first) {
+      first = false;
+      if (content && *content == header) continue;
+    }
+    const auto e = content ? parse_event(*content) : std::nullopt;
+    if (!e) {
+      ++s.bad_lines;
+      continue;
+    }
+    if (e->kind == "run") {
+      s = EventSummary{.bad_lines = s.bad_lines};
+      RunStart r;
+      r.time = e->time;
+      r.pid = field_long(*e, "pid");
+      r.host = e->fields.count("host") ? e->fields.at("host") : "";
+      r.ranks = static_cast<int>(field_long(*e, "ranks"));
+      r.threads = static_cast<int>(field_long(*e, "threads"));
+      r.todo = static_cast<int>(field_long(*e, "todo"));
+      r.done_before = static_cast<int>(field_long(*e, "done"));
+      const std::string size = e->fields.count("size") ? e->fields.at("size") : "";
+      std::sscanf(size.c_str(), "%dx%d", &r.width, &r.height);
+      s.run = r;
+    } else if (e->kind == "rank") {
+      if (s.ranks.size() < 4096) s.ranks.push_back(*e);
+    } else if (e->kind == "progress") {
+      s.progress = *e;
+    } else if (e->kind == "frame") {
+      ++s.frames_stored;
+    } else if (e->kind == "error") {
+      if (s.errors.size() < keep) s.errors.push_back(*e);
+    } else if (e->kind == "end") {
+      s.end = *e;
+    }
+    s.recent.push_back(*e);
+    if (s.recent.size() > keep) s.recent.pop_front();
+  }
+  return s;
+}
+
+}  // namespace lc::farm
