@@ -138,9 +138,12 @@ void EventLog::rank_joined(int rank, const std::string& host, int threads) {
   append(fmt::format("t={:.3f} event=rank rank={} host={} threads={}", now_seconds(), rank, percent_encode(host), threads));
 }
 
-void EventLog::progress(const QueueProgress& p) {
-  append(fmt::format("t={:.3f} event=progress stored={} total={} rows={}/{} rays={} core_seconds={:.3f}", now_seconds(),
-                     p.frames_stored, p.frames_total, p.rows_done, p.rows_total, p.stats.rays, p.stats.seconds));
+void EventLog::progress(const QueueProgress& p, const std::vector<int>& open) {
+  std::string frames;
+  for (std::size_t k = 0; k < open.size() && k < 64; ++k) frames += (k ? "," : "") + std::to_string(open[k]);
+  append(fmt::format("t={:.3f} event=progress stored={} total={} rows={}/{} rays={} core_seconds={:.3f} open={}",
+                     now_seconds(), p.frames_stored, p.frames_total, p.rows_done, p.rows_total, p.stats.rays,
+                     p.stats.seconds, frames));
 }
 
 void EventLog::frame_stored(int frame, double core_seconds, long rays) {
@@ -159,7 +162,7 @@ ProgressEvents::ProgressEvents(EventLog& log, const WorkQueue& queue, std::chron
     : log_(log), queue_(queue) {
   thread_ = std::thread([this, interval] {
     std::unique_lock lock(mutex_);
-    while (!stop_.wait_for(lock, interval, [this] { return stopping_; })) log_.progress(queue_.progress());
+    while (!stop_.wait_for(lock, interval, [this] { return stopping_; })) log_.progress(queue_.progress(), queue_.open_frames());
   });
 }
 
@@ -170,7 +173,7 @@ ProgressEvents::~ProgressEvents() {
   }
   stop_.notify_all();
   thread_.join();
-  log_.progress(queue_.progress());
+  log_.progress(queue_.progress(), queue_.open_frames());
 }
 
 EventSummary read_events(const fs::path& file, std::size_t keep) {
@@ -195,7 +198,9 @@ EventSummary read_events(const fs::path& file, std::size_t keep) {
       continue;
     }
     if (e->kind == "run") {
-      s = EventSummary{.bad_lines = s.bad_lines};
+      const int bad = s.bad_lines;
+      s = EventSummary{};
+      s.bad_lines = bad;
       RunStart r;
       r.time = e->time;
       r.pid = field_long(*e, "pid");

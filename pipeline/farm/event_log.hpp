@@ -10,7 +10,7 @@
 //   lightcone-events 1
 //   t=<unix s> event=run pid=<n> host=<name> ranks=<n> threads=<n> todo=<n> done=<n> size=<W>x<H>
 //   t=<unix s> event=rank rank=<n> host=<name> threads=<n>          (an MPI worker joined)
-//   t=<unix s> event=progress stored=<n> total=<n> rows=<done>/<all> rays=<n> core_seconds=<s>
+//   t=<unix s> event=progress stored=<n> total=<n> rows=<done>/<all> rays=<n> core_seconds=<s> open=<f>,<f>,...
 //   t=<unix s> event=frame frame=<n> core_seconds=<s> rays=<n>       (a frame stored)
 //   t=<unix s> event=error message=<percent-encoded text>
 //   t=<unix s> event=end status=<done|interrupted|error> stored=<n>
@@ -55,7 +55,8 @@ class EventLog {
 
   void run_started(const RunStart& run);
   void rank_joined(int rank, const std::string& host, int threads);
-  void progress(const QueueProgress& p);
+  // `open`: the frames in flight (WorkQueue::open_frames).
+  void progress(const QueueProgress& p, const std::vector<int>& open);
   void frame_stored(int frame, double core_seconds, long rays);
   void error(const std::string& message);
   void run_ended(const char* status, int stored);

@@ -179,6 +179,14 @@ QueueProgress WorkQueue::progress() const {
   return progress_;
 }
 
+std::vector<int> WorkQueue::open_frames() const {
+  std::lock_guard lock(mutex_);
+  std::vector<int> out;
+  for (const auto& [k, open] : open_)
+    if (k.first == static_cast<int>(Pass::full)) out.push_back(k.second);
+  return out;
+}
+
 int open_frames_for(int threads, int stripes) {
   stripes = std::max(1, stripes);
   return std::max(4, 2 * ((2 * threads + stripes - 1) / stripes) + 2);

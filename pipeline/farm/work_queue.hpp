@@ -86,6 +86,8 @@ class WorkQueue {
   bool stopped() const;
 
   QueueProgress progress() const;
+  // The frames of the full pass handed out and not yet stored, ascending.
+  std::vector<int> open_frames() const;
   const StripeLayout& layout() const { return layout_; }
   const RenderSettings& settings() const { return rs_; }
   // The stripes a frame of `pass` consists of.
