@@ -22,6 +22,7 @@
 #include "cost_command.hpp"
 #include "develop_command.hpp"
 #include "encode_command.hpp"
+#include "monitor_command.hpp"
 #include "farm_bench_command.hpp"
 #include "farm/mpi_session.hpp"
 #include "geodesic_command.hpp"
@@ -305,6 +306,17 @@ int main(int argc, char** argv) {
   develop_cmd->add_option("--threads", develop.threads, "Frames developed at once (default: every core)")
       ->check(number(End{1}, End{1024}));
 
+  lc::MonitorCommand monitor;
+  auto* monitor_cmd = app.add_subcommand(
+      "monitor", "Serve a web page of the renders in the folders given, live while they render (read only): "
+                 "docs/monitor.md");
+  monitor_cmd->add_option("dirs", monitor.dirs, "Render output folders (render --out)")->required();
+  monitor_cmd->add_option("--port", monitor.port, "TCP port (default 8765; 0: any free port, printed)")
+      ->check(number(End{0}, End{65535}));
+  monitor_cmd->add_option("--bind", monitor.bind,
+                          "Address to listen on (default 127.0.0.1: this machine only; see docs/monitor.md before "
+                          "opening it to others)");
+
   lc::ContactSheetCommand sheet;
   auto* sheet_cmd = app.add_subcommand("contact-sheet", "Write a PNG grid of frames picked evenly across a shot");
   sheet_cmd->add_option("dir", sheet.dir, "Frame directory")->required();
@@ -396,6 +408,7 @@ int main(int argc, char** argv) {
     if (*starfield_cmd) return lc::run_starfield(starfield);
     if (*encode_cmd) return lc::run_encode(encode);
     if (*sheet_cmd) return lc::run_contact_sheet(sheet);
+    if (*monitor_cmd) return lc::run_monitor(monitor);
     if (*develop_cmd) {
       std::erase_if(develop.look, [](const auto& kv) { return kv.second.empty(); });  // flags not given
       return lc::run_develop(develop);

@@ -1,0 +1,274 @@
+#include "monitor/monitor_api.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/json.hpp"
+#include "farm/event_log.hpp"
+#include "farm/frame_files.hpp"
+#include "farm/journal.hpp"
+#include "monitor_page.hpp"  // generated from monitor/page.html (pipeline/CMakeLists.txt)
+#include "video/frame_sequence.hpp"
+
+namespace lc::monitor {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A run whose log has said nothing for this long without an end line has
+// stopped (killed, or its node lost): it writes progress every 2 s.
+constexpr double silent_after_seconds = 15.0;
+constexpr int max_frames_per_reply = 10000;
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+struct BadRequest : std::runtime_error {
+  BadRequest(int status, const std::string& message) : std::runtime_error(message), status(status) {}
+  int status;
+};
+
+// A whole number in [lo, hi] from a query parameter.
+long number_param(const Query& q, const char* name, long lo, long hi, std::optional<long> fallback = std::nullopt) {
+  const auto it = q.find(name);
+  if (it == q.end()) {
+    if (fallback) return *fallback;
+    throw BadRequest(400, fmt::format("missing parameter '{}'", name));
+  }
+  long v = 0;
+  const std::string& s = it->second;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || v < lo || v > hi)
+    throw BadRequest(400, fmt::format("parameter '{}' must be a whole number from {} to {}", name, lo, hi));
+  return v;
+}
+
+std::string json_text(const std::string& s) { return json_string(s); }
+
+std::string json_list(const std::vector<int>& v) {
+  std::string out = "[";
+  for (std::size_t k = 0; k < v.size(); ++k) out += (k ? "," : "") + std::to_string(v[k]);
+  return out + "]";
+}
+
+std::string event_json(const farm::Event& e) {
+  std::string out = fmt::format("{{\"t\": {}, \"event\": {}", json_number(e.time), json_text(e.kind));
+  for (const auto& [k, v] : e.fields) out += fmt::format(", {}: {}", json_text(k), json_text(v));
+  return out + "}";
+}
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw BadRequest(404, fmt::format("cannot read {}", p.filename().string()));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+Reply error_reply(int status, const std::string& message) {
+  return {status, "application/json", fmt::format("{{\"error\": {}}}\n", json_text(message))};
+}
+
+std::vector<std::string> shots_in(const fs::path& dir) {
+  std::vector<std::string> shots;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string ext = e.path().extension().string();
+    if ((ext == ".journal" || ext == ".events") && e.is_regular_file(ec)) shots.push_back(e.path().stem().string());
+  }
+  std::sort(shots.begin(), shots.end());
+  shots.erase(std::unique(shots.begin(), shots.end()), shots.end());
+  return shots;
+}
+
+MonitorApi::MonitorApi(const std::vector<fs::path>& dirs, fs::path chart_script) : chart_script_(std::move(chart_script)) {
+  for (const fs::path& d : dirs) {
+    std::error_code ec;
+    if (!fs::is_directory(d, ec))
+      throw std::invalid_argument(fmt::format("{}: not a directory (give the folders renders write to: render --out)", d.string()));
+    dirs_.push_back(fs::canonical(d));
+  }
+  if (dirs_.empty()) throw std::invalid_argument("give at least one render folder");
+}
+
+Reply MonitorApi::get(const std::string& path, const Query& query) const {
+  try {
+    if (path == "/" || path == "/index.html") return {200, "text/html; charset=utf-8", std::string(monitor_page)};
+    if (path == "/chart.js") {
+      std::error_code ec;
+      if (!fs::is_regular_file(chart_script_, ec))
+        return error_reply(404, fmt::format("{} is missing: install Debian's libjs-chart.js for the cost chart",
+                                            chart_script_.string()));
+      return {200, "text/javascript", read_file(chart_script_)};
+    }
+    if (path == "/api/folders") return folders_reply();
+    if (path == "/api/status") return status_reply(query);
+    if (path == "/api/frames") return frames_reply(query);
+    if (path == "/api/events") return events_reply(query);
+    if (path == "/api/frame.png") return frame_png(query);
+    return error_reply(404, fmt::format("no such page: {}", path.substr(0, 200)));
+  } catch (const BadRequest& e) {
+    return error_reply(e.status, e.what());
+  } catch (const std::exception& e) {
+    return error_reply(500, e.what());
+  }
+}
+
+Reply MonitorApi::folders_reply() const {
+  std::string out = "{\"folders\": [";
+  for (std::size_t i = 0; i < dirs_.size(); ++i) {
+    std::string shots;
+    for (const std::string& s : shots_in(dirs_[i])) shots += (shots.empty() ? "" : ", ") + json_text(s);
+    out += fmt::format("{}{{\"id\": {}, \"path\": {}, \"shots\": [{}]}}", i ? ", " : "", i, json_text(dirs_[i].string()),
+                       shots);
+  }
+  return {200, "application/json", out + "]}\n"};
+}
+
+namespace {
+
+// The folder and shot a request names: the folder by its number, the shot
+// one that folder holds (so a name never reaches a path unchecked).
+std::pair<fs::path, std::string> folder_and_shot(const std::vector<fs::path>& dirs, const Query& q) {
+  const long folder = number_param(q, "folder", 0, static_cast<long>(dirs.size()) - 1);
+  const auto it = q.find("shot");
+  if (it == q.end()) throw BadRequest(400, "missing parameter 'shot'");
+  const fs::path& dir = dirs[static_cast<std::size_t>(folder)];
+  const std::vector<std::string> shots = shots_in(dir);
+  if (std::find(shots.begin(), shots.end(), it->second) == shots.end())
+    throw BadRequest(404, fmt::format("folder {} holds no render of a shot called '{}'", folder, it->second.substr(0, 100)));
+  return {dir, it->second};
+}
+
+}  // namespace
+
+Reply MonitorApi::status_reply(const Query& q) const {
+  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  std::map<int, std::uintmax_t> png_sizes;
+  const auto sequences = find_frame_sequences(dir);
+  if (const auto seq = sequences.find(shot); seq != sequences.end())
+    for (std::size_t k = 0; k < seq->second.frames.size(); ++k) {
+      std::error_code ec;
+      const auto size = fs::file_size(seq->second.files[k], ec);
+      if (!ec) png_sizes[seq->second.frames[k]] = size;
+    }
+  const farm::StaleFrames stale = farm::stale_frames(journal, png_sizes);
+  int done = 0;
+  double core_seconds = 0.0;
+  int costed = 0;
+  std::vector<std::pair<std::int64_t, int>> by_time;
+  for (const auto& [f, jf] : journal.frames) {
+    const auto png = png_sizes.find(f);
+    if (png != png_sizes.end() && png->second == jf.png_bytes) ++done;
+    if (jf.cost.recorded()) {
+      core_seconds += jf.cost.core_seconds + jf.cost.star_seconds;
+      ++costed;
+    }
+    by_time.emplace_back(jf.cost.finished, f);
+  }
+  std::sort(by_time.rbegin(), by_time.rend());
+  std::vector<int> latest;
+  for (std::size_t k = 0; k < by_time.size() && k < 8; ++k) latest.push_back(by_time[k].second);
+  const std::size_t stale_count = stale.other_settings.size() + stale.earlier_script.size() + stale.earlier_sky.size() +
+                                  stale.unrecorded.size();
+
+  const farm::EventSummary ev = farm::read_events(farm::EventLog::file_of(dir, shot), 50);
+  std::string run = "null";
+  std::vector<int> in_flight;
+  int to_do = 0;
+  if (ev.run) {
+    const farm::RunStart& r = *ev.run;
+    const double last = ev.recent.empty() ? r.time : ev.recent.back().time;
+    std::string state = ev.end ? ev.end->fields.count("status") ? ev.end->fields.at("status") : "done"
+                               : (now_seconds() - last > silent_after_seconds ? "stopped" : "running");
+    int threads = r.threads;
+    std::string workers;
+    for (const farm::Event& w : ev.ranks) {
+      const int t = std::atoi(w.fields.count("threads") ? w.fields.at("threads").c_str() : "0");
+      threads += t;
+      workers += fmt::format("{}{{\"rank\": {}, \"host\": {}, \"threads\": {}}}", workers.empty() ? "" : ", ",
+                             w.fields.count("rank") ? w.fields.at("rank") : "0",
+                             json_text(w.fields.count("host") ? w.fields.at("host") : ""), t);
+    }
+    if (state == "running" && ev.progress && ev.progress->fields.count("open")) {
+      std::istringstream open(ev.progress->fields.at("open"));
+      for (std::string f; std::getline(open, f, ',');)
+        if (!f.empty()) in_flight.push_back(std::atoi(f.c_str()));
+    }
+    to_do = state == "running" ? std::max(0, r.todo - ev.frames_stored) : 0;
+    // ETA: the frames left at the mean core-seconds the journal measured,
+    // over the run's render threads.
+    const std::string eta = state == "running" && costed > 0 && threads > 0
+                                ? json_number(to_do * (core_seconds / costed) / threads)
+                                : "null";
+    run = fmt::format(
+        "{{\"state\": {}, \"started\": {}, \"last_event\": {}, \"pid\": {}, \"host\": {}, \"ranks\": {}, \"threads\": {}, "
+        "\"todo\": {}, \"stored\": {}, \"eta_seconds\": {}, \"workers\": [{}], \"size\": [{}, {}]}}",
+        json_text(state), json_number(r.time), json_number(last), r.pid, json_text(r.host), r.ranks, threads, r.todo,
+        ev.frames_stored, eta, workers, r.width, r.height);
+  }
+  std::string errors;
+  for (const farm::Event& e : ev.errors)
+    errors += fmt::format("{}{{\"t\": {}, \"message\": {}}}", errors.empty() ? "" : ", ", json_number(e.time),
+                          json_text(e.fields.count("message") ? e.fields.at("message") : ""));
+  return {200, "application/json",
+          fmt::format("{{\"folder\": {}, \"shot\": {}, \"frames\": {{\"done\": {}, \"in_flight\": {}, \"to_do\": {}, "
+                      "\"stale\": {}}}, \"core_seconds\": {}, \"latest\": {}, \"run\": {}, \"errors\": [{}], "
+                      "\"bad_journal_lines\": {}, \"bad_event_lines\": {}}}\n",
+                      number_param(q, "folder", 0, 1L << 30), json_text(shot), done, json_list(in_flight), to_do, stale_count,
+                      json_number(core_seconds), json_list(latest), run, errors, journal.bad_lines, ev.bad_lines)};
+}
+
+Reply MonitorApi::frames_reply(const Query& q) const {
+  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const long from = number_param(q, "from", 0, 10'000'000, 0);
+  const long count = number_param(q, "count", 1, max_frames_per_reply, 1000);
+  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  std::string out;
+  long n = 0;
+  for (auto it = journal.frames.lower_bound(static_cast<int>(from)); it != journal.frames.end() && n < count; ++it, ++n) {
+    const farm::JournalFrame& jf = it->second;
+    out += fmt::format("{}{{\"frame\": {}, \"core_seconds\": {}, \"rays\": {}, \"finished\": {}}}", n ? ", " : "",
+                       jf.frame, jf.cost.recorded() ? json_number(jf.cost.core_seconds + jf.cost.star_seconds) : "null",
+                       jf.cost.rays, jf.cost.finished);
+  }
+  return {200, "application/json",
+          fmt::format("{{\"total\": {}, \"frames\": [{}]}}\n", journal.frames.size(), out)};
+}
+
+Reply MonitorApi::events_reply(const Query& q) const {
+  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const farm::EventSummary ev = farm::read_events(farm::EventLog::file_of(dir, shot), 200);
+  std::string out;
+  for (const farm::Event& e : ev.recent) out += (out.empty() ? "" : ", ") + event_json(e);
+  return {200, "application/json", fmt::format("{{\"events\": [{}]}}\n", out)};
+}
+
+Reply MonitorApi::frame_png(const Query& q) const {
+  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const long frame = number_param(q, "frame", 0, 99'999'999);
+  const bool preview = number_param(q, "preview", 0, 1, 0) == 1;
+  const fs::path file = farm::frame_path(preview ? dir / "preview" : dir, shot, static_cast<int>(frame), "png");
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) throw BadRequest(404, fmt::format("frame {} of '{}' has no PNG", frame, shot));
+  // Links are followed only to files inside the folder.
+  const fs::path real = fs::canonical(file, ec);
+  const auto [end, ignored] = std::mismatch(dir.begin(), dir.end(), real.begin(), real.end());
+  if (ec || end != dir.end())
+    throw BadRequest(403, fmt::format("frame {} of '{}' links outside the folder: not served", frame, shot));
+  return {200, "image/png", read_file(real)};
+}
+
+}  // namespace lc::monitor

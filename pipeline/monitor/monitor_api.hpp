@@ -1,0 +1,68 @@
+#pragma once
+// What `lightcone monitor` serves (docs/monitor.md), as plain functions of
+// a request: the page, and a JSON API over render folders that only reads
+// them (the journal, the event log, the frames).  No socket here: the
+// server (monitor_command.cpp) hands each GET to MonitorApi::get, and the
+// tests call it directly.
+//
+// Safe by construction: no request names a file.  A frame is asked for by
+// folder number, shot and frame number, and its path is built here
+// (farm/frame_files.hpp); the shot must be one the folder holds, and the
+// file must be a regular file inside the folder once links are followed.
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace lc::monitor {
+
+struct Reply {
+  int status = 200;
+  std::string content_type = "application/json";
+  std::string body;
+};
+
+using Query = std::map<std::string, std::string>;
+
+// The shots a render left in `dir` (a <shot>.journal or <shot>.events), by
+// name.
+std::vector<std::string> shots_in(const std::filesystem::path& dir);
+
+class MonitorApi {
+ public:
+  // `dirs`: the render folders to show.  Throws std::invalid_argument naming
+  // one that is not a directory.  `chart_script`: Chart.js's file
+  // (Debian's libjs-chart.js), served as /chart.js when it exists.
+  explicit MonitorApi(const std::vector<std::filesystem::path>& dirs,
+                      std::filesystem::path chart_script = "/usr/share/javascript/chart.js/chart.min.js");
+
+  // Answers GET `path` with `query`.  Never throws: what cannot be answered
+  // is a 4xx reply whose JSON names why ({"error": "..."}), a failure to
+  // read a 500.
+  //   /                      the page
+  //   /chart.js              the chart library
+  //   /api/folders           the folders and their shots
+  //   /api/status            ?folder=N&shot=S: counts, the run, its workers, errors, ETA
+  //   /api/frames            ?folder=N&shot=S[&from=F][&count=C]: each finished frame's cost
+  //   /api/events            ?folder=N&shot=S: the latest run's last events
+  //   /api/frame.png         ?folder=N&shot=S&frame=F[&preview=1]: a frame's PNG
+  Reply get(const std::string& path, const Query& query) const;
+
+  const std::vector<std::filesystem::path>& folders() const { return dirs_; }
+
+ private:
+  Reply folders_reply() const;
+  Reply status_reply(const Query& query) const;
+  Reply frames_reply(const Query& query) const;
+  Reply events_reply(const Query& query) const;
+  Reply frame_png(const Query& query) const;
+
+  std::vector<std::filesystem::path> dirs_;  // canonical
+  std::filesystem::path chart_script_;
+};
+
+// The JSON error reply.
+Reply error_reply(int status, const std::string& message);
+
+}  // namespace lc::monitor

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# `lightcone monitor` (docs/monitor.md) on a real render: the API's counts
+# follow the journal while the render is held mid-run, after it is
+# interrupted and after it resumes; a real headless browser (Debian's
+# chromium) draws the page from it: the counts, a thumbnail per latest
+# frame, a point of the cost chart per finished frame (the screenshot is
+# kept as monitor.png); hostile requests get 4xx and nothing outside the
+# folder; the monitor stops on a kill.
+source "$(dirname "$0")/lib.sh"
+e2e_begin "$@"
+
+FALL="$SRC/shots/kerr_fall.lua"
+SMALL=(--size 96x54 --supersample 1 --progress 0 --frames 0:179:20)  # 9 frames of 54 rows
+
+
+expect_error monitor_missing "out: not a directory" -- "$LIGHTCONE" monitor out --port 0
+mkdir -p out
+"$LIGHTCONE" monitor out --port 0 2>monitor.log &
+monitor=$!
+for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
+URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log) || { fail "the monitor did not start: $(cat monitor.log)"; e2e_end; exit 1; }
+api() { curl -s --max-time 10 "$URL$1"; }
+field() { $PY -c "import json,sys; d=json.load(sys.stdin); print(eval(sys.argv[1]))" "$1"; }
+[ "$(api /api/folders | field 'd["folders"][0]["shots"]')" = "[]" ] || fail "an empty folder lists shots: $(api /api/folders)"
+
+# A render held after 130 working sets: two frames stored, the third in flight.
+LIGHTCONE_TEST_PAUSE_AFTER=130 "$LIGHTCONE" render "$FALL" --out out --threads 2 "${SMALL[@]}" 2>render.log &
+render=$!
+wait_for_pause render.log "$render" || true
+sleep 2.5  # a progress line (every 2 s) says what is in flight
+Q="folder=0&shot=kerr_fall"
+status=$(api "/api/status?$Q")
+journalled=$(grep -c '^frame=' out/kerr_fall.journal || true)
+[ "$(field 'd["frames"]["done"]' <<<"$status")" = "$journalled" ] || fail "held: done is not the journal's $journalled: $status"
+[ "$(field 'd["run"]["state"]' <<<"$status")" = running ] || fail "held: not running: $status"
+[ "$(field 'd["frames"]["to_do"]' <<<"$status")" = $((9 - journalled)) ] || fail "held: to do: $status"
+[ "$(field 'len(d["frames"]["in_flight"]) > 0' <<<"$status")" = True ] || fail "held: nothing in flight: $status"
+[ "$(field 'd["run"]["eta_seconds"] is not None' <<<"$status")" = True ] || fail "held: no ETA: $status"
+[ "$(field 'd["run"]["threads"]' <<<"$status")" = 2 ] || fail "held: threads: $status"
+
+# Interrupted (SIGTERM, as a Ctrl-C: a background job of a script ignores SIGINT), then resumed.
+kill -TERM "$render"
+wait "$render" 2>/dev/null || true
+status=$(api "/api/status?$Q")
+[ "$(field 'd["run"]["state"]' <<<"$status")" = interrupted ] || fail "after Ctrl-C: $status"
+"$LIGHTCONE" render "$FALL" --out out "${SMALL[@]}" 2>resume.log || fail "resume: $(cat resume.log)"
+status=$(api "/api/status?$Q")
+[ "$(field 'd["frames"]["done"]' <<<"$status")" = 9 ] || fail "resumed: done: $status"
+[ "$(field 'd["run"]["state"]' <<<"$status")" = done ] || fail "resumed: state: $status"
+[ "$(api "/api/frames?$Q" | field 'len(d["frames"])')" = 9 ] || fail "frames: $(api "/api/frames?$Q")"
+curl -s --max-time 10 -o frame.png "$URL/api/frame.png?$Q&frame=40"
+cmp -s frame.png out/kerr_fall.0040.png || fail "the served frame 40 is not the file"
+
+# Hostile requests: 4xx, and nothing from outside the folder.
+echo "SECRET-TOKEN-42" >secret.txt
+ln -sf "$WORK/secret.txt" out/kerr_fall.0999.png
+for path in "/api/frame.png?$Q&frame=999" "/api/frame.png?folder=0&shot=..%2F..%2Fetc%2Fpasswd&frame=0" \
+  "/api/status?folder=7&shot=kerr_fall" "/api/frames?$Q&count=100000000" "/api/frame.png?$Q&frame=-1" \
+  "/../../etc/passwd" "/%2e%2e/%2e%2e/etc/passwd" "/api/status?folder=0&shot=%00"; do
+  code=$(curl -s --path-as-is --max-time 10 -o body.txt -w "%{http_code}" "$URL$path")
+  case "$code" in 4??) ;; *) fail "$path: HTTP $code, expected 4xx: $(cat body.txt)" ;; esac
+  grep -q "SECRET-TOKEN-42\|root:" body.txt && fail "$path served a file outside the folder"
+done
+code=$(curl -s --max-time 10 -o /dev/null -w "%{http_code}" -X POST -d x=1 "$URL/api/folders")
+case "$code" in 4??) ;; *) fail "POST: HTTP $code, expected 4xx" ;; esac
+rm out/kerr_fall.0999.png
+
+# The page in a real browser: after its first polls, the counts are the
+# API's, one thumbnail for each of the latest frames, one chart point per
+# finished frame.
+BROWSER=(chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1200,800
+  --virtual-time-budget=6000)
+timeout 60 "${BROWSER[@]}" --dump-dom "$URL/" >page.html 2>browser.log || fail "chromium: $(tail -3 browser.log)"
+grep -q 'data-count="done">9<' page.html || fail "the page does not show 9 done: $(grep -o 'data-count="[a-z_]*">[^<]*<' page.html)"
+grep -q 'data-count="to_do">0<' page.html || fail "the page's to do"
+[ "$(grep -o '<figure data-frame=' page.html | wc -l)" = 8 ] || fail "the page shows $(grep -o '<figure data-frame=' page.html | wc -l) thumbnails, not the 8 latest"
+grep -q 'data-points="9"' page.html || fail "the cost chart has not 9 points: $(grep -o 'data-points="[0-9]*"' page.html)"
+grep -q 'class="state done"' page.html || fail "the page's run state"
+timeout 60 "${BROWSER[@]}" --screenshot="$WORK/monitor.png" "$URL/" >/dev/null 2>>browser.log
+[ -s monitor.png ] || fail "no screenshot"
+
+# A kill (SIGTERM; a Ctrl-C alike) stops it.
+kill -TERM "$monitor"
+wait "$monitor" 2>/dev/null || true
+grep -q "monitor: stopped by" monitor.log || fail "the monitor's stop: $(cat monitor.log)"
+e2e_end

@@ -1,0 +1,145 @@
+// The monitor's API (monitor/monitor_api.hpp), without a socket: every
+// endpoint answers from the journal, the event log and the frames; what a
+// hostile request asks for (another folder, a shot that is not there, a
+// frame linked out of the folder, huge ranges, unknown pages) is a 4xx
+// naming why, and nothing outside the folders is read.
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "farm/checked_line.hpp"
+#include "farm/event_log.hpp"
+#include "farm/frame_files.hpp"
+#include "farm/frame_store.hpp"
+#include "monitor/monitor_api.hpp"
+#include "render/renderer.hpp"
+#include "scratch_dir.hpp"
+
+namespace lc::monitor {
+namespace {
+
+namespace fs = std::filesystem;
+
+FrameImage tiny() {
+  RenderSettings rs;
+  rs.width = 4;
+  rs.height = 2;
+  FrameImage img = make_frame(rs);
+  img.rgb[0] = 0.5f;
+  return img;
+}
+
+// A folder with three finished frames of "s" (costs 1, 2 and 3
+// core-seconds) and a run logged as still going with frame 3 in flight.
+fs::path render_folder(const test::ScratchDir& scratch) {
+  const fs::path dir = scratch / "out";
+  {
+    farm::FrameStore store(dir, "s");
+    const farm::FrameSettings st{4, 2, 1, false, false};
+    for (int f = 0; f < 3; ++f)
+      store.write_frame(f, tiny(), {}, st, "00000000000000aa", {"00000000000000bb", ""},
+                        {.rays = 8, .reused = 0, .core_seconds = 1.0 + f}, Look{});
+  }
+  farm::EventLog log(dir, "s");
+  log.run_started({.pid = 9, .host = "n0", .ranks = 1, .threads = 2, .todo = 5, .width = 4, .height = 2});
+  for (int f = 0; f < 3; ++f) log.frame_stored(f, 1.0 + f, 8);
+  farm::QueueProgress p;
+  p.frames_stored = 3;
+  p.frames_total = 5;
+  log.progress(p, {3});
+  return dir;
+}
+
+bool has(const Reply& r, const std::string& text) { return r.body.find(text) != std::string::npos; }
+
+TEST(MonitorApi, StatusCountsTheJournalAndTheRun) {
+  test::ScratchDir scratch;
+  const MonitorApi api({render_folder(scratch)});
+  const Reply folders = api.get("/api/folders", {});
+  EXPECT_EQ(folders.status, 200);
+  EXPECT_TRUE(has(folders, "\"shots\": [\"s\"]")) << folders.body;
+  const Reply s = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+  ASSERT_EQ(s.status, 200) << s.body;
+  EXPECT_TRUE(has(s, "\"frames\": {\"done\": 3, \"in_flight\": [3], \"to_do\": 2, \"stale\": 0}")) << s.body;
+  EXPECT_TRUE(has(s, "\"state\": \"running\"")) << s.body;
+  EXPECT_TRUE(has(s, "\"latest\": [2,1,0]")) << s.body;
+  // Two frames left at the journal's mean of 2 core-seconds, on 2 threads.
+  EXPECT_TRUE(has(s, "\"eta_seconds\": 2,")) << s.body;
+  const Reply frames = api.get("/api/frames", {{"folder", "0"}, {"shot", "s"}, {"from", "1"}, {"count", "1"}});
+  EXPECT_EQ(frames.body.rfind("{\"total\": 3, \"frames\": [{\"frame\": 1, \"core_seconds\": 2, \"rays\": 8, \"finished\": ", 0), 0u)
+      << frames.body;  // one frame: `count` 1 from frame 1
+  const Reply events = api.get("/api/events", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(events, "\"event\": \"progress\"")) << events.body;
+  const Reply png = api.get("/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "2"}});
+  EXPECT_EQ(png.status, 200);
+  EXPECT_EQ(png.content_type, "image/png");
+  EXPECT_EQ(png.body.substr(1, 3), "PNG");
+  EXPECT_TRUE(has(api.get("/", {}), "<title>lightcone monitor</title>"));
+}
+
+TEST(MonitorApi, HostileRequestsAreRefusedWithFourHundreds) {
+  test::ScratchDir scratch;
+  const fs::path dir = render_folder(scratch);
+  // A frame that links to a file outside the folder.
+  std::ofstream(scratch / "secret.png") << "not for the web";
+  fs::remove(farm::frame_path(dir, "s", 1, "png"));
+  fs::create_symlink(scratch / "secret.png", farm::frame_path(dir, "s", 1, "png"));
+  const MonitorApi api({dir}, scratch / "no-chart.js");
+  struct Case {
+    std::string path;
+    Query query;
+    int status;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {"/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "1"}}, 403, "links outside the folder"},
+      {"/api/frame.png", {{"folder", "0"}, {"shot", "../s"}, {"frame", "0"}}, 404, "no render of a shot called '../s'"},
+      {"/api/frame.png", {{"folder", "0"}, {"shot", "/etc/passwd"}, {"frame", "0"}}, 404, "no render"},
+      {"/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "-1"}}, 400, "'frame' must be a whole number"},
+      {"/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "1e9"}}, 400, "'frame'"},
+      {"/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "7"}}, 404, "frame 7 of 's' has no PNG"},
+      {"/api/status", {{"folder", "1"}, {"shot", "s"}}, 400, "'folder' must be a whole number from 0 to 0"},
+      {"/api/status", {{"folder", "zero"}, {"shot", "s"}}, 400, "'folder'"},
+      {"/api/status", {{"folder", "0"}}, 400, "missing parameter 'shot'"},
+      {"/api/frames", {{"folder", "0"}, {"shot", "s"}, {"count", "99999999"}}, 400, "'count' must be a whole number from 1 to 10000"},
+      {"/api/frames", {{"folder", "0"}, {"shot", "s"}, {"from", "-5"}}, 400, "'from'"},
+      {"/../../etc/passwd", {}, 404, "no such page"},
+      {"/etc/passwd", {}, 404, "no such page"},
+      {"/chart.js", {}, 404, "install Debian's libjs-chart.js"},
+  };
+  for (const Case& c : cases) {
+    const Reply r = api.get(c.path, c.query);
+    EXPECT_EQ(r.status, c.status) << c.path << ": " << r.body;
+    EXPECT_TRUE(has(r, c.says)) << c.path << ": " << r.body;
+    EXPECT_FALSE(has(r, "not for the web")) << c.path;
+  }
+}
+
+TEST(MonitorApi, ARunThatStoppedWithoutAnEndIsSaidToHaveStopped) {
+  test::ScratchDir scratch;
+  const fs::path dir = scratch / "out";
+  fs::create_directories(dir);
+  {
+    std::ofstream out(farm::EventLog::file_of(dir, "s"));
+    const std::string run = "t=1000.000 event=run pid=1 host=h ranks=1 threads=1 todo=4 done=0 size=4x2";
+    out << farm::with_check("lightcone-events 1") << "\n";
+    out << farm::with_check(run) << "\n";
+  }
+  const MonitorApi api({dir});
+  const Reply s = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(s, "\"state\": \"stopped\"")) << s.body;
+  EXPECT_TRUE(has(s, "\"to_do\": 0")) << s.body;
+}
+
+TEST(MonitorApi, OnlyDirectoriesAreServed) {
+  test::ScratchDir scratch;
+  std::ofstream(scratch / "file") << "x";
+  EXPECT_THROW(MonitorApi({scratch / "file"}), std::invalid_argument);
+  EXPECT_THROW(MonitorApi({scratch / "missing"}), std::invalid_argument);
+  EXPECT_THROW(MonitorApi(std::vector<fs::path>{}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace lc::monitor
