@@ -20,13 +20,18 @@ packages=(
   luajit libluajit-5.1-dev libgsl-dev libopenmpi-dev openmpi-bin
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   libopenimageio-dev openimageio-tools libcli11-dev libfmt-dev libgtest-dev libcairo2-dev
+  libcpp-httplib-dev libjs-chart.js
 )
 # The end-to-end tests also read results back with tools a minimal Debian
 # lacks: python3 (PNG chunks, MP4 atoms, JSON), python3-openimageio and
 # python3-numpy (docs/layers.md's EXR reader, run as written) and procps
 # (pgrep); the
-# cluster test (tests/cluster/slurm.sh) runs a one-node Slurm of its own.
-if [ "$job" = test ]; then packages+=(python3 python3-openimageio python3-numpy procps slurmctld slurmd slurm-client munge); fi
+# cluster test (tests/cluster/slurm.sh) runs a one-node Slurm of its own;
+# the monitor's test (tests/e2e/monitor.sh) asks its API with curl and draws
+# its page in a real browser, Debian's chromium.
+if [ "$job" = test ]; then
+  packages+=(python3 python3-openimageio python3-numpy procps slurmctld slurmd slurm-client munge curl chromium)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
