@@ -10,11 +10,10 @@
 #include <array>
 #include <vector>
 
+#include "core/mat3.hpp"
 #include "light/cie.hpp"
 
 namespace lc {
-
-using Mat3 = std::array<std::array<double, 3>, 3>;
 
 // Rec. 709 luminance weights (IEC 61966-2-1), used by saturation and bloom.
 inline constexpr std::array<double, 3> rec709_luminance = {0.2126, 0.7152, 0.0722};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/mat3.hpp"
 #include "light/cie.hpp"
 
 namespace lc {
@@ -10,8 +11,6 @@ namespace lc {
 namespace {
 
 constexpr int table_size = 1025;  // odd: g = 1 (the middle, as g_min g_max = 1) is a node
-
-using Mat3 = std::array<std::array<double, 3>, 3>;
 
 // The matching functions at 360, 361, ..., 830 nm.
 using MatchingTable = std::array<XYZ, 471>;
@@ -41,19 +40,6 @@ XYZ band_xyz(const MatchingTable& cmf, double centre_nm, double g) {
   return out;
 }
 
-Mat3 inverse3(const Mat3& a) {
-  const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                     a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                     a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-  Mat3 out;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-      out[i][j] = (a[i1][j1] * a[i2][j2] - a[i1][j2] * a[i2][j1]) / det;
-    }
-  return out;
-}
-
 // C(g): column k is band k's colour seen with ratio g.
 Mat3 bands(const MatchingTable& cmf, double g) {
   Mat3 c{};
@@ -70,13 +56,13 @@ std::array<double, 3> SpectralShift::band_color(int k, double g) {
   return linear_srgb_exact(band_xyz(matching_table(), band_nm[static_cast<std::size_t>(k)], g));
 }
 
-std::array<std::array<double, 3>, 3> SpectralShift::weights() { return inverse3(bands(matching_table(), 1.0)); }
+std::array<std::array<double, 3>, 3> SpectralShift::weights() { return inverse(bands(matching_table(), 1.0)); }
 
 std::array<std::array<double, 3>, 3> SpectralShift::matrix(double g) {
   // The weights of the bands in a colour c are W c, W = C(1)^-1; seen
   // shifted, they give C(g) W c.
   const MatchingTable cmf = matching_table();
-  const Mat3 w = inverse3(bands(cmf, 1.0));
+  const Mat3 w = inverse(bands(cmf, 1.0));
   const Mat3 cg = bands(cmf, g);
   Mat3 m{};
   for (int i = 0; i < 3; ++i)
@@ -88,7 +74,7 @@ std::array<std::array<double, 3>, 3> SpectralShift::matrix(double g) {
 SpectralShift::SpectralShift()
     : log_lo_(std::log(g_min)), step_((std::log(g_max) - std::log(g_min)) / (table_size - 1)) {
   const MatchingTable cmf = matching_table();
-  const Mat3 w = inverse3(bands(cmf, 1.0));
+  const Mat3 w = inverse(bands(cmf, 1.0));
   table_.resize(table_size);
   for (int t = 0; t < table_size; ++t) {
     const Mat3 cg = bands(cmf, std::exp(log_lo_ + t * step_));
