@@ -15,17 +15,6 @@ FALL="$SRC/shots/kerr_fall.lua"
 SMALL=(--size 96x54 --supersample 1 --progress 0)
 FRAMES=0:179:30
 
-# same_frames A B NAME: every EXR and PNG of A equals B's, byte for byte.
-same_frames() {
-  local n=0
-  for f in "$1"/"$3".*.exr "$1"/"$3".*.png; do
-    [ -e "$f" ] || continue
-    n=$((n + 1))
-    cmp -s "$f" "$2/$(basename "$f")" || fail "$2: $(basename "$f") differs from $1's"
-  done
-  [ "$n" -gt 0 ] || fail "$1: no frames"
-}
-
 # --- Automatic exposure: the band, and the same exposure however rendered.
 "$LIGHTCONE" render "$FALL" --out all --frames "$FRAMES" "${SMALL[@]}" 2>all.log || fail "render: $(cat all.log)"
 "$LIGHTCONE" render "$FALL" --out alone --frames 120 "${SMALL[@]}" 2>alone.log || fail "alone: $(cat alone.log)"

@@ -102,6 +102,17 @@ wait_for_pause() {
   return 1
 }
 
+# same_frames A B NAME (frames of shot NAME in folders A and B): every EXR and PNG of A equals B's, byte for byte.
+same_frames() {
+  local n=0
+  for f in "$1"/"$3".*.exr "$1"/"$3".*.png; do
+    [ -e "$f" ] || continue
+    n=$((n + 1))
+    cmp -s "$f" "$2/$(basename "$f")" || fail "$2: $(basename "$f") differs from $1's"
+  done
+  [ "$n" -gt 0 ] || fail "$1: no frames"
+}
+
 e2e_end() {
   echo "$CHECKS error checks; $FAILURES failures"
   [ "$FAILURES" -eq 0 ]

@@ -14,17 +14,6 @@ ORBIT="$SRC/tests/data/farm/farm_orbit.lua"  # point stars; the observer rises 2
 DATA="$SRC/tests/data/blur"
 BLUR=(--shutter 0.5 --time-samples 4 --progress 0)
 
-# same_frames A B NAME: every EXR and PNG of A equals B's, byte for byte.
-same_frames() {
-  local n=0
-  for f in "$1"/"$3".*.exr "$1"/"$3".*.png; do
-    [ -e "$f" ] || continue
-    n=$((n + 1))
-    cmp -s "$f" "$2/$(basename "$f")" || fail "$2: $(basename "$f") differs from $1's"
-  done
-  [ "$n" -gt 0 ] || fail "$1: no frames"
-}
-
 # --- Determinism: 1 thread, 2 threads with other stripes, mpirun -n 3.
 "$LIGHTCONE" render "$ORBIT" --out one --threads 1 "${BLUR[@]}" 2>one.log || fail "1 thread: $(cat one.log)"
 "$LIGHTCONE" render "$ORBIT" --out two --threads 2 --stripes 7 "${BLUR[@]}" 2>two.log || fail "2 threads: $(cat two.log)"

@@ -13,18 +13,12 @@
 #include "image/image_io.hpp"
 #include "render/renderer.hpp"
 #include "scratch_dir.hpp"
+#include "tiny_frame.hpp"
 
 namespace lc::farm {
 namespace {
 
-FrameImage tiny() {
-  RenderSettings rs;
-  rs.width = 4;
-  rs.height = 2;
-  FrameImage img = make_frame(rs);
-  img.rgb[0] = 0.5f;
-  return img;
-}
+FrameImage tiny() { return test::tiny_frame(); }
 
 TEST(FarmStore, SecondStoreOnTheDirectoryIsRefusedNamingThePid) {
   test::ScratchDir dir;

@@ -16,20 +16,14 @@
 #include "monitor/monitor_api.hpp"
 #include "render/renderer.hpp"
 #include "scratch_dir.hpp"
+#include "tiny_frame.hpp"
 
 namespace lc::monitor {
 namespace {
 
 namespace fs = std::filesystem;
 
-FrameImage tiny() {
-  RenderSettings rs;
-  rs.width = 4;
-  rs.height = 2;
-  FrameImage img = make_frame(rs);
-  img.rgb[0] = 0.5f;
-  return img;
-}
+FrameImage tiny() { return test::tiny_frame(); }
 
 // A folder with three finished frames of "s" (costs 1, 2 and 3
 // core-seconds) and a run logged as still going with frame 3 in flight.
