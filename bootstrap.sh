@@ -27,10 +27,11 @@ packages=(
 # python3-numpy (docs/layers.md's EXR reader, run as written) and procps
 # (pgrep); the
 # cluster test (tests/cluster/slurm.sh) runs a one-node Slurm of its own;
-# the monitor's test (tests/e2e/monitor.sh) asks its API with curl and draws
-# its page in a real browser, Debian's chromium.
+# the monitor's test (tests/e2e/monitor.sh) asks its API with curl and
+# drives its page in a real browser, Debian's chromium, through Selenium.
 if [ "$job" = test ]; then
-  packages+=(python3 python3-openimageio python3-numpy procps slurmctld slurmd slurm-client munge curl chromium)
+  packages+=(python3 python3-openimageio python3-numpy procps slurmctld slurmd slurm-client munge curl chromium
+             chromium-driver python3-selenium)
 fi
 missing=()
 for p in "${packages[@]}"; do

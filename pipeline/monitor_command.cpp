@@ -24,7 +24,10 @@ int run_monitor(const MonitorCommand& cmd) {
   // Input: the folders and where to listen; output: the server, until
   // Ctrl-C.  Every GET goes to the API; nothing else is answered.
   if (cmd.port < 0 || cmd.port > 65535) throw std::invalid_argument(fmt::format("--port {}: must be 0 to 65535", cmd.port));
-  const monitor::MonitorApi api(cmd.dirs);
+  // The pixel inspector runs this very binary's `trace` (monitor/pixel_trace.hpp).
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const monitor::MonitorApi api(cmd.dirs, ec ? std::filesystem::path{} : self);
   httplib::Server server;
   server.Get(".*", [&api](const httplib::Request& req, httplib::Response& res) {
     monitor::Query query;

@@ -130,8 +130,9 @@ void EventLog::append(const std::string& content) {
 }
 
 void EventLog::run_started(const RunStart& r) {
-  append(fmt::format("t={:.3f} event=run pid={} host={} ranks={} threads={} todo={} done={} size={}x{}", now_seconds(),
-                     r.pid, percent_encode(r.host), r.ranks, r.threads, r.todo, r.done_before, r.width, r.height));
+  append(fmt::format("t={:.3f} event=run pid={} host={} ranks={} threads={} todo={} done={} size={}x{} script={}",
+                     now_seconds(), r.pid, percent_encode(r.host), r.ranks, r.threads, r.todo, r.done_before, r.width,
+                     r.height, percent_encode(r.script)));
 }
 
 void EventLog::rank_joined(int rank, const std::string& host, int threads) {
@@ -211,6 +212,7 @@ EventSummary read_events(const fs::path& file, std::size_t keep) {
       r.done_before = static_cast<int>(field_long(*e, "done"));
       const std::string size = e->fields.count("size") ? e->fields.at("size") : "";
       std::sscanf(size.c_str(), "%dx%d", &r.width, &r.height);
+      r.script = e->fields.count("script") ? e->fields.at("script") : "";
       s.run = r;
     } else if (e->kind == "rank") {
       if (s.ranks.size() < 4096) s.ranks.push_back(*e);

@@ -8,7 +8,7 @@
 // carries its check (checked_line.hpp): one cut short by a crash, or being
 // written while a monitor reads, is skipped.  Lines:
 //   lightcone-events 1
-//   t=<unix s> event=run pid=<n> host=<name> ranks=<n> threads=<n> todo=<n> done=<n> size=<W>x<H>
+//   t=<unix s> event=run pid=<n> host=<name> ranks=<n> threads=<n> todo=<n> done=<n> size=<W>x<H> script=<path>
 //   t=<unix s> event=rank rank=<n> host=<name> threads=<n>          (an MPI worker joined)
 //   t=<unix s> event=progress stored=<n> total=<n> rows=<done>/<all> rays=<n> core_seconds=<s> open=<f>,<f>,...
 //   t=<unix s> event=frame frame=<n> core_seconds=<s> rays=<n>       (a frame stored)
@@ -41,6 +41,7 @@ struct RunStart {
   int ranks = 1, threads = 0;
   int todo = 0, done_before = 0;
   int width = 0, height = 0;
+  std::string script;  // the shot script, absolute (the monitor's pixel inspector traces with it)
 };
 
 class EventLog {

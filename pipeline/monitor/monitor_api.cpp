@@ -14,6 +14,7 @@
 #include "farm/event_log.hpp"
 #include "farm/frame_files.hpp"
 #include "farm/journal.hpp"
+#include "monitor/pixel_trace.hpp"
 #include "monitor_page.hpp"  // generated from monitor/page.html (pipeline/CMakeLists.txt)
 #include "video/frame_sequence.hpp"
 
@@ -92,7 +93,8 @@ std::vector<std::string> shots_in(const fs::path& dir) {
   return shots;
 }
 
-MonitorApi::MonitorApi(const std::vector<fs::path>& dirs, fs::path chart_script) : chart_script_(std::move(chart_script)) {
+MonitorApi::MonitorApi(const std::vector<fs::path>& dirs, fs::path tracer, fs::path chart_script)
+    : tracer_(std::move(tracer)), chart_script_(std::move(chart_script)) {
   for (const fs::path& d : dirs) {
     std::error_code ec;
     if (!fs::is_directory(d, ec))
@@ -117,6 +119,7 @@ Reply MonitorApi::get(const std::string& path, const Query& query) const {
     if (path == "/api/frames") return frames_reply(query);
     if (path == "/api/events") return events_reply(query);
     if (path == "/api/frame.png") return frame_png(query);
+    if (path == "/api/trace") return trace_reply(query);
     return error_reply(404, fmt::format("no such page: {}", path.substr(0, 200)));
   } catch (const BadRequest& e) {
     return error_reply(e.status, e.what());
@@ -269,6 +272,40 @@ Reply MonitorApi::frame_png(const Query& q) const {
   if (ec || end != dir.end())
     throw BadRequest(403, fmt::format("frame {} of '{}' links outside the folder: not served", frame, shot));
   return {200, "image/png", read_file(real)};
+}
+
+Reply MonitorApi::trace_reply(const Query& q) const {
+  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const long frame = number_param(q, "frame", 0, 99'999'999);
+  if (tracer_.empty()) throw BadRequest(501, "this monitor was started without the pixel inspector");
+  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  const auto line = journal.frames.find(static_cast<int>(frame));
+  if (line == journal.frames.end()) throw BadRequest(404, fmt::format("frame {} of '{}' is not finished", frame, shot));
+  const farm::FrameSettings& st = line->second.settings;
+  if (st.window.windowed())
+    throw BadRequest(409, fmt::format("frame {} is a --region of its frame: trace the whole frame's pixel with "
+                                      "`lightcone trace` instead",
+                                      frame));
+  const long x = number_param(q, "x", 0, st.width - 1), y = number_param(q, "y", 0, st.height - 1);
+  const farm::EventSummary ev = farm::read_events(farm::EventLog::file_of(dir, shot), 1);
+  if (!ev.run || ev.run->script.empty())
+    throw BadRequest(409, "the render's event log does not name its shot script (rendered by an older lightcone?)");
+  std::error_code ec;
+  if (!fs::is_regular_file(ev.run->script, ec))
+    throw BadRequest(409, fmt::format("the shot script {} is gone", ev.run->script));
+  PixelRequest r;
+  r.script = ev.run->script;
+  r.frame = static_cast<int>(frame);
+  r.x = static_cast<int>(x);
+  r.y = static_cast<int>(y);
+  r.width = st.width;
+  r.height = st.height;
+  r.camera = std::string(name_of(st.camera));
+  try {
+    return {200, "application/json", trace_pixel_json(tracer_, r)};
+  } catch (const std::runtime_error& e) {
+    throw BadRequest(422, e.what());
+  }
 }
 
 }  // namespace lc::monitor

@@ -32,9 +32,11 @@ std::vector<std::string> shots_in(const std::filesystem::path& dir);
 class MonitorApi {
  public:
   // `dirs`: the render folders to show.  Throws std::invalid_argument naming
-  // one that is not a directory.  `chart_script`: Chart.js's file
-  // (Debian's libjs-chart.js), served as /chart.js when it exists.
-  explicit MonitorApi(const std::vector<std::filesystem::path>& dirs,
+  // one that is not a directory.  `tracer`: the lightcone binary, run for
+  // the pixel inspector (monitor/pixel_trace.hpp); empty: no inspector.
+  // `chart_script`: Chart.js's file (Debian's libjs-chart.js), served as
+  // /chart.js when it exists.
+  explicit MonitorApi(const std::vector<std::filesystem::path>& dirs, std::filesystem::path tracer = {},
                       std::filesystem::path chart_script = "/usr/share/javascript/chart.js/chart.min.js");
 
   // Answers GET `path` with `query`.  Never throws: what cannot be answered
@@ -47,6 +49,7 @@ class MonitorApi {
   //   /api/frames            ?folder=N&shot=S[&from=F][&count=C]: each finished frame's cost
   //   /api/events            ?folder=N&shot=S: the latest run's last events
   //   /api/frame.png         ?folder=N&shot=S&frame=F[&preview=1]: a frame's PNG
+  //   /api/trace             ?folder=N&shot=S&frame=F&x=I&y=J: the pixel's ray, as `lightcone trace` reports it
   Reply get(const std::string& path, const Query& query) const;
 
   const std::vector<std::filesystem::path>& folders() const { return dirs_; }
@@ -57,8 +60,10 @@ class MonitorApi {
   Reply frames_reply(const Query& query) const;
   Reply events_reply(const Query& query) const;
   Reply frame_png(const Query& query) const;
+  Reply trace_reply(const Query& query) const;
 
   std::vector<std::filesystem::path> dirs_;  // canonical
+  std::filesystem::path tracer_;
   std::filesystem::path chart_script_;
 };
 

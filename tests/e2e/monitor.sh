@@ -4,8 +4,10 @@
 # interrupted and after it resumes; a real headless browser (Debian's
 # chromium) draws the page from it: the counts, a thumbnail per latest
 # frame, a point of the cost chart per finished frame (the screenshot is
-# kept as monitor.png); hostile requests get 4xx and nothing outside the
-# folder; the monitor stops on a kill.
+# kept as monitor.png); clicking a frame's pixel (Selenium) shows what
+# `lightcone trace` says of it, with its path drawn (monitor_pixel.png);
+# hostile requests get 4xx and nothing outside the folder; the monitor
+# stops on a kill.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
@@ -78,6 +80,22 @@ grep -q 'data-points="9"' page.html || fail "the cost chart has not 9 points: $(
 grep -q 'class="state done"' page.html || fail "the page's run state"
 timeout 60 "${BROWSER[@]}" --screenshot="$WORK/monitor.png" "$URL/" >/dev/null 2>>browser.log
 [ -s monitor.png ] || fail "no screenshot"
+
+# The pixel inspector: its API answers what `lightcone trace` says of the
+# pixel; in the browser, a click on a frame's pixel shows that pixel's
+# trace and draws its path.
+api "/api/trace?$Q&frame=40&x=40&y=30" >trace_api.json
+"$LIGHTCONE" trace "$FALL" --frame 40 --pixel 40,30 --size 96x54 --json >trace_cli.json 2>/dev/null || fail "trace"
+[ "$(field 'd["report"]' <trace_api.json)" = "$(field 'd' <trace_cli.json)" ] \
+  || fail "the inspector's report is not trace's: $(cat trace_api.json) vs $(cat trace_cli.json)"
+[ "$(field 'len(d["path"]) > 1' <trace_api.json)" = True ] || fail "the inspector drew no path: $(cat trace_api.json)"
+timeout 120 "$PY" "$SRC/tests/tools/monitor_click.py" "$URL/" "$WORK/monitor_pixel.png" 0.40 0.55 >click.txt 2>click.err \
+  || fail "clicking a pixel in the browser: $(tail -5 click.err)"
+read -r frame pixel points <click.txt || true
+grep -q "^pixel $pixel: hit " click.txt || fail "the page's trace report: $(cat click.txt)"
+[ "${points:-0}" -gt 1 ] || fail "the page drew no path: $(cat click.txt)"
+"$LIGHTCONE" trace "$FALL" --frame "$frame" --pixel "$pixel" --size 96x54 --json >clicked.json 2>/dev/null
+grep -q "hit $(field 'd["hit"]' <clicked.json)" click.txt || fail "the page's hit is not trace's: $(cat click.txt) vs $(cat clicked.json)"
 
 # A kill (SIGTERM; a Ctrl-C alike) stops it.
 kill -TERM "$monitor"

@@ -80,7 +80,7 @@ TEST(MonitorApi, HostileRequestsAreRefusedWithFourHundreds) {
   std::ofstream(scratch / "secret.png") << "not for the web";
   fs::remove(farm::frame_path(dir, "s", 1, "png"));
   fs::create_symlink(scratch / "secret.png", farm::frame_path(dir, "s", 1, "png"));
-  const MonitorApi api({dir}, scratch / "no-chart.js");
+  const MonitorApi api({dir}, {}, scratch / "no-chart.js");
   struct Case {
     std::string path;
     Query query;
@@ -102,6 +102,7 @@ TEST(MonitorApi, HostileRequestsAreRefusedWithFourHundreds) {
       {"/../../etc/passwd", {}, 404, "no such page"},
       {"/etc/passwd", {}, 404, "no such page"},
       {"/chart.js", {}, 404, "install Debian's libjs-chart.js"},
+      {"/api/trace", {{"folder", "0"}, {"shot", "s"}, {"frame", "0"}, {"x", "0"}, {"y", "0"}}, 501, "without the pixel inspector"},
   };
   for (const Case& c : cases) {
     const Reply r = api.get(c.path, c.query);
@@ -109,6 +110,22 @@ TEST(MonitorApi, HostileRequestsAreRefusedWithFourHundreds) {
     EXPECT_TRUE(has(r, c.says)) << c.path << ": " << r.body;
     EXPECT_FALSE(has(r, "not for the web")) << c.path;
   }
+}
+
+TEST(MonitorApi, ThePixelInspectorRefusesWhatItCannotTrace) {
+  test::ScratchDir scratch;
+  const MonitorApi api({render_folder(scratch)}, "/bin/false");
+  const auto ask = [&](const std::string& frame, const std::string& x, const std::string& y) {
+    return api.get("/api/trace", {{"folder", "0"}, {"shot", "s"}, {"frame", frame}, {"x", x}, {"y", y}});
+  };
+  EXPECT_EQ(ask("5", "0", "0").status, 404);  // not finished
+  const Reply outside = ask("0", "4", "0");   // the frames are 4x2
+  EXPECT_EQ(outside.status, 400);
+  EXPECT_TRUE(has(outside, "'x' must be a whole number from 0 to 3")) << outside.body;
+  // The folder's log was written without a script (as by the render of an older lightcone).
+  const Reply no_script = ask("0", "1", "1");
+  EXPECT_EQ(no_script.status, 409) << no_script.body;
+  EXPECT_TRUE(has(no_script, "does not name its shot script")) << no_script.body;
 }
 
 TEST(MonitorApi, ARunThatStoppedWithoutAnEndIsSaidToHaveStopped) {
