@@ -16,14 +16,15 @@ SMALL=(--size 96x54 --supersample 1 --progress 0 --frames 0:179:20)  # 9 frames 
 
 
 expect_error monitor_missing "out: not a directory" -- "$LIGHTCONE" monitor out --port 0
-mkdir -p out
-"$LIGHTCONE" monitor out --port 0 2>monitor.log &
+mkdir -p out mpi_out
+"$LIGHTCONE" monitor out mpi_out --port 0 2>monitor.log &
 monitor=$!
 for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
 URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log) || { fail "the monitor did not start: $(cat monitor.log)"; e2e_end; exit 1; }
 api() { curl -s --max-time 10 "$URL$1"; }
 field() { $PY -c "import json,sys; d=json.load(sys.stdin); print(eval(sys.argv[1]))" "$1"; }
 [ "$(api /api/folders | field 'd["folders"][0]["shots"]')" = "[]" ] || fail "an empty folder lists shots: $(api /api/folders)"
+[ "$(api /api/folders | field 'len(d["folders"])')" = 2 ] || fail "folders: $(api /api/folders)"
 
 # A render held after 130 working sets: two frames stored, the third in flight.
 LIGHTCONE_TEST_PAUSE_AFTER=130 "$LIGHTCONE" render "$FALL" --out out --threads 2 "${SMALL[@]}" 2>render.log &
@@ -96,6 +97,18 @@ grep -q "^pixel $pixel: hit " click.txt || fail "the page's trace report: $(cat 
 [ "${points:-0}" -gt 1 ] || fail "the page drew no path: $(cat click.txt)"
 "$LIGHTCONE" trace "$FALL" --frame "$frame" --pixel "$pixel" --size 96x54 --json >clicked.json 2>/dev/null
 grep -q "hit $(field 'd["hit"]' <clicked.json)" click.txt || fail "the page's hit is not trace's: $(cat click.txt) vs $(cat clicked.json)"
+
+# A render under mpirun: the page's API lists its two workers with their
+# node and threads.
+use_mpirun
+mpi 3 "$LIGHTCONE" render "$FALL" --out mpi_out --size 96x54 --supersample 1 --progress 0 --frames 0:40:20 2>mpi.log \
+  || fail "mpirun: $(cat mpi.log)"
+status=$(api "/api/status?folder=1&shot=kerr_fall")
+[ "$(field '[(w["rank"], w["host"]) for w in d["run"]["workers"]]' <<<"$status")" = "[(1, '$(hostname)'), (2, '$(hostname)')]" ] \
+  || [ "$(field '[(w["rank"], w["host"]) for w in d["run"]["workers"]]' <<<"$status")" = "[(2, '$(hostname)'), (1, '$(hostname)')]" ] \
+  || fail "the MPI run's workers: $status"
+[ "$(field 'd["run"]["ranks"], d["frames"]["done"], d["run"]["state"]' <<<"$status")" = "(3, 3, 'done')" ] \
+  || fail "the MPI run: $status"
 
 # A kill (SIGTERM; a Ctrl-C alike) stops it.
 kill -TERM "$monitor"
