@@ -6,7 +6,10 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <cstdio>
 #include <stdexcept>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -14,7 +17,10 @@
 #include "farm/event_log.hpp"
 #include "farm/frame_files.hpp"
 #include "farm/journal.hpp"
+#include "image/image_io.hpp"
+#include "monitor/layer_picture.hpp"
 #include "monitor/pixel_trace.hpp"
+#include "render/layers.hpp"
 #include "monitor_page.hpp"  // generated from monitor/page.html (pipeline/CMakeLists.txt)
 #include "video/frame_sequence.hpp"
 
@@ -120,6 +126,7 @@ Reply MonitorApi::get(const std::string& path, const Query& query) const {
     if (path == "/api/events") return events_reply(query);
     if (path == "/api/frame.png") return frame_png(query);
     if (path == "/api/trace") return trace_reply(query);
+    if (path == "/api/layer.png") return layer_png(query);
     return error_reply(404, fmt::format("no such page: {}", path.substr(0, 200)));
   } catch (const BadRequest& e) {
     return error_reply(e.status, e.what());
@@ -136,7 +143,9 @@ Reply MonitorApi::folders_reply() const {
     out += fmt::format("{}{{\"id\": {}, \"path\": {}, \"shots\": [{}]}}", i ? ", " : "", i, json_text(dirs_[i].string()),
                        shots);
   }
-  return {200, "application/json", out + "]}\n"};
+  std::string names;
+  for (const LayerSpec& l : layers) names += (names.empty() ? "" : ", ") + json_text(std::string(l.name));
+  return {200, "application/json", out + "], \"layers\": [" + names + "]}\n"};
 }
 
 namespace {
@@ -306,6 +315,40 @@ Reply MonitorApi::trace_reply(const Query& q) const {
   } catch (const std::runtime_error& e) {
     throw BadRequest(422, e.what());
   }
+}
+
+Reply MonitorApi::layer_png(const Query& q) const {
+  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const long frame = number_param(q, "frame", 0, 99'999'999);
+  const auto wanted = q.find("layer");
+  if (wanted == q.end()) throw BadRequest(400, "missing parameter 'layer'");
+  const fs::path exr = farm::frame_path(dir, shot, static_cast<int>(frame), "exr");
+  std::error_code ec;
+  if (!fs::is_regular_file(exr, ec)) throw BadRequest(404, fmt::format("frame {} of '{}' has no EXR", frame, shot));
+  const fs::path real = fs::canonical(exr, ec);
+  const auto [end, ignored] = std::mismatch(dir.begin(), dir.end(), real.begin(), real.end());
+  if (ec || end != dir.end())
+    throw BadRequest(403, fmt::format("frame {} of '{}' links outside the folder: not served", frame, shot));
+  const FrameImage image = read_exr(real);
+  FrameImage picture;
+  if (!layer_picture(image, wanted->second, picture)) {
+    std::string names;
+    for (const auto& l : image.layers) names += (names.empty() ? "" : ", ") + l.name;
+    throw BadRequest(404, names.empty() ? fmt::format("frame {} has no data layers (render with --layers)", frame)
+                                        : fmt::format("frame {} has no layer '{}'; it has {}", frame,
+                                                      wanted->second.substr(0, 100), names));
+  }
+  // Through a temporary file: the PNG writer writes by path.
+  std::string pattern = (fs::temp_directory_path() / "lightcone-layer-XXXXXX").string();
+  const int fd = ::mkstemp(pattern.data());
+  if (fd < 0) throw std::runtime_error("cannot make a temporary file for the layer's picture");
+  ::close(fd);
+  struct Remove {
+    std::string path;
+    ~Remove() { std::remove(path.c_str()); }
+  } remove{pattern};
+  write_png(pattern, picture);
+  return {200, "image/png", read_file(pattern)};
 }
 
 }  // namespace lc::monitor

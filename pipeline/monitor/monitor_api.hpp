@@ -49,6 +49,7 @@ class MonitorApi {
   //   /api/frames            ?folder=N&shot=S[&from=F][&count=C]: each finished frame's cost
   //   /api/events            ?folder=N&shot=S: the latest run's last events
   //   /api/frame.png         ?folder=N&shot=S&frame=F[&preview=1]: a frame's PNG
+  //   /api/layer.png         ?folder=N&shot=S&frame=F&layer=L: a data layer of its EXR in false colour
   //   /api/trace             ?folder=N&shot=S&frame=F&x=I&y=J: the pixel's ray, as `lightcone trace` reports it
   Reply get(const std::string& path, const Query& query) const;
 
@@ -61,6 +62,7 @@ class MonitorApi {
   Reply events_reply(const Query& query) const;
   Reply frame_png(const Query& query) const;
   Reply trace_reply(const Query& query) const;
+  Reply layer_png(const Query& query) const;
 
   std::vector<std::filesystem::path> dirs_;  // canonical
   std::filesystem::path tracer_;

@@ -128,6 +128,31 @@ TEST(MonitorApi, ThePixelInspectorRefusesWhatItCannotTrace) {
   EXPECT_TRUE(has(no_script, "does not name its shot script")) << no_script.body;
 }
 
+TEST(MonitorApi, ADataLayerIsAFalseColourPicture) {
+  test::ScratchDir scratch;
+  const fs::path dir = render_folder(scratch);
+  {
+    FrameImage with_layer = tiny();
+    with_layer.layers.push_back({"hit.g", {0.5f, 1.0f, 1.5f, 2.0f, 0.f, 1.f, 2.f, std::nanf("")}});
+    farm::FrameStore store(dir, "s");
+    store.write_frame(3, with_layer, {}, farm::FrameSettings{4, 2, 1, true, false}, "00000000000000aa", {}, {.rays = 8},
+                      Look{});
+  }
+  const MonitorApi api({dir});
+  const Reply folders = api.get("/api/folders", {});
+  EXPECT_TRUE(has(folders, "\"layers\": [\"hit.kind\", \"hit.r\", \"hit.phi\", \"hit.t\", \"hit.g\", \"hit.order\"]"))
+      << folders.body;
+  const Reply png = api.get("/api/layer.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "3"}, {"layer", "hit.g"}});
+  ASSERT_EQ(png.status, 200) << png.body;
+  EXPECT_EQ(png.body.substr(1, 3), "PNG");
+  const Reply other = api.get("/api/layer.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "3"}, {"layer", "hit.zz"}});
+  EXPECT_EQ(other.status, 404);
+  EXPECT_TRUE(has(other, "has no layer 'hit.zz'; it has hit.g")) << other.body;
+  const Reply none = api.get("/api/layer.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "0"}, {"layer", "hit.g"}});
+  EXPECT_EQ(none.status, 404);
+  EXPECT_TRUE(has(none, "render with --layers")) << none.body;
+}
+
 TEST(MonitorApi, ARunThatStoppedWithoutAnEndIsSaidToHaveStopped) {
   test::ScratchDir scratch;
   const fs::path dir = scratch / "out";
