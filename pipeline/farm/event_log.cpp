@@ -109,7 +109,8 @@ EventLog::EventLog(const fs::path& dir, const std::string& shot) : name_(file_of
     return;
   }
   struct stat st {};
-  if (::fstat(fd_, &st) == 0 && st.st_size == 0) append(std::string(header));
+  created_ = ::fstat(fd_, &st) == 0 && st.st_size == 0;
+  if (created_) append(std::string(header));
 }
 
 EventLog::~EventLog() {
@@ -156,6 +157,12 @@ void EventLog::error(const std::string& message) {
 }
 
 void EventLog::run_ended(const char* status, int stored) {
+  if (created_ && stored == 0 && fd_ >= 0) {
+    ::close(fd_);
+    fd_ = -1;
+    ::unlink(name_.c_str());
+    return;
+  }
   append(fmt::format("t={:.3f} event=end status={} stored={}", now_seconds(), status, stored));
 }
 

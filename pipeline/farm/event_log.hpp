@@ -60,6 +60,9 @@ class EventLog {
   void progress(const QueueProgress& p, const std::vector<int>& open);
   void frame_stored(int frame, double core_seconds, long rays);
   void error(const std::string& message);
+  // The run's last line.  A log this run created for a run that stored no
+  // frame is removed instead: a failed render leaves its folder as it
+  // found it (it leaves no journal either), and says its error on stderr.
   void run_ended(const char* status, int stored);
 
   // The file's name: DIR/<shot>.events.
@@ -71,6 +74,7 @@ class EventLog {
   int fd_ = -1;
   std::string name_;
   bool warned_ = false;
+  bool created_ = false;  // this run made the file
 };
 
 // Writes the queue's progress to the log every `interval` from a thread of

@@ -85,6 +85,33 @@ TEST(EventLog, OnlyALimitedTailIsHeld) {
   EXPECT_EQ(s.recent.back().fields.at("frame"), "99999");
 }
 
+TEST(EventLog, ARunThatStoredNothingLeavesNoLogItMade) {
+  test::ScratchDir dir;
+  const auto file = EventLog::file_of(dir.path(), "shot");
+  {
+    EventLog log(dir.path(), "shot");
+    log.run_started({.todo = 3});
+    log.error("frame 0: no static observer exists here");
+    log.run_ended("error", 0);
+  }
+  EXPECT_FALSE(std::filesystem::exists(file));
+  // A log kept from an earlier run stays, with this run's lines.
+  {
+    EventLog log(dir.path(), "shot");
+    log.run_started({.todo = 1});
+    log.frame_stored(0, 1.0, 1);
+    log.run_ended("done", 1);
+  }
+  {
+    EventLog log(dir.path(), "shot");
+    log.run_started({.todo = 1});
+    log.run_ended("error", 0);
+  }
+  const EventSummary s = read_events(file);
+  ASSERT_TRUE(s.end);
+  EXPECT_EQ(s.end->fields.at("status"), "error");
+}
+
 TEST(EventLog, PercentEncodingRoundTrips) {
   const std::string text = "a b%c\n\t=#é/:,+~";
   EXPECT_EQ(percent_encode(text).find_first_of(" \n\t=#"), std::string::npos);
