@@ -163,6 +163,19 @@ std::pair<fs::path, std::string> folder_and_shot(const std::vector<fs::path>& di
   return {dir, it->second};
 }
 
+// The file of a frame, links followed, if it is a regular file inside the
+// folder `dir` (canonical): 404 when there is none, 403 when it links out.
+fs::path frame_file(const fs::path& dir, const fs::path& file, long frame, const std::string& shot) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec))
+    throw BadRequest(404, fmt::format("frame {} of '{}' has no {}", frame, shot, file.extension() == ".exr" ? "EXR" : "PNG"));
+  const fs::path real = fs::canonical(file, ec);
+  const auto [end, ignored] = std::mismatch(dir.begin(), dir.end(), real.begin(), real.end());
+  if (ec || end != dir.end())
+    throw BadRequest(403, fmt::format("frame {} of '{}' links outside the folder: not served", frame, shot));
+  return real;
+}
+
 }  // namespace
 
 Reply MonitorApi::status_reply(const Query& q) const {
@@ -272,14 +285,8 @@ Reply MonitorApi::frame_png(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
   const long frame = number_param(q, "frame", 0, 99'999'999);
   const bool preview = number_param(q, "preview", 0, 1, 0) == 1;
-  const fs::path file = farm::frame_path(preview ? dir / "preview" : dir, shot, static_cast<int>(frame), "png");
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) throw BadRequest(404, fmt::format("frame {} of '{}' has no PNG", frame, shot));
-  // Links are followed only to files inside the folder.
-  const fs::path real = fs::canonical(file, ec);
-  const auto [end, ignored] = std::mismatch(dir.begin(), dir.end(), real.begin(), real.end());
-  if (ec || end != dir.end())
-    throw BadRequest(403, fmt::format("frame {} of '{}' links outside the folder: not served", frame, shot));
+  const fs::path real =
+      frame_file(dir, farm::frame_path(preview ? dir / "preview" : dir, shot, static_cast<int>(frame), "png"), frame, shot);
   return {200, "image/png", read_file(real)};
 }
 
@@ -322,14 +329,7 @@ Reply MonitorApi::layer_png(const Query& q) const {
   const long frame = number_param(q, "frame", 0, 99'999'999);
   const auto wanted = q.find("layer");
   if (wanted == q.end()) throw BadRequest(400, "missing parameter 'layer'");
-  const fs::path exr = farm::frame_path(dir, shot, static_cast<int>(frame), "exr");
-  std::error_code ec;
-  if (!fs::is_regular_file(exr, ec)) throw BadRequest(404, fmt::format("frame {} of '{}' has no EXR", frame, shot));
-  const fs::path real = fs::canonical(exr, ec);
-  const auto [end, ignored] = std::mismatch(dir.begin(), dir.end(), real.begin(), real.end());
-  if (ec || end != dir.end())
-    throw BadRequest(403, fmt::format("frame {} of '{}' links outside the folder: not served", frame, shot));
-  const FrameImage image = read_exr(real);
+  const FrameImage image = read_exr(frame_file(dir, farm::frame_path(dir, shot, static_cast<int>(frame), "exr"), frame, shot));
   FrameImage picture;
   if (!layer_picture(image, wanted->second, picture)) {
     std::string names;
