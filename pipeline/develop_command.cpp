@@ -27,11 +27,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The shot's fields a look is made of (ShotInfo::look).
-constexpr std::string_view look_fields[] = {"exposure", "view", "white_balance", "saturation", "bloom", "bloom_radius"};
-
+// Whether a shot field is one a look is made of (ShotInfo::look).
 bool is_look_field(std::string_view name) {
-  return std::find(std::begin(look_fields), std::end(look_fields), name) != std::end(look_fields);
+  return std::find(look_field_names.begin(), look_field_names.end(), name) != look_field_names.end();
 }
 
 std::string flag_of(std::string_view field) {

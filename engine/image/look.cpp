@@ -64,8 +64,8 @@ Look parse_look_text(std::string_view text) {
     const auto m = std::find_if(std::begin(number_members), std::end(number_members),
                                 [&](const NumberMember& n) { return n.name == name; });
     if (m == std::end(number_members))
-      throw std::invalid_argument(fmt::format(
-          "'{}': a look has exposure, view, white_balance, saturation, bloom and bloom_radius", part));
+      throw std::invalid_argument(
+          fmt::format("'{}': a look has {}", part, fmt::join(look_field_names, ", ")));
     double v = 0.0;
     const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
     if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v))

@@ -7,6 +7,7 @@
 // the shot's fields (ShotInfo) and a frame's own `exposure` meet here
 // (docs/light.md, "Exposure, look and view").
 
+#include <array>
 #include <string>
 #include <string_view>
 
@@ -37,6 +38,11 @@ struct Look {
 
   bool operator==(const Look&) const = default;
 };
+
+// The names of a look's members, as the shot's fields that set them are
+// named (scene/shot_info.hpp), in the order above.
+inline constexpr std::array<std::string_view, 6> look_field_names = {"exposure",   "view",  "white_balance",
+                                                                     "saturation", "bloom", "bloom_radius"};
 
 // A look as one word, for the journal (which `lightcone develop` reads to
 // make a frame's PNG again): the members that differ from Look{}, as
