@@ -49,6 +49,13 @@ int run_monitor(const MonitorCommand& cmd) {
   server.Delete(".*", refuse);
   server.Patch(".*", refuse);
   server.set_payload_max_length(64 * 1024);
+  // httplib's default also sets SO_REUSEPORT, with which a second monitor
+  // on a port in use would share it silently (each answering some of the
+  // requests): only SO_REUSEADDR, so a port in use is refused.
+  server.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
 
   const int port = cmd.port == 0 ? server.bind_to_any_port(cmd.bind) : (server.bind_to_port(cmd.bind, cmd.port) ? cmd.port : -1);
   if (port < 0)

@@ -22,6 +22,9 @@ monitor=$!
 for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
 URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log) || { fail "the monitor did not start: $(cat monitor.log)"; e2e_end; exit 1; }
 api() { curl -s --max-time 10 "$URL$1"; }
+# A port in use is refused naming it; a bad port never reaches the network.
+expect_error port_in_use "--port ${URL##*:}: cannot listen there" -- "$LIGHTCONE" monitor out --port "${URL##*:}"
+expect_error port_range "--port" -- "$LIGHTCONE" monitor out --port 70000
 field() { $PY -c "import json,sys; d=json.load(sys.stdin); print(eval(sys.argv[1]))" "$1"; }
 [ "$(api /api/folders | field 'd["folders"][0]["shots"]')" = "[]" ] || fail "an empty folder lists shots: $(api /api/folders)"
 [ "$(api /api/folders | field 'len(d["folders"])')" = 2 ] || fail "folders: $(api /api/folders)"
