@@ -2,7 +2,9 @@
 
 #include <csignal>
 #include <cmath>
+#include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include <unistd.h>
@@ -106,9 +108,12 @@ class WorkerStop {
   ~WorkerStop() { now(); }
   WorkerStop(const WorkerStop&) = delete;
   WorkerStop& operator=(const WorkerStop&) = delete;
-  void now() {
-    if (mpi_ && !done_) farm::stop_mpi_workers(*mpi_);
+  // The workers given up as lost (farm::stop_mpi_workers).
+  std::vector<int> now(const std::optional<farm::GiveUp>& give_up = std::nullopt) {
+    std::vector<int> lost;
+    if (mpi_ && !done_) lost = farm::stop_mpi_workers(*mpi_, give_up);
     done_ = true;
+    return lost;
   }
 
  private:
@@ -196,14 +201,27 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   const double cpu_at_start = process_cpu_seconds();
   std::optional<std::string> error;
   int interrupted = 0;
+  std::map<int, std::string> lost;  // workers given up, with their nodes
   {
     // The MPI master has its cores to itself but for a worker's share:
     // writing frames in parallel keeps up with many workers.
     farm::FarmRun run(queue, sink, mpi ? farm::master_writer_threads : 1, [&interrupts] { return interrupts.signal(); });
-    const farm::ProgressEvents progress_events(events, queue);
+    farm::RankBoard board;
+    const farm::ProgressEvents progress_events(events, queue, mpi ? &board : nullptr);
     if (mpi) {
-      cores = farm::run_mpi_master(*mpi, queue, run, progress, job.digest, &events).worker_threads;
-      stop_workers.now();
+      const farm::MasterReport report = farm::run_mpi_master(*mpi, queue, run, progress, job.digest, &events, &board);
+      cores = report.worker_threads;
+      // A signal may be a launcher ending the job because a rank died: a
+      // worker that does not answer then is lost, not waited for.
+      std::optional<farm::GiveUp> give_up;
+      if (run.interrupted()) {
+        give_up.emplace();
+        for (const auto& [rank, host] : report.hosts) give_up->joined.push_back(rank);
+      }
+      for (const int rank : stop_workers.now(give_up)) {
+        lost[rank] = report.hosts.at(rank);
+        events.rank_lost(rank, lost[rank]);
+      }
     } else {
       // Enough scenes for every frame that can be open at once.
       farm::SceneCache scenes(*job.shot, job.rs.width, job.rs.height,
@@ -232,6 +250,12 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     fmt::print(stderr, "render: interrupted by {}: {} of {} frames done ({} in this run); run the same command again to resume\n",
                signal_name(interrupted), plan.done.size() + static_cast<std::size_t>(p.frames_stored), job.frames.size(),
                p.frames_stored);
+    for (const auto& [rank, host] : lost)
+      fmt::print(stderr,
+                 "render: rank {} (on {}) was lost: it did not answer the master's stop within {} ms (killed, out of "
+                 "memory, or its node failed); the frames it held are rendered when the same command resumes\n",
+                 rank, host, farm::answer_stop_within.count());
+    if (!lost.empty()) mpi->end_with_abort(128 + interrupted);
     return 128 + interrupted;
   }
   const double s = progress.elapsed();

@@ -140,12 +140,16 @@ void EventLog::rank_joined(int rank, const std::string& host, int threads) {
   append(fmt::format("t={:.3f} event=rank rank={} host={} threads={}", now_seconds(), rank, percent_encode(host), threads));
 }
 
-void EventLog::progress(const QueueProgress& p, const std::vector<int>& open) {
+void EventLog::rank_lost(int rank, const std::string& host) {
+  append(fmt::format("t={:.3f} event=lost rank={} host={}", now_seconds(), rank, percent_encode(host)));
+}
+
+void EventLog::progress(const QueueProgress& p, const std::vector<int>& open, const std::vector<RankHolding>* held) {
   std::string frames;
   for (std::size_t k = 0; k < open.size() && k < 64; ++k) frames += (k ? "," : "") + std::to_string(open[k]);
-  append(fmt::format("t={:.3f} event=progress stored={} total={} rows={}/{} rays={} core_seconds={:.3f} open={}",
+  append(fmt::format("t={:.3f} event=progress stored={} total={} rows={}/{} rays={} core_seconds={:.3f} open={}{}",
                      now_seconds(), p.frames_stored, p.frames_total, p.rows_done, p.rows_total, p.stats.rays,
-                     p.stats.seconds, frames));
+                     p.stats.seconds, frames, held ? " held=" + format_holdings(*held) : ""));
 }
 
 void EventLog::frame_stored(int frame, double core_seconds, long rays) {
@@ -166,12 +170,19 @@ void EventLog::run_ended(const char* status, int stored) {
   append(fmt::format("t={:.3f} event=end status={} stored={}", now_seconds(), status, stored));
 }
 
-ProgressEvents::ProgressEvents(EventLog& log, const WorkQueue& queue, std::chrono::milliseconds interval)
-    : log_(log), queue_(queue) {
+ProgressEvents::ProgressEvents(EventLog& log, const WorkQueue& queue, const RankBoard* board,
+                               std::chrono::milliseconds interval)
+    : log_(log), queue_(queue), board_(board) {
   thread_ = std::thread([this, interval] {
     std::unique_lock lock(mutex_);
-    while (!stop_.wait_for(lock, interval, [this] { return stopping_; })) log_.progress(queue_.progress(), queue_.open_frames());
+    while (!stop_.wait_for(lock, interval, [this] { return stopping_; })) write();
   });
+}
+
+void ProgressEvents::write() {
+  if (!board_) return log_.progress(queue_.progress(), queue_.open_frames());
+  const std::vector<RankHolding> held = board_->holdings();
+  log_.progress(queue_.progress(), queue_.open_frames(), &held);
 }
 
 ProgressEvents::~ProgressEvents() {
@@ -181,7 +192,7 @@ ProgressEvents::~ProgressEvents() {
   }
   stop_.notify_all();
   thread_.join();
-  log_.progress(queue_.progress(), queue_.open_frames());
+  write();
 }
 
 EventSummary read_events(const fs::path& file, std::size_t keep) {
@@ -223,6 +234,8 @@ EventSummary read_events(const fs::path& file, std::size_t keep) {
       s.run = r;
     } else if (e->kind == "rank") {
       if (s.ranks.size() < 4096) s.ranks.push_back(*e);
+    } else if (e->kind == "lost") {
+      if (s.lost.size() < 4096) s.lost.push_back(static_cast<int>(field_long(*e, "rank")));
     } else if (e->kind == "progress") {
       s.progress = *e;
     } else if (e->kind == "frame") {

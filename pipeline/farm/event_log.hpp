@@ -11,6 +11,8 @@
 //   t=<unix s> event=run pid=<n> host=<name> ranks=<n> threads=<n> todo=<n> done=<n> size=<W>x<H> script=<path>
 //   t=<unix s> event=rank rank=<n> host=<name> threads=<n>          (an MPI worker joined)
 //   t=<unix s> event=progress stored=<n> total=<n> rows=<done>/<all> rays=<n> core_seconds=<s> open=<f>,<f>,...
+//              [held=<rank>:<sets>:<f>+<f>...,...]                   (an MPI farm: what each worker holds)
+//   t=<unix s> event=lost rank=<n> host=<name>                      (a worker that stopped answering)
 //   t=<unix s> event=frame frame=<n> core_seconds=<s> rays=<n>       (a frame stored)
 //   t=<unix s> event=error message=<percent-encoded text>
 //   t=<unix s> event=end status=<done|interrupted|error> stored=<n>
@@ -29,6 +31,7 @@
 #include <thread>
 #include <vector>
 
+#include "farm/rank_board.hpp"
 #include "farm/work_queue.hpp"
 
 namespace lc::farm {
@@ -56,8 +59,12 @@ class EventLog {
 
   void run_started(const RunStart& run);
   void rank_joined(int rank, const std::string& host, int threads);
-  // `open`: the frames in flight (WorkQueue::open_frames).
-  void progress(const QueueProgress& p, const std::vector<int>& open);
+  // A worker did not answer the master's stop in time: it was killed or its
+  // node failed (docs/monitor.md).
+  void rank_lost(int rank, const std::string& host);
+  // `open`: the frames in flight (WorkQueue::open_frames); `held`: what
+  // each MPI worker holds (none for a local farm).
+  void progress(const QueueProgress& p, const std::vector<int>& open, const std::vector<RankHolding>* held = nullptr);
   void frame_stored(int frame, double core_seconds, long rays);
   void error(const std::string& message);
   // The run's last line.  A log this run created for a run that stored no
@@ -77,19 +84,23 @@ class EventLog {
   bool created_ = false;  // this run made the file
 };
 
-// Writes the queue's progress to the log every `interval` from a thread of
-// its own while alive, and once more when destroyed: what a monitor shows
-// of the frames in flight and the rays traced between frames.
+// Writes the queue's progress (and the board's holdings, for an MPI farm)
+// to the log every `interval` from a thread of its own while alive, and
+// once more when destroyed: what a monitor shows of the frames in flight
+// and the rays traced between frames.
 class ProgressEvents {
  public:
-  ProgressEvents(EventLog& log, const WorkQueue& queue, std::chrono::milliseconds interval = std::chrono::seconds(2));
+  ProgressEvents(EventLog& log, const WorkQueue& queue, const RankBoard* board = nullptr,
+                 std::chrono::milliseconds interval = std::chrono::seconds(2));
   ~ProgressEvents();
   ProgressEvents(const ProgressEvents&) = delete;
   ProgressEvents& operator=(const ProgressEvents&) = delete;
 
  private:
+  void write();
   EventLog& log_;
   const WorkQueue& queue_;
+  const RankBoard* board_;
   std::mutex mutex_;
   std::condition_variable stop_;
   bool stopping_ = false;
@@ -99,7 +110,7 @@ class ProgressEvents {
 // One event as read back.
 struct Event {
   double time = 0.0;
-  std::string kind;                           // run, rank, progress, frame, error, end
+  std::string kind;                           // run, rank, progress, frame, lost, error, end
   std::map<std::string, std::string> fields;  // the rest, decoded
 };
 
@@ -110,6 +121,7 @@ struct Event {
 struct EventSummary {
   std::optional<RunStart> run;              // the latest run, if any
   std::vector<Event> ranks;                 // its workers
+  std::vector<int> lost;                    // its workers given up as lost
   std::optional<Event> progress;            // its latest progress line
   std::optional<Event> end;                 // how it ended, if it has
   std::deque<Event> recent;                 // its last `keep` events, oldest first

@@ -1,5 +1,6 @@
 #include "farm/mpi_master.hpp"
 
+#include <algorithm>
 #include <thread>
 #include <vector>
 
@@ -25,7 +26,7 @@ struct WorkerState {
 }  // namespace
 
 MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& run, Progress& progress,
-                            std::uint64_t digest, EventLog* events) {
+                            std::uint64_t digest, EventLog* events, RankBoard* board) {
   MasterReport report;
   std::vector<WorkerState> workers(static_cast<std::size_t>(mpi.size()));
 
@@ -44,7 +45,9 @@ MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& ru
         w.hello = true;
         ++report.workers;
         report.worker_threads += h.threads;
+        report.hosts[m.source] = h.host;
         if (events) events->rank_joined(m.source, h.host, h.threads);
+        if (board) board->joined(m.source);
         queue.set_max_open_frames(open_frames_for(report.worker_threads, queue.layout().stripes()));
         return;
       }
@@ -54,6 +57,7 @@ MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& ru
       case Tag::result: {
         const WorkItem item = result_item(m.data);
         const RenderStats stats = unpack_result(m.data, queue.canvas(item), queue.layout().rows(item.stripe));
+        if (board) board->returned(m.source, item);
         run.finish(item, stats);
         return;
       }
@@ -82,6 +86,7 @@ MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& ru
       else
         break;
     if (!items.empty()) {
+      if (board) board->handed(r, items);
       mpi_send(r, Tag::work, pack_items(items));
       w.wanted = 0;
     } else if (queue.drained() || queue.stopped()) {
@@ -108,17 +113,39 @@ MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& ru
   return report;
 }
 
-void stop_mpi_workers(const MpiSession& mpi) {
+std::vector<int> stop_mpi_workers(const MpiSession& mpi, const std::optional<GiveUp>& give_up) {
   const Bytes none;
   for (int r = 1; r < mpi.size(); ++r) mpi_send(r, Tag::stop, none);
+  std::vector<char> answered(static_cast<std::size_t>(mpi.size()), 0);
+  answered[0] = 1;
   int left = mpi.size() - 1;
+  const auto deadline = std::chrono::steady_clock::now() + answer_stop_within;
   while (left > 0) {
     if (auto m = mpi_poll(MPI_ANY_SOURCE)) {
-      if (m->tag == Tag::bye) --left;
-    } else {
-      std::this_thread::sleep_for(idle_sleep);
+      if (m->tag == Tag::bye && !answered[static_cast<std::size_t>(m->source)]) {
+        answered[static_cast<std::size_t>(m->source)] = 1;
+        --left;
+      }
+      continue;
     }
+    if (give_up && std::chrono::steady_clock::now() > deadline) {
+      // Still waiting only for joined ranks: they are lost.  Any other
+      // (one still loading its job) is waited for.
+      std::vector<int> lost;
+      bool only_joined = true;
+      for (int r = 1; r < mpi.size(); ++r) {
+        if (answered[static_cast<std::size_t>(r)]) continue;
+        const bool joined = std::find(give_up->joined.begin(), give_up->joined.end(), r) != give_up->joined.end();
+        if (joined)
+          lost.push_back(r);
+        else
+          only_joined = false;
+      }
+      if (only_joined) return lost;
+    }
+    std::this_thread::sleep_for(idle_sleep);
   }
+  return {};
 }
 
 }  // namespace lc::farm

@@ -4,18 +4,25 @@
 // progress.  It polls with MPI_Iprobe and sleeps a millisecond when idle,
 // so a waiting master costs next to no CPU.
 
+#include <chrono>
 #include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "farm/event_log.hpp"
 #include "farm/farm_run.hpp"
 #include "farm/mpi_session.hpp"
 #include "farm/progress.hpp"
+#include "farm/rank_board.hpp"
 
 namespace lc::farm {
 
 struct MasterReport {
   int workers = 0;         // ranks that said hello
   int worker_threads = 0;  // their render threads, summed
+  std::map<int, std::string> hosts;  // each of them: its node
 };
 
 // Runs until every frame is stored or the run fails (a worker's error, a
@@ -23,14 +30,29 @@ struct MasterReport {
 // (a signal here or on a worker).  Errors end up in run.error(), signals in
 // run.interrupted().  The workers are still waiting afterwards:
 // stop_mpi_workers.
-// Each worker that joins is written to `events` (may be null).
+// Each worker that joins is written to `events` (may be null), and what
+// each holds to `board` (may be null).
 MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& run, Progress& progress,
-                            std::uint64_t digest, EventLog* events = nullptr);
+                            std::uint64_t digest, EventLog* events = nullptr, RankBoard* board = nullptr);
+
+// How long a worker that joined may take to answer the stop before it is
+// given up as lost.  Its MPI thread polls every millisecond and says
+// goodbye before its render threads finish their sets, so only a dead
+// process (or node) stays silent this long.  Short, because a launcher
+// that lost a rank gives the others little time: Open MPI's mpirun sends
+// SIGTERM and then SIGKILL a second later.
+inline constexpr std::chrono::milliseconds answer_stop_within{500};
 
 // Tells every worker to stop and waits until each has said goodbye
 // (discarding whatever else they send).  Call it once on every way out of
 // the master, also when it fails before its loop (a locked directory, a
-// refused resume).
-void stop_mpi_workers(const MpiSession& mpi);
+// refused resume).  Without `give_up`, waits as long as it takes (a rank
+// still loading its job answers when it is ready).  With it, the ranks of
+// `give_up->joined` that have not answered within `answer_stop_within` are
+// no longer waited for and are returned: lost.
+struct GiveUp {
+  std::vector<int> joined;
+};
+std::vector<int> stop_mpi_workers(const MpiSession& mpi, const std::optional<GiveUp>& give_up = std::nullopt);
 
 }  // namespace lc::farm

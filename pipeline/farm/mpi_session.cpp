@@ -75,7 +75,9 @@ bool MpiSession::broadcast_from_master(bool value) const {
 }
 
 MpiSession::~MpiSession() {
-  if (active_) MPI_Finalize();
+  if (!active_) return;
+  if (abort_code_ >= 0) MPI_Abort(MPI_COMM_WORLD, abort_code_);
+  MPI_Finalize();
 }
 
 }  // namespace lc::farm

@@ -36,7 +36,13 @@ class MpiSession {
   // Whether the environment says an MPI launcher started us.
   static bool launched();
 
+  // A worker was lost (farm/mpi_master.hpp): MPI_Finalize would wait for it
+  // forever, so the session ends the job with MPI_Abort(`code`) instead.
+  // Const like the rest: it changes nothing but how the session ends.
+  void end_with_abort(int code) const { abort_code_ = code; }
+
  private:
+  mutable int abort_code_ = -1;
   bool active_ = false;
   int rank_ = 0, size_ = 1, workers_on_node_ = 1;
 };

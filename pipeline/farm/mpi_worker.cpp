@@ -136,9 +136,11 @@ int run_mpi_worker(const MpiSession& /*mpi*/, StripeRenderer* renderer, const Re
   }
   s.inbox.clear();
   lock.unlock();
-  for (auto& t : pool) t.join();  // each finishes the set it is on; results are dropped
+  // Goodbye first: the master takes a worker that does not answer its
+  // stop at once for lost (mpi_master.hpp).
   out.post(0, Tag::bye, Bytes{});
   out.drain();
+  for (auto& t : pool) t.join();  // each finishes the set it is on; results are dropped
   return interrupted;
 }
 

@@ -219,13 +219,24 @@ Reply MonitorApi::status_reply(const Query& q) const {
     std::string state = ev.end ? ev.end->fields.count("status") ? ev.end->fields.at("status") : "done"
                                : (now_seconds() - last > silent_after_seconds ? "stopped" : "running");
     int threads = r.threads;
+    // Each worker's state: lost (the master gave up on it), else the run's
+    // while it is not running, else working or waiting by what it holds.
+    const auto held = ev.progress && ev.progress->fields.count("held") ? farm::parse_holdings(ev.progress->fields.at("held"))
+                                                                       : std::vector<farm::RankHolding>{};
     std::string workers;
     for (const farm::Event& w : ev.ranks) {
       const int t = std::atoi(w.fields.count("threads") ? w.fields.at("threads").c_str() : "0");
+      const int rank = std::atoi(w.fields.count("rank") ? w.fields.at("rank").c_str() : "0");
       threads += t;
-      workers += fmt::format("{}{{\"rank\": {}, \"host\": {}, \"threads\": {}}}", workers.empty() ? "" : ", ",
-                             w.fields.count("rank") ? w.fields.at("rank") : "0",
-                             json_text(w.fields.count("host") ? w.fields.at("host") : ""), t);
+      farm::RankHolding h{rank, 0, {}};
+      for (const farm::RankHolding& x : held)
+        if (x.rank == rank) h = x;
+      const bool lost = std::find(ev.lost.begin(), ev.lost.end(), rank) != ev.lost.end();
+      const std::string rank_state = lost ? "lost" : state != "running" ? state : h.sets > 0 ? "working" : "waiting";
+      workers += fmt::format("{}{{\"rank\": {}, \"host\": {}, \"threads\": {}, \"state\": {}, \"sets\": {}, "
+                             "\"frames\": {}}}",
+                             workers.empty() ? "" : ", ", rank, json_text(w.fields.count("host") ? w.fields.at("host") : ""),
+                             t, json_text(rank_state), h.sets, json_list(h.frames));
     }
     if (state == "running" && ev.progress && ev.progress->fields.count("open")) {
       std::istringstream open(ev.progress->fields.at("open"));

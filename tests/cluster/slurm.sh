@@ -13,6 +13,9 @@
 #      frame is rendered twice, the frames are byte-identical: under srun,
 #      under mpirun, and with the master first killed by SIGKILL (it leaves
 #      its lock file, which must not block the resubmission).
+#   2b. `lightcone monitor` on a job: its ranks on the page (API and
+#      chromium) while it runs; rank 2 killed by SIGKILL shows lost, the
+#      resubmission resumes.
 #   3. sbatch of tests/cluster/showcase-pmix.sbatch: the showcase at preview
 #      quality as one job; its videos, and its frames byte-identical to a
 #      1-thread run.
@@ -54,9 +57,11 @@ DAEMONS=()  # "name pid" of each daemon this test started
 MOUNTED=()  # what this test mounted, innermost last
 JOBS_SUBMITTED=0
 
+MONITOR=""  # the pid of section 2b's monitor while it runs
 teardown() {
   local rc=$?
   set +e
+  [ -n "$MONITOR" ] && kill "$MONITOR" 2>/dev/null
   if [ "$JOBS_SUBMITTED" -gt 0 ] && [ -n "${SLURM_CONF:-}" ]; then
     # Every job on this private cluster is ours.
     jobs=$(squeue -h -o %i 2>/dev/null)
@@ -274,19 +279,23 @@ fi
 # 2. scancel mid-render, then sbatch again.  Each worker holds its sets after
 # 40 (two frames' worth together: a frame is certainly stored), so the job
 # is still running when it is cancelled.
-# master_pid JOB: the pid of the job's rank 0, the master.
-master_pid() {
+# rank_pid JOB RANK: the pid of the job's rank RANK (0: the master).
+rank_pid() {
   local p
   for p in /proc/[0-9]*; do
     [ "$(cat "$p/comm" 2>/dev/null)" = lightcone ] || continue
     tr '\0' '\n' <"$p/environ" 2>/dev/null | grep -qx "SLURM_JOB_ID=$1" || continue
-    tr '\0' '\n' <"$p/environ" 2>/dev/null | grep -Eqx "(OMPI_COMM_WORLD_RANK|PMIX_RANK)=0" || continue
+    tr '\0' '\n' <"$p/environ" 2>/dev/null | grep -Eqx "(OMPI_COMM_WORLD_RANK|PMIX_RANK)=$2" || continue
     echo "${p#/proc/}"
     return
   done
 }
-# cancel_round NAME SCRIPT HOW: HOW is scancel, or kill-master (SIGKILL to
-# the master, as the OOM killer would; the job must end by itself).
+# What a round checks of a monitor, if it watches one (section 2b).
+on_paused() { :; }
+on_stopped() { :; }
+# cancel_round NAME SCRIPT HOW: HOW is scancel, or kill-master / kill-worker
+# (SIGKILL to the master or to rank 2, as the OOM killer would; the job must
+# end by itself).
 cancel_round() {
   local name="$1" script="$2" how="$3" s
   LOCK_LEFT=unknown  # yes or no once the job is cancelled
@@ -303,14 +312,16 @@ cancel_round() {
     sleep 0.25
   done
   [ -n "$ok" ] || { fail "$name: the job did not pause ($(job_field "$JOB" JobState)): $(cat "$name.log" 2>/dev/null)"; return; }
-  if [ "$how" = kill-master ]; then
-    local master
-    master=$(master_pid "$JOB")
-    [ -n "$master" ] || { fail "$name: no master process (rank 0) of job $JOB found"; return; }
-    kill -KILL "$master"
+  on_paused "$name"
+  if [ "$how" = kill-master ] || [ "$how" = kill-worker ]; then
+    local rank=0 victim
+    [ "$how" = kill-worker ] && rank=2
+    victim=$(rank_pid "$JOB" "$rank")
+    [ -n "$victim" ] || { fail "$name: no process of rank $rank of job $JOB found"; return; }
+    kill -KILL "$victim"
     # Slurm's PMIx plugin aborts the step when a task dies: no scancel.
     s=$(wait_job "$JOB" 60)
-    [ "$s" = FAILED ] || fail "$name: after the master was killed: $s: $(cat "$name.log")"
+    [ "$s" = FAILED ] || fail "$name: after rank $rank was killed: $s: $(cat "$name.log")"
   else
     scancel "$JOB"
     s=$(wait_job "$JOB" 60)
@@ -322,6 +333,7 @@ cancel_round() {
   check_journal "$name"
   if ls "$name" | grep -q tmp; then fail "$name: temporaries left after the cancel: $(ls "$name")"; fi
   cp "$name.log" "$name.cancelled.log"
+  on_stopped "$name"
   LOCK_LEFT=no
   [ -e "$name/lightcone.lock" ] && LOCK_LEFT=yes
   run_job "$name.resume" "$script" "$name" "${ARGS[@]}"
@@ -343,6 +355,61 @@ cancel_round cancel_mpirun render-mpirun.sbatch scancel
 # next job (the kernel dropped the flock with the process).
 cancel_round kill render-pmix.sbatch kill-master
 [ "$LOCK_LEFT" != no ] || fail "kill: no lock file was left by the killed master, so this round tested nothing"
+
+# 2b. `lightcone monitor` on a job's folder (docs/monitor.md): the job's
+# three ranks on its page while it runs, each worker with what it holds;
+# then rank 2 killed outright, which the master names and the page shows
+# lost; the resubmitted job resumes and the page shows it done.
+mkdir -p "$WORK/lost"
+"$LIGHTCONE" monitor "$WORK/lost" --port 0 2>monitor.log &
+MONITOR=$!
+for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
+URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log || true)
+status() { curl -s --max-time 10 "$URL/api/status?folder=0&shot=farm_orbit"; }
+field() { $PY -c "import json,sys; d=json.load(sys.stdin); print(eval(sys.argv[1]))" "$1"; }
+BROWSER=(chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1200,800 --virtual-time-budget=6000)
+on_paused() {
+  sleep 2.5  # a progress line (every 2 s) says what each worker holds
+  local st
+  st=$(status)
+  [ "$(field 'd["run"]["ranks"], d["run"]["state"]' <<<"$st")" = "(3, 'running')" ] || fail "monitor: the job's run: $st"
+  [ "$(field 'sorted((w["rank"], w["host"], w["state"], w["sets"] > 0) for w in d["run"]["workers"])' <<<"$st")" = \
+    "[(1, '$(hostname)', 'working', True), (2, '$(hostname)', 'working', True)]" ] || fail "monitor: the job's workers: $st"
+  if command -v chromium >/dev/null; then
+    timeout 60 "${BROWSER[@]}" --dump-dom "$URL/" >page_slurm.html 2>browser.log || fail "chromium: $(tail -3 browser.log)"
+    [ "$(grep -o '<tr class="rank working"' page_slurm.html | wc -l)" = 2 ] ||
+      fail "monitor: the page does not show the job's two workers working: $(grep -o '<tr class="rank[^>]*>' page_slurm.html)"
+    timeout 60 "${BROWSER[@]}" --screenshot="$WORK/monitor_slurm.png" "$URL/" >/dev/null 2>>browser.log || fail "chromium's screenshot"
+  fi
+}
+on_stopped() {
+  # (Its words on stderr may not reach the job's log: mpirun is ending
+  # the job.  Its event log is written directly.)
+  grep -q " event=lost rank=2 host=$(hostname) " "$1/farm_orbit.events" ||
+    fail "$1: the master did not log the lost rank: $(cat "$1/farm_orbit.events")"
+  local st
+  st=$(status)
+  [ "$(field 'sorted((w["rank"], w["state"]) for w in d["run"]["workers"])' <<<"$st")" = "[(1, 'interrupted'), (2, 'lost')]" ] ||
+    fail "monitor: after rank 2 was killed: $st"
+  if command -v chromium >/dev/null; then
+    timeout 60 "${BROWSER[@]}" --dump-dom "$URL/" >page_lost.html 2>>browser.log || fail "chromium: $(tail -3 browser.log)"
+    grep -q '<tr class="rank lost" data-rank="2"' page_lost.html ||
+      fail "monitor: the page does not show rank 2 lost: $(grep -o '<tr class="rank[^>]*>' page_lost.html)"
+    timeout 60 "${BROWSER[@]}" --screenshot="$WORK/monitor_slurm_lost.png" "$URL/" >/dev/null 2>>browser.log || fail "chromium's screenshot"
+  fi
+}
+if [ -n "$URL" ]; then
+  # Under mpirun: Slurm's PMIx plugin answers a task's death under srun
+  # with SIGKILL to every task at once, so no rank can say which one died
+  # (docs/monitor.md); mpirun first sends SIGTERM.
+  cancel_round lost render-mpirun.sbatch kill-worker
+  [ "$(status | field 'd["frames"]["done"], d["run"]["state"]')" = "(10, 'done')" ] || fail "monitor: the resumed job: $(status)"
+else
+  fail "the monitor did not start: $(cat monitor.log)"
+fi
+on_paused() { :; }
+on_stopped() { :; }
+kill "$MONITOR" 2>/dev/null || true
 
 # 3. The showcase as one job, at preview quality (a tiny size and rate, to
 # stay quick): its videos, and frames byte-identical to a 1-thread run.

@@ -6,8 +6,9 @@
 # frame, a point of the cost chart per finished frame (the screenshot is
 # kept as monitor.png); clicking a frame's pixel (Selenium) shows what
 # `lightcone trace` says of it, with its path drawn (monitor_pixel.png);
-# hostile requests get 4xx and nothing outside the folder; the monitor
-# stops on a kill.
+# hostile requests get 4xx and nothing outside the folder; an MPI run's
+# workers and what each holds, and one of them lost when it is killed
+# (docs/monitor.md); the monitor stops on a kill.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
@@ -19,6 +20,8 @@ expect_error monitor_missing "out: not a directory" -- "$LIGHTCONE" monitor out 
 mkdir -p out mpi_out
 "$LIGHTCONE" monitor out mpi_out --port 0 2>monitor.log &
 monitor=$!
+# The monitor holds the test's output open: it must not outlive the script.
+trap 'kill "$monitor" 2>/dev/null || true' EXIT
 for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
 URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log) || { fail "the monitor did not start: $(cat monitor.log)"; e2e_end; exit 1; }
 api() { curl -s --max-time 10 "$URL$1"; }
@@ -82,7 +85,7 @@ grep -q 'data-count="to_do">0<' page.html || fail "the page's to do"
 [ "$(grep -o '<figure data-frame=' page.html | wc -l)" = 8 ] || fail "the page shows $(grep -o '<figure data-frame=' page.html | wc -l) thumbnails, not the 8 latest"
 grep -q 'data-points="9"' page.html || fail "the cost chart has not 9 points: $(grep -o 'data-points="[0-9]*"' page.html)"
 grep -q 'class="state done"' page.html || fail "the page's run state"
-timeout 60 "${BROWSER[@]}" --screenshot="$WORK/monitor.png" "$URL/" >/dev/null 2>>browser.log
+timeout 60 "${BROWSER[@]}" --screenshot="$WORK/monitor.png" "$URL/" >/dev/null 2>>browser.log || fail "chromium's screenshot: $(tail -3 browser.log)"
 [ -s monitor.png ] || fail "no screenshot"
 
 # The pixel inspector: its API answers what `lightcone trace` says of the
@@ -101,17 +104,49 @@ grep -q "^pixel $pixel: hit " click.txt || fail "the page's trace report: $(cat 
 "$LIGHTCONE" trace "$FALL" --frame "$frame" --pixel "$pixel" --size 96x54 --json >clicked.json 2>/dev/null
 grep -q "hit $(field 'd["hit"]' <clicked.json)" click.txt || fail "the page's hit is not trace's: $(cat click.txt) vs $(cat clicked.json)"
 
-# A render under mpirun: the page's API lists its two workers with their
-# node and threads.
+# A render under mpirun, each worker held after 60 working sets (two
+# frames stored, the third in flight): the page lists its two workers with
+# their node, threads and what each holds.  Then rank 2 is killed outright
+# (SIGKILL, as the OOM killer would): mpirun ends the job, the master names
+# the rank it lost, and the page shows it lost; the same command resumes
+# and finishes, no frame rendered twice.
 use_mpirun
-mpi 3 "$LIGHTCONE" render "$FALL" --out mpi_out --size 96x54 --supersample 1 --progress 0 --frames 0:40:20 2>mpi.log \
-  || fail "mpirun: $(cat mpi.log)"
-status=$(api "/api/status?folder=1&shot=kerr_fall")
-[ "$(field '[(w["rank"], w["host"]) for w in d["run"]["workers"]]' <<<"$status")" = "[(1, '$(hostname)'), (2, '$(hostname)')]" ] \
-  || [ "$(field '[(w["rank"], w["host"]) for w in d["run"]["workers"]]' <<<"$status")" = "[(2, '$(hostname)'), (1, '$(hostname)')]" ] \
-  || fail "the MPI run's workers: $status"
-[ "$(field 'd["run"]["ranks"], d["frames"]["done"], d["run"]["state"]' <<<"$status")" = "(3, 3, 'done')" ] \
-  || fail "the MPI run: $status"
+MQ="folder=1&shot=kerr_fall"
+MPI_ARGS=(--size 96x54 --supersample 1 --progress 0 --frames 0:100:20)  # 6 frames
+LIGHTCONE_TEST_PAUSE_AFTER=60 mpi 3 "$LIGHTCONE" render "$FALL" --out mpi_out "${MPI_ARGS[@]}" 2>mpi.log &
+mpijob=$!
+for _ in $(seq 1 1200); do
+  [ "$(grep -c 'test pause: pid' mpi.log || true)" -ge 2 ] && break
+  kill -0 "$mpijob" 2>/dev/null || break
+  sleep 0.05
+done
+sleep 2.5  # a progress line (every 2 s) says what each worker holds
+status=$(api "/api/status?$MQ")
+[ "$(field 'sorted((w["rank"], w["host"], w["state"]) for w in d["run"]["workers"])' <<<"$status")" = \
+  "[(1, '$(hostname)', 'working'), (2, '$(hostname)', 'working')]" ] || fail "the MPI run's workers: $status"
+[ "$(field 'all(w["sets"] > 0 and w["frames"] for w in d["run"]["workers"])' <<<"$status")" = True ] \
+  || fail "the MPI workers hold nothing: $status"
+[ "$(field 'd["run"]["ranks"], d["run"]["state"]' <<<"$status")" = "(3, 'running')" ] || fail "the MPI run: $status"
+timeout 60 "${BROWSER[@]}" --dump-dom "$URL/" >page_mpi.html 2>>browser.log || fail "chromium (MPI run)"
+[ "$(grep -o '<tr class="rank working"' page_mpi.html | wc -l)" = 2 ] \
+  || fail "the page does not show two working ranks: $(grep -o '<tr class="rank[^>]*>' page_mpi.html)"
+victim=$(sed -n 's/.*test pause: pid \([0-9]*\) (rank 2).*/\1/p' mpi.log)
+[ -n "$victim" ] && kill -KILL "$victim"
+wait "$mpijob" && fail "mpirun succeeded with a rank killed: $(cat mpi.log)"
+grep -q "render: rank 2 (on $(hostname)) was lost" mpi.log || fail "the master did not name the lost rank: $(cat mpi.log)"
+status=$(api "/api/status?$MQ")
+[ "$(field 'sorted((w["rank"], w["state"]) for w in d["run"]["workers"])' <<<"$status")" = "[(1, 'interrupted'), (2, 'lost')]" ] \
+  || fail "after the kill: $status"
+timeout 60 "${BROWSER[@]}" --dump-dom "$URL/" >page_lost.html 2>>browser.log || fail "chromium (lost rank)"
+grep -q '<tr class="rank lost" data-rank="2"' page_lost.html || fail "the page does not show rank 2 lost: $(grep -o '<tr class="rank[^>]*>' page_lost.html)"
+before=$(grep -c '^frame=' mpi_out/kerr_fall.journal || true)
+[ "$before" -ge 1 ] && [ "$before" -lt 6 ] || fail "$before frames journalled when rank 2 was killed"
+mpi 3 "$LIGHTCONE" render "$FALL" --out mpi_out "${MPI_ARGS[@]}" 2>mpi_resume.log || fail "the MPI resume: $(cat mpi_resume.log)"
+grep -q "resuming: $before of 6 frames already finished" mpi_resume.log || fail "the MPI resume: $(cat mpi_resume.log)"
+[ -z "$(grep -o '^frame=[0-9]*' mpi_out/kerr_fall.journal | sort | uniq -d)" ] || fail "a frame was rendered twice"
+status=$(api "/api/status?$MQ")
+[ "$(field 'd["frames"]["done"], d["run"]["state"], sorted(w["state"] for w in d["run"]["workers"])' <<<"$status")" = \
+  "(6, 'done', ['done', 'done'])" ] || fail "the resumed MPI run: $status"
 
 # A kill (SIGTERM; a Ctrl-C alike) stops it.
 kill -TERM "$monitor"

@@ -25,9 +25,12 @@ TEST(EventLog, EventsRoundTripAndTheLatestRunIsKept) {
                      .width = 64, .height = 36});
     log.rank_joined(1, "n1", 4);
     log.rank_joined(2, "n2", 8);
+    const std::vector<RankHolding> held{{1, 1, {2}}, {2, 0, {}}};
+    log.progress(QueueProgress{}, {2}, &held);
     log.frame_stored(1, 2.25, 2304);
     log.frame_stored(2, 2.5, 2304);
     log.error("frame 3: a script error\nat line 12 (100% sure)");
+    log.rank_lost(2, "n2");
     log.run_ended("error", 2);
   }
   const EventSummary s = read_events(EventLog::file_of(dir.path(), "shot"));
@@ -43,11 +46,14 @@ TEST(EventLog, EventsRoundTripAndTheLatestRunIsKept) {
   EXPECT_EQ(s.ranks[1].fields.at("host"), "n2");
   EXPECT_EQ(s.ranks[1].fields.at("threads"), "8");
   EXPECT_EQ(s.frames_stored, 2);
+  ASSERT_TRUE(s.progress);
+  EXPECT_EQ(s.progress->fields.at("held"), "1:1:2,2:0:");
+  EXPECT_EQ(s.lost, std::vector<int>{2});
   ASSERT_EQ(s.errors.size(), 1u);
   EXPECT_EQ(s.errors[0].fields.at("message"), "frame 3: a script error\nat line 12 (100% sure)");
   ASSERT_TRUE(s.end);
   EXPECT_EQ(s.end->fields.at("status"), "error");
-  EXPECT_EQ(s.recent.size(), 7u);  // the latest run's lines
+  EXPECT_EQ(s.recent.size(), 9u);  // the latest run's lines
   EXPECT_EQ(s.bad_lines, 0);
 }
 

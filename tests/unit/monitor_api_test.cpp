@@ -169,6 +169,30 @@ TEST(MonitorApi, ARunThatStoppedWithoutAnEndIsSaidToHaveStopped) {
   EXPECT_TRUE(has(s, "\"to_do\": 0")) << s.body;
 }
 
+// An MPI run's workers: each one's state from what the latest progress
+// line says it holds, and a lost one (the master gave up on it) as lost.
+TEST(MonitorApi, EachWorkerSaysWhatItHoldsOrThatItWasLost) {
+  test::ScratchDir scratch;
+  const fs::path dir = scratch / "out";
+  fs::create_directories(dir);
+  farm::EventLog log(dir, "s");
+  log.run_started({.pid = 9, .host = "n0", .ranks = 4, .threads = 0, .todo = 5, .width = 4, .height = 2});
+  for (int r = 1; r <= 3; ++r) log.rank_joined(r, "n" + std::to_string(r), 2);
+  const std::vector<farm::RankHolding> held{{1, 2, {3, 4}}, {2, 0, {}}, {3, 1, {4}}};
+  log.progress(farm::QueueProgress{}, {3, 4}, &held);
+  const MonitorApi api({dir});
+  const Reply running = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(running, "{\"rank\": 1, \"host\": \"n1\", \"threads\": 2, \"state\": \"working\", \"sets\": 2, "
+                           "\"frames\": [3,4]}")) << running.body;
+  EXPECT_TRUE(has(running, "{\"rank\": 2, \"host\": \"n2\", \"threads\": 2, \"state\": \"waiting\", \"sets\": 0, "
+                           "\"frames\": []}")) << running.body;
+  log.rank_lost(3, "n3");
+  log.run_ended("interrupted", 1);
+  const Reply ended = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(ended, "\"rank\": 1, \"host\": \"n1\", \"threads\": 2, \"state\": \"interrupted\"")) << ended.body;
+  EXPECT_TRUE(has(ended, "\"rank\": 3, \"host\": \"n3\", \"threads\": 2, \"state\": \"lost\"")) << ended.body;
+}
+
 TEST(MonitorApi, OnlyDirectoriesAreServed) {
   test::ScratchDir scratch;
   std::ofstream(scratch / "file") << "x";
