@@ -69,6 +69,9 @@ MpiSession::MpiSession() {
 
 bool MpiSession::broadcast_from_master(bool value) const {
   if (!active_) return value;
+  // A lost rank would never join the broadcast: the master goes on to end
+  // the job with its abort, which takes the waiting workers with it.
+  if (abort_code_ >= 0) return false;
   int v = value ? 1 : 0;
   MPI_Bcast(&v, 1, MPI_INT, 0, MPI_COMM_WORLD);
   return v != 0;

@@ -37,7 +37,8 @@ class MpiSession {
   static bool launched();
 
   // A worker was lost (farm/mpi_master.hpp): MPI_Finalize would wait for it
-  // forever, so the session ends the job with MPI_Abort(`code`) instead.
+  // forever, so the session ends the job with MPI_Abort(`code`) instead,
+  // and the master broadcasts nothing more.
   // Const like the rest: it changes nothing but how the session ends.
   void end_with_abort(int code) const { abort_code_ = code; }
 
