@@ -46,6 +46,16 @@ journalled=$(grep -c '^frame=' out/kerr_fall.journal || true)
 [ "$(field 'len(d["frames"]["in_flight"]) > 0' <<<"$status")" = True ] || fail "held: nothing in flight: $status"
 [ "$(field 'd["run"]["eta_seconds"] is not None' <<<"$status")" = True ] || fail "held: no ETA: $status"
 [ "$(field 'd["run"]["threads"]' <<<"$status")" = 2 ] || fail "held: threads: $status"
+# The page, while the render is held: its counts are the journal's.
+BROWSER=(chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1200,800
+  --virtual-time-budget=6000)
+timeout 60 "${BROWSER[@]}" --dump-dom "$URL/" >page_held.html 2>browser.log || fail "chromium (held): $(tail -3 browser.log)"
+grep -q "data-count=\"done\">$journalled<" page_held.html || fail "held: the page does not show $journalled done: $(grep -o 'data-count="[a-z_]*">[^<]*<' page_held.html)"
+grep -q "data-count=\"to_do\">$((9 - journalled))<" page_held.html || fail "held: the page's to do"
+grep -q 'data-count="in_flight">0<' page_held.html && fail "held: the page shows nothing in flight"
+grep -q 'class="state running"' page_held.html || fail "held: the page's run state"
+grep -q "data-points=\"$journalled\"" page_held.html || fail "held: the cost chart has not $journalled points: $(grep -o 'data-points="[0-9]*"' page_held.html)"
+[ "$(grep -o '<figure data-frame=' page_held.html | wc -l)" = "$journalled" ] || fail "held: the page shows $(grep -o '<figure data-frame=' page_held.html | wc -l) thumbnails for $journalled frames"
 
 # Interrupted (SIGTERM, as a Ctrl-C: a background job of a script ignores SIGINT), then resumed.
 kill -TERM "$render"
@@ -77,8 +87,6 @@ rm out/kerr_fall.0999.png
 # The page in a real browser: after its first polls, the counts are the
 # API's, one thumbnail for each of the latest frames, one chart point per
 # finished frame.
-BROWSER=(chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1200,800
-  --virtual-time-budget=6000)
 timeout 60 "${BROWSER[@]}" --dump-dom "$URL/" >page.html 2>browser.log || fail "chromium: $(tail -3 browser.log)"
 grep -q 'data-count="done">9<' page.html || fail "the page does not show 9 done: $(grep -o 'data-count="[a-z_]*">[^<]*<' page.html)"
 grep -q 'data-count="to_do">0<' page.html || fail "the page's to do"

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Drives the monitor's page in a real headless chromium (Selenium and
 Debian's chromium-driver), as a user would: opens a thumbnail, clicks a
-pixel of the whole frame and waits for the pixel inspector.
+pixel of the whole frame and waits for the pixel inspector.  Every
+thumbnail's picture must load first.
 
 Usage: monitor_click.py URL SCREENSHOT.png X_SHARE Y_SHARE
 Prints "FRAME I,J POINTS" (the frame opened, the pixel the page asked for,
@@ -25,6 +26,10 @@ try:
     driver.get(url)
     wait = WebDriverWait(driver, 30)
     thumbnail = wait.until(lambda d: d.find_element(By.CSS_SELECTOR, "figure[data-frame]"))
+    # Every thumbnail's picture has loaded (a broken one has no natural width).
+    thumbs_loaded = ("const t = [...document.querySelectorAll('figure[data-frame] img')];"
+                     "return t.length > 0 && t.every(i => i.complete && i.naturalWidth > 0)")
+    wait.until(lambda d: d.execute_script(thumbs_loaded))
     frame = thumbnail.get_attribute("data-frame")
     thumbnail.click()
     loaded = "const i = document.getElementById('big'); return i.complete && i.naturalWidth > 0"
