@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+
+#include <malloc.h>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -194,6 +196,12 @@ int run_develop(const DevelopCommand& cmd) {
   // and a summary on stderr.  Flags are checked before the directory is
   // touched, every frame's EXR before any PNG is written.
   developed_look(Look{}, cmd.look, cmd.exposure_shift);
+  // Each frame takes the same few large buffers (the EXR's pixels, the
+  // look's copy, the bloom's light).  Above glibc's mmap threshold each
+  // would be mapped, faulted in and zeroed page by page, and unmapped again
+  // every frame; kept in the heap they are reused (docs/performance.md).
+  ::mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest
+  ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
   InterruptGuard guard;
   const std::string shot = pick_shot(cmd.dir, cmd.shot);
   farm::FrameStore store(cmd.dir, shot, "DIR");  // its lock keeps a render out meanwhile

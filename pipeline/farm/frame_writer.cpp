@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "durable_file.hpp"
+#include "image/png_check.hpp"
 
 namespace lc::farm {
 
@@ -12,8 +13,11 @@ namespace {
 
 enum class FrameFormat { exr, png };
 
-// Writes `image` in `format` to `file`'s temporary, reads it back and
-// checks its size; throws naming the final name.  The caller commits.
+// Writes `image` in `format` to `file`'s temporary and checks what lies on
+// disk: an EXR is read back whole and its size checked; a PNG's chunks are
+// checked whole with their CRCs and its size (image/png_check.hpp), which
+// finds what a read-back would (a file cut short or changed) without
+// decoding it.  Throws naming the final name.  The caller commits.
 void write_verified(const DurableFile& file, FrameFormat format, const FrameImage& image,
                     const ImageMetadata& metadata = {}, PngDepth depth = PngDepth::eight) {
   const std::filesystem::path& temp = file.temp_path();
@@ -22,7 +26,8 @@ void write_verified(const DurableFile& file, FrameFormat format, const FrameImag
   else
     write_png(temp, image, {}, depth);
   try {
-    const FrameImage back = format == FrameFormat::exr ? read_exr(temp) : read_image_linear(temp);
+    if (format == FrameFormat::png) return check_png_file(temp, image.width, image.height);
+    const FrameImage back = read_exr(temp);
     if (back.width != image.width || back.height != image.height)
       throw std::runtime_error(fmt::format("it reads back as {}x{}", back.width, back.height));
   } catch (const std::exception& e) {
