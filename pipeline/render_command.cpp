@@ -240,6 +240,14 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   const farm::QueueProgress p = queue.progress();
   if (error) events.error(*error);
   events.run_ended(error ? "error" : interrupted ? "interrupted" : "done", p.frames_stored);
+  for (const auto& [rank, host] : lost)
+    fmt::print(stderr,
+               "render: rank {} (on {}) was lost: it did not answer the master's stop within {} ms (killed, out of "
+               "memory, or its node failed); the frames it held are rendered when the same command resumes\n",
+               rank, host, farm::answer_stop_within.count());
+  // Whichever way the run ended (an error may land with the launcher's
+  // signal), a lost rank means no MPI_Finalize.
+  if (!lost.empty()) mpi->end_with_abort(error ? 1 : 128 + interrupted);
   if (error) {
     if (p.frames_stored > 0 || !plan.done.empty())
       fmt::print(stderr, "render: stopped after {} new frame{}; finished frames are kept, the same command resumes\n",
@@ -250,12 +258,6 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     fmt::print(stderr, "render: interrupted by {}: {} of {} frames done ({} in this run); run the same command again to resume\n",
                signal_name(interrupted), plan.done.size() + static_cast<std::size_t>(p.frames_stored), job.frames.size(),
                p.frames_stored);
-    for (const auto& [rank, host] : lost)
-      fmt::print(stderr,
-                 "render: rank {} (on {}) was lost: it did not answer the master's stop within {} ms (killed, out of "
-                 "memory, or its node failed); the frames it held are rendered when the same command resumes\n",
-                 rank, host, farm::answer_stop_within.count());
-    if (!lost.empty()) mpi->end_with_abort(128 + interrupted);
     return 128 + interrupted;
   }
   const double s = progress.elapsed();

@@ -147,9 +147,15 @@ void EventLog::rank_lost(int rank, const std::string& host) {
 void EventLog::progress(const QueueProgress& p, const std::vector<int>& open, const std::vector<RankHolding>* held) {
   std::string frames;
   for (std::size_t k = 0; k < open.size() && k < 64; ++k) frames += (k ? "," : "") + std::to_string(open[k]);
+  std::string holding;
+  if (held) {
+    bool complete = true;
+    holding = " held=" + format_holdings(*held, 8192, &complete);
+    if (!complete) holding += " held_all=0";
+  }
   append(fmt::format("t={:.3f} event=progress stored={} total={} rows={}/{} rays={} core_seconds={:.3f} open={}{}",
                      now_seconds(), p.frames_stored, p.frames_total, p.rows_done, p.rows_total, p.stats.rays,
-                     p.stats.seconds, frames, held ? " held=" + format_holdings(*held) : ""));
+                     p.stats.seconds, frames, holding));
 }
 
 void EventLog::frame_stored(int frame, double core_seconds, long rays) {

@@ -11,7 +11,8 @@
 //   t=<unix s> event=run pid=<n> host=<name> ranks=<n> threads=<n> todo=<n> done=<n> size=<W>x<H> script=<path>
 //   t=<unix s> event=rank rank=<n> host=<name> threads=<n>          (an MPI worker joined)
 //   t=<unix s> event=progress stored=<n> total=<n> rows=<done>/<all> rays=<n> core_seconds=<s> open=<f>,<f>,...
-//              [held=<rank>:<sets>:<f>+<f>...,...]                   (an MPI farm: what each worker holds)
+//              [held=<rank>:<sets>:<f>+<f>...,... [held_all=0]]      (an MPI farm: the workers holding sets;
+//                                                                     held_all=0: more than fitted in 8 KiB)
 //   t=<unix s> event=lost rank=<n> host=<name>                      (a worker that stopped answering)
 //   t=<unix s> event=frame frame=<n> core_seconds=<s> rays=<n>       (a frame stored)
 //   t=<unix s> event=error message=<percent-encoded text>

@@ -40,10 +40,18 @@ std::vector<RankHolding> RankBoard::holdings() const {
   return out;
 }
 
-std::string format_holdings(const std::vector<RankHolding>& holdings) {
+std::string format_holdings(const std::vector<RankHolding>& holdings, std::size_t max_chars, bool* complete) {
   std::string out;
-  for (const RankHolding& h : holdings)
-    out += fmt::format("{}{}:{}:{}", out.empty() ? "" : ",", h.rank, h.sets, fmt::join(h.frames, "+"));
+  if (complete) *complete = true;
+  for (const RankHolding& h : holdings) {
+    if (h.sets == 0) continue;
+    const std::string entry = fmt::format("{}{}:{}:{}", out.empty() ? "" : ",", h.rank, h.sets, fmt::join(h.frames, "+"));
+    if (out.size() + entry.size() > max_chars) {
+      if (complete) *complete = false;
+      break;
+    }
+    out += entry;
+  }
   return out;
 }
 

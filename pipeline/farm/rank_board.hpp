@@ -37,9 +37,13 @@ class RankBoard {
   std::map<int, std::vector<WorkItem>> held_;
 };
 
-// "1:2:3+4,2:0:" (rank:sets:frames, frames joined by '+'), the event log's
-// `held` field, and back; a malformed entry is skipped when read.
-std::string format_holdings(const std::vector<RankHolding>& holdings);
+// "1:2:3+4,3:1:4" (rank:sets:frames, frames joined by '+'), the event log's
+// `held` field, and back; a malformed entry is skipped when read.  Only
+// ranks holding sets are written (one not listed holds none), and at most
+// `max_chars` of them: an event line must stay under the log's limit on a
+// farm of thousands of ranks.  `complete` says whether every one fitted.
+std::string format_holdings(const std::vector<RankHolding>& holdings, std::size_t max_chars = 8192,
+                            bool* complete = nullptr);
 std::vector<RankHolding> parse_holdings(const std::string& text);
 
 }  // namespace lc::farm

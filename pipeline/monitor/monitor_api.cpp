@@ -223,6 +223,8 @@ Reply MonitorApi::status_reply(const Query& q) const {
     // while it is not running, else working or waiting by what it holds.
     const auto held = ev.progress && ev.progress->fields.count("held") ? farm::parse_holdings(ev.progress->fields.at("held"))
                                                                        : std::vector<farm::RankHolding>{};
+    // A worker not listed holds nothing, unless the list was cut short.
+    const bool held_all = !(ev.progress && ev.progress->fields.count("held_all"));
     std::string workers;
     for (const farm::Event& w : ev.ranks) {
       const int t = std::atoi(w.fields.count("threads") ? w.fields.at("threads").c_str() : "0");
@@ -232,7 +234,11 @@ Reply MonitorApi::status_reply(const Query& q) const {
       for (const farm::RankHolding& x : held)
         if (x.rank == rank) h = x;
       const bool lost = std::find(ev.lost.begin(), ev.lost.end(), rank) != ev.lost.end();
-      const std::string rank_state = lost ? "lost" : state != "running" ? state : h.sets > 0 ? "working" : "waiting";
+      const std::string rank_state = lost                ? "lost"
+                                     : state != "running" ? state
+                                     : h.sets > 0         ? "working"
+                                     : held_all           ? "waiting"
+                                                          : "running";  // not in a list cut short: unknown
       workers += fmt::format("{}{{\"rank\": {}, \"host\": {}, \"threads\": {}, \"state\": {}, \"sets\": {}, "
                              "\"frames\": {}}}",
                              workers.empty() ? "" : ", ", rank, json_text(w.fields.count("host") ? w.fields.at("host") : ""),

@@ -365,7 +365,7 @@ mkdir -p "$WORK/lost"
 MONITOR=$!
 for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
 URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log || true)
-status() { curl -s --max-time 10 "$URL/api/status?folder=0&shot=farm_orbit"; }
+status() { curl -s --max-time 10 "$URL/api/status?folder=0&shot=farm_orbit" || true; }  # a failed request fails a check, not the test
 field() { $PY -c "import json,sys; d=json.load(sys.stdin); print(eval(sys.argv[1]))" "$1"; }
 BROWSER=(chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1200,800 --virtual-time-budget=6000)
 on_paused() {
@@ -410,6 +410,7 @@ fi
 on_paused() { :; }
 on_stopped() { :; }
 kill "$MONITOR" 2>/dev/null || true
+MONITOR=""
 
 # 3. The showcase as one job, at preview quality (a tiny size and rate, to
 # stay quick): its videos, and frames byte-identical to a 1-thread run.

@@ -47,7 +47,7 @@ TEST(EventLog, EventsRoundTripAndTheLatestRunIsKept) {
   EXPECT_EQ(s.ranks[1].fields.at("threads"), "8");
   EXPECT_EQ(s.frames_stored, 2);
   ASSERT_TRUE(s.progress);
-  EXPECT_EQ(s.progress->fields.at("held"), "1:1:2,2:0:");
+  EXPECT_EQ(s.progress->fields.at("held"), "1:1:2");
   EXPECT_EQ(s.lost, std::vector<int>{2});
   ASSERT_EQ(s.errors.size(), 1u);
   EXPECT_EQ(s.errors[0].fields.at("message"), "frame 3: a script error\nat line 12 (100% sure)");
