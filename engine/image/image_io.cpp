@@ -18,11 +18,13 @@
 #include <cstdlib>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
 
+#include "image/exr_rgb_reader.hpp"
 #include "image/read_linear.hpp"
 #include "image/srgb.hpp"
 #include "image/srgb8_encoder.hpp"
@@ -312,8 +314,11 @@ void write_png(const std::filesystem::path& path, const FrameImage& image, const
   write_with("png", spec, type, bytes.data(), what, path, named);
 }
 
-// Reads every channel as float, then splits R, G, B from the layers by name.
+// Lightcone's own layout directly (exr_rgb_reader.hpp); any other file
+// through OIIO: every channel as float, then R, G, B split from the layers
+// by name.
 FrameImage read_exr(const std::filesystem::path& path) {
+  if (std::optional<FrameImage> own = read_rgb_exr(path)) return std::move(*own);
   constexpr std::string_view what = "cannot read EXR";
   std::unique_ptr<OIIO::ImageInput> in = open_exr(path, what);
   const OIIO::ImageSpec spec = in->spec();
