@@ -200,8 +200,12 @@ int run_develop(const DevelopCommand& cmd) {
   // look's copy, the bloom's light).  Above glibc's mmap threshold each
   // would be mapped, faulted in and zeroed page by page, and unmapped again
   // every frame; kept in the heap they are reused (docs/performance.md).
+  // One arena for every thread: a thread's own arena is made of 64 MB heaps,
+  // and one that empties (a frame's buffers freed) is unmapped whatever the
+  // trim threshold, so the next frame faulted its pages in again.
   ::mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest
   ::mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  ::mallopt(M_ARENA_MAX, 1);
   InterruptGuard guard;
   const std::string shot = pick_shot(cmd.dir, cmd.shot);
   farm::FrameStore store(cmd.dir, shot, "DIR");  // its lock keeps a render out meanwhile
