@@ -163,53 +163,67 @@ void apply_bloom(std::vector<float>& rgb, int width, int height, const Bloom& bl
   const std::size_t w = static_cast<std::size_t>(width), h = static_cast<std::size_t>(height), row = 3 * w;
   const double sigma = bloom.radius * std::hypot(static_cast<double>(width), static_cast<double>(height));
 
-  // The blooming light, and which rows have any: most of a frame is below
-  // the threshold, and blurring zeros costs as much as blurring light.
+  // The blooming light, and where in each row it is (first and last pixel;
+  // first > last: none): most of a frame is below the threshold, and
+  // blurring zeros costs as much as blurring light.  Skipping them changes
+  // no value: a sum of zeros is zero, and adding zero changes nothing.
   std::vector<double> bright(rgb.size(), 0.0);
-  std::vector<char> lit(h, 0);
+  std::vector<int> first(h, width), last(h, -1);
   for (std::size_t y = 0; y < h; ++y)
     for (std::size_t x = 0; x < w; ++x) {
       const std::size_t i = y * row + 3 * x;
       const auto b = blooming(&rgb[i], bloom);
       for (int c = 0; c < 3; ++c) bright[i + c] = b[c];
-      lit[y] |= b[0] != 0.0 || b[1] != 0.0 || b[2] != 0.0;
+      if (b[0] != 0.0 || b[1] != 0.0 || b[2] != 0.0) {
+        first[y] = std::min(first[y], static_cast<int>(x));
+        last[y] = static_cast<int>(x);
+      }
     }
 
   // Rows, in place: each channel of a row is copied, times its normaliser,
   // into a zero-padded line; the scatter is then a gather from it (G is
-  // symmetric), contiguous in x so the compiler vectorises it.
+  // symmetric), contiguous in x so the compiler vectorises it.  Only the
+  // pixels within reach of the row's light get any; the row's extent grows
+  // by the reach.
   const BlurPass across = blur_pass(width, sigma);
   {
     const int r = across.reach;
     std::vector<double> padded(w + 2 * r, 0.0), sum(w);
     for (std::size_t y = 0; y < h; ++y) {
-      if (!lit[y]) continue;
+      if (first[y] > last[y]) continue;
+      const int x0 = std::max(0, first[y] - r), x1 = std::min(width - 1, last[y] + r);
+      // The sources the gathers read: [x0 - r, x1 + r], refreshed whole
+      // (the padding outside the line stays zero).
+      const int s0 = std::max(0, x0 - r), s1 = std::min(width - 1, x1 + r);
       double* line = &bright[y * row];
       for (int c = 0; c < 3; ++c) {
-        for (std::size_t x = 0; x < w; ++x) padded[r + x] = line[3 * x + c] * across.w[x];
-        std::fill(sum.begin(), sum.end(), 0.0);
+        for (int x = s0; x <= s1; ++x) padded[r + x] = line[3 * x + c] * across.w[x];
+        std::fill(sum.begin() + x0, sum.begin() + x1 + 1, 0.0);
         for (int k = 0; k <= 2 * r; ++k) {
           const double gk = across.g[k];
           const double* src = &padded[k];
-          for (std::size_t x = 0; x < w; ++x) sum[x] += gk * src[x];
+          for (int x = x0; x <= x1; ++x) sum[x] += gk * src[x];
         }
-        for (std::size_t x = 0; x < w; ++x) line[3 * x + c] = sum[x];
+        for (int x = x0; x <= x1; ++x) line[3 * x + c] = sum[x];
       }
+      first[y] = x0;
+      last[y] = x1;
     }
   }
 
-  // Columns, as a scatter of whole rows: each lit source row is added,
-  // weighted, to the rows within reach; unlit rows cost nothing.
+  // Columns, as a scatter of whole rows: each lit source row's extent is
+  // added, weighted, to the rows within reach; unlit rows cost nothing.
   const BlurPass down = blur_pass(height, sigma);
   std::vector<double> glow(rgb.size(), 0.0);
   for (std::size_t y = 0; y < h; ++y) {
-    if (!lit[y]) continue;
+    if (first[y] > last[y]) continue;
+    const std::size_t i0 = 3 * static_cast<std::size_t>(first[y]), i1 = 3 * static_cast<std::size_t>(last[y]) + 3;
     const double* src = &bright[y * row];
     const int yi = static_cast<int>(y);
     for (int t = std::max(0, yi - down.reach); t <= std::min(height - 1, yi + down.reach); ++t) {
       const double weight = down.g[t - yi + down.reach] * down.w[y];
       double* dst = &glow[static_cast<std::size_t>(t) * row];
-      for (std::size_t i = 0; i < row; ++i) dst[i] += weight * src[i];
+      for (std::size_t i = i0; i < i1; ++i) dst[i] += weight * src[i];
     }
   }
 
