@@ -94,10 +94,7 @@ FrameImage Look::applied(const FrameImage& image) const {
     for (float& v : rgb) v = channel_view(view, v * after_grade);
     return out;
   }
-  for (std::size_t p = 0; p + 2 < rgb.size(); p += 3) {
-    const auto shown = gamut_safe_view({rgb[p] * after_grade, rgb[p + 1] * after_grade, rgb[p + 2] * after_grade});
-    for (int i = 0; i < 3; ++i) rgb[p + static_cast<std::size_t>(i)] = static_cast<float>(shown[static_cast<std::size_t>(i)]);
-  }
+  show_gamut_safe(rgb, after_grade);
   return out;
 }
 

@@ -6,6 +6,7 @@
 // negative (colours outside that gamut) or far above 1.
 
 #include <array>
+#include <span>
 #include <string_view>
 
 namespace lc {
@@ -49,6 +50,13 @@ double filmic_luminance_curve(double y);
 // has luminance Y' exactly.  Light with Y <= 0 (or NaN) shows black.
 // Colours well inside the gamut (d <= 0.8) keep their chroma exactly.
 std::array<double, 3> gamut_safe_view(const std::array<double, 3>& c);
+
+// gamut_safe_view of every pixel of interleaved rgb (3 floats a pixel),
+// each channel first times `scale` (the exposure not yet applied), in
+// place, rounded to float.  The very values gamut_safe_view gives pixel by
+// pixel, computed four pixels at a time (the same operations in the same
+// order, in vector registers), a frame's largest share of the view's time.
+void show_gamut_safe(std::span<float> rgb, double scale);
 
 // The knee of gamut_safe_view, exposed for tests.
 double gamut_knee(double d);

@@ -7,7 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <numbers>
+#include <random>
+#include <vector>
 
 #include "image/grade.hpp"
 #include "image/srgb.hpp"
@@ -160,6 +164,38 @@ TEST(ViewTransform, GreySeenThroughEveryGMovesSmoothly) {
     // where a band crosses a channel's edge, and the shown hue never turns
     // more than the light's (above).
     EXPECT_LT(largest_hue_step, 20.0 * std::numbers::pi / 180.0) << "exposure " << exposure;
+  }
+}
+
+TEST(ViewTransform, AFrameAtOnceIsEveryPixelByItself) {
+  // show_gamut_safe computes four pixels at a time: its floats must be
+  // gamut_safe_view's, bit for bit, for colours of every kind (dark, inside
+  // the gamut, saturated beyond it, far above white, negative, exactly
+  // grey, black, NaN and infinite) and for a frame not a multiple of four.
+  std::mt19937 random(29);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<float> rgb;
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const std::vector<std::array<float, 3>> special = {
+      {0, 0, 0}, {1, 1, 1}, {0.5f, 0.5f, 0.5f}, {-1, 0.1f, 0}, {1e30f, 0, 0}, {nan, 0.2f, 0.1f}, {inf, 1, 1},
+      {0.2f, -0.05f, 0.9f}, {3e-39f, 0, 0}, {0, 0, 5}, {-0.0f, 0.0f, 0.3f}};
+  for (const auto& c : special) rgb.insert(rgb.end(), c.begin(), c.end());
+  for (int p = 0; p < 40001; ++p) {
+    const float scale = std::exp2(unit(random) * 24.0f - 12.0f);  // 2^-12 to 2^12
+    for (int i = 0; i < 3; ++i) rgb.push_back(scale * (unit(random) * 1.2f - 0.1f));
+  }
+  for (const double exposure : {1.0, 0.37, 8.0}) {
+    std::vector<float> batch = rgb;
+    show_gamut_safe(batch, exposure);
+    std::size_t differing = 0;
+    for (std::size_t p = 0; p < rgb.size(); p += 3) {
+      const auto one = gamut_safe_view({rgb[p] * exposure, rgb[p + 1] * exposure, rgb[p + 2] * exposure});
+      for (int i = 0; i < 3; ++i) {
+        const float expected = static_cast<float>(one[static_cast<std::size_t>(i)]);
+        differing += std::memcmp(&expected, &batch[p + static_cast<std::size_t>(i)], sizeof(float)) != 0;
+      }
+    }
+    EXPECT_EQ(differing, 0u) << "exposure " << exposure;
   }
 }
 
