@@ -20,11 +20,13 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
 
 #include "image/exr_rgb_reader.hpp"
+#include "image/png_encoder.hpp"
 #include "image/read_linear.hpp"
 #include "image/srgb.hpp"
 #include "image/srgb8_encoder.hpp"
@@ -194,6 +196,23 @@ void write_with(const char* format, const OIIO::ImageSpec& spec, OIIO::TypeDesc 
   fail(what, blame, oiio_reason(first_line(error)));
 }
 
+// Writes `bytes` (a whole file made here) to `path` through
+// CheckedFileOutput, with write_with's messages, and removes what was
+// written if it fails.
+void write_bytes(std::span<const unsigned char> bytes, std::string_view what, const fs::path& path,
+                 const fs::path& named) {
+  const fs::path& blame = named.empty() ? path : named;
+  CheckedFileOutput file(path);
+  if (file.os_error() != 0) fail(what, blame, std::strerror(file.os_error()));
+  file.write(bytes.data(), bytes.size());
+  file.close();
+  const int error = file.os_error();
+  if (error == 0) return;
+  std::error_code ignored;
+  fs::remove(path, ignored);
+  fail(what, blame, std::strerror(error));
+}
+
 // Fails with a clear reason when `path` is not an existing regular file
 // (OIIO's own message for a missing file is "could not open").
 void check_readable(const fs::path& path, std::string_view what) {
@@ -295,23 +314,23 @@ void write_exr(const std::filesystem::path& path, const FrameImage& image, const
   write_with("openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data(), what, path, named);
 }
 
-// Encodes to sRGB codes here (srgb.hpp), so OIIO only stores them.
+// Encodes to sRGB codes here (srgb.hpp); 8-bit PNGs are made by
+// png_encoder.hpp (OpenImageIO's bytes, faster), 16-bit ones stored by OIIO.
 void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named,
                PngDepth depth) {
   constexpr std::string_view what = "cannot write PNG";
   check_frame(image, false, what, named.empty() ? path : named);
-  const OIIO::TypeDesc type = depth == PngDepth::sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec spec(image.width, image.height, 3, type);
-  spec.attribute("oiio:ColorSpace", "sRGB");  // the writer then stores an sRGB chunk
   if (depth == PngDepth::sixteen) {
+    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT16);
+    spec.attribute("oiio:ColorSpace", "sRGB");  // the writer then stores an sRGB chunk
     std::vector<std::uint16_t> codes(image.rgb.size());
     std::transform(image.rgb.begin(), image.rgb.end(), codes.begin(), linear_to_srgb16);
-    write_with("png", spec, type, codes.data(), what, path, named);
+    write_with("png", spec, OIIO::TypeDesc::UINT16, codes.data(), what, path, named);
     return;
   }
-  std::vector<std::uint8_t> bytes(image.rgb.size());
-  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), std::cref(Srgb8Encoder::shared()));
-  write_with("png", spec, type, bytes.data(), what, path, named);
+  std::vector<std::uint8_t> codes(image.rgb.size());
+  std::transform(image.rgb.begin(), image.rgb.end(), codes.begin(), std::cref(Srgb8Encoder::shared()));
+  write_bytes(encode_png8(codes, image.width, image.height), what, path, named);
 }
 
 // Lightcone's own layout directly (exr_rgb_reader.hpp); any other file
