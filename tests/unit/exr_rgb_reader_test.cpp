@@ -21,6 +21,7 @@
 
 #include "image/exr_rgb_reader.hpp"
 #include "image/image_io.hpp"
+#include "file_bytes.hpp"
 #include "scratch_dir.hpp"
 
 namespace lc {
@@ -28,14 +29,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string bytes_of(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void put(const fs::path& p, const std::string& bytes) {
-  std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes;
-}
+using test::bytes_of;
+using test::put;
 
 bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;

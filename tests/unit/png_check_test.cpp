@@ -13,6 +13,7 @@
 
 #include "image/image_io.hpp"
 #include "image/png_check.hpp"
+#include "file_bytes.hpp"
 #include "scratch_dir.hpp"
 #include "tiny_frame.hpp"
 
@@ -21,14 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string bytes_of(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void put(const fs::path& p, const std::string& bytes) {
-  std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes;
-}
+using test::bytes_of;
+using test::put;
 
 // The reason check_png_file gives, or "" when it passes.
 std::string refusal(const fs::path& p, int w, int h) {
