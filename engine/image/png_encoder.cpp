@@ -34,6 +34,9 @@ namespace {
 
 constexpr std::size_t idat_size = 8192;  // libpng's PNG_ZBUF_SIZE
 constexpr int zlib_level = 6, zlib_memory_level = 8, largest_window_bits = 15;
+// PNG's own limit is 2^31 - 1; this one keeps a row's bytes far inside
+// zlib's 32-bit counts and is twice the largest frame lightcone makes.
+constexpr int max_png_side = 65536;
 
 enum Filter : std::uint8_t { none = 0, sub = 1, up = 2, average = 3, paeth = 4 };
 
@@ -98,31 +101,6 @@ std::array<unsigned long, 5> filter_row(const std::uint8_t* row, const std::uint
   return sums;
 }
 
-// The rows filtered as libpng filters them: each led by its filter's type.
-std::vector<unsigned char> filtered_rows(std::span<const std::uint8_t> rgb, std::size_t width, std::size_t height) {
-  const std::size_t n = 3 * width;
-  std::vector<unsigned char> out(height * (n + 1));
-  std::vector<std::uint8_t> zeros(n, 0), candidates(4 * n);
-  // libpng leaves out the filters that need a row above (one row) or a
-  // pixel to the left (one column).
-  std::array<bool, 5> allowed{true, true, true, true, true};
-  if (height == 1) allowed[up] = allowed[average] = allowed[paeth] = false;
-  if (width == 1) allowed[sub] = allowed[average] = allowed[paeth] = false;
-  for (std::size_t y = 0; y < height; ++y) {
-    const std::uint8_t* row = rgb.data() + y * n;
-    const std::uint8_t* above = y == 0 ? zeros.data() : row - n;
-    const auto sums = filter_row(row, above, n, candidates.data());
-    int best = none;
-    for (int f = sub; f <= paeth; ++f)
-      if (allowed[f] && sums[f] < sums[best]) best = f;
-    unsigned char* dst = &out[y * (n + 1)];
-    dst[0] = static_cast<unsigned char>(best);
-    const std::uint8_t* src = best == none ? row : candidates.data() + static_cast<std::size_t>(best - 1) * n;
-    std::copy_n(src, n, dst + 1);
-  }
-  return out;
-}
-
 // libpng's window for `size` bytes of filtered data (png_deflate_claim).
 int window_bits_for(std::size_t size) {
   int bits = largest_window_bits;
@@ -157,34 +135,69 @@ void claim_smallest_window(unsigned char* header, std::size_t size) {
   header[1] = static_cast<unsigned char>(flg);
 }
 
-std::vector<unsigned char> deflated(std::vector<unsigned char>& data) {
-  z_stream z{};
-  if (deflateInit2(&z, zlib_level, Z_DEFLATED, window_bits_for(data.size()), zlib_memory_level, Z_DEFAULT_STRATEGY) != Z_OK)
-    throw std::runtime_error("zlib could not start a deflate stream");
-  std::vector<unsigned char> out(deflateBound(&z, static_cast<uLong>(data.size())));
-  z.next_in = data.data();
-  z.avail_in = static_cast<uInt>(data.size());
-  z.next_out = out.data();
-  z.avail_out = static_cast<uInt>(out.size());
-  const int status = deflate(&z, Z_FINISH);
-  out.resize(out.size() - z.avail_out);
-  deflateEnd(&z);
-  if (status != Z_STREAM_END) throw std::runtime_error("zlib could not deflate a frame's rows");
-  claim_smallest_window(out.data(), data.size());
-  return out;
-}
+// The zlib stream of the filtered rows, fed a row at a time as libpng
+// feeds it and cut into IDAT chunks as its buffer fills, so the frame is
+// never held filtered whole.
+class IdatStream {
+ public:
+  // `size`: all the filtered rows' bytes, which decide the window.
+  IdatStream(std::vector<unsigned char>& png, std::size_t size) : png_(png), size_(size) {
+    if (deflateInit2(&z_, zlib_level, Z_DEFLATED, window_bits_for(size), zlib_memory_level, Z_DEFAULT_STRATEGY) != Z_OK)
+      throw std::runtime_error("zlib could not start a deflate stream");
+    z_.next_out = buffer_.data();
+    z_.avail_out = static_cast<uInt>(buffer_.size());
+  }
+  IdatStream(const IdatStream&) = delete;
+  IdatStream& operator=(const IdatStream&) = delete;
+  ~IdatStream() { deflateEnd(&z_); }
+
+  // One filtered row (n < 4 GiB: a row of at most 32768 pixels is ~96 KB).
+  void add(const unsigned char* row, std::size_t n) {
+    z_.next_in = const_cast<unsigned char*>(row);  // zlib's API is not const; it only reads
+    z_.avail_in = static_cast<uInt>(n);
+    while (z_.avail_in > 0 || z_.avail_out == 0) {
+      if (deflate(&z_, Z_NO_FLUSH) == Z_STREAM_ERROR) throw std::runtime_error("zlib failed deflating a frame's rows");
+      if (z_.avail_out == 0) emit(buffer_.size());
+    }
+  }
+
+  // The stream's end, and its last chunk.
+  void finish() {
+    for (;;) {
+      const int status = deflate(&z_, Z_FINISH);
+      if (status != Z_OK && status != Z_STREAM_END)
+        throw std::runtime_error("zlib failed ending a frame's stream");
+      const std::size_t filled = buffer_.size() - z_.avail_out;
+      if (z_.avail_out == 0 || status == Z_STREAM_END) emit(filled);
+      if (status == Z_STREAM_END) return;
+    }
+  }
+
+ private:
+  // Writes the buffer's first `n` bytes as an IDAT chunk (none when empty).
+  void emit(std::size_t n) {
+    if (first_) claim_smallest_window(buffer_.data(), size_);
+    first_ = false;
+    if (n > 0) put_chunk(png_, "IDAT", std::span(buffer_).first(n));
+    z_.next_out = buffer_.data();
+    z_.avail_out = static_cast<uInt>(buffer_.size());
+  }
+
+  std::vector<unsigned char>& png_;
+  std::size_t size_;
+  z_stream z_{};
+  std::array<unsigned char, idat_size> buffer_{};
+  bool first_ = true;
+};
 
 }  // namespace
 
 std::vector<unsigned char> encode_png8(std::span<const std::uint8_t> rgb, int width, int height) {
-  if (width <= 0 || height <= 0 || rgb.size() != 3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
-    throw std::invalid_argument(
-        fmt::format("encode_png8: {} bytes are not a {}x{} frame of 8-bit RGB", rgb.size(), width, height));
-  std::vector<unsigned char> rows = filtered_rows(rgb, static_cast<std::size_t>(width), static_cast<std::size_t>(height));
-  const std::vector<unsigned char> stream = deflated(rows);
-
+  if (width <= 0 || height <= 0 || width > max_png_side || height > max_png_side ||
+      rgb.size() != 3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+    throw std::invalid_argument(fmt::format("encode_png8: {} bytes are not a {}x{} frame of 8-bit RGB (at most {} a side)",
+                                            rgb.size(), width, height, max_png_side));
   std::vector<unsigned char> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  png.reserve(stream.size() + stream.size() / idat_size * 12 + 256);
   std::vector<unsigned char> ihdr = be32s({static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)});
   ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0});  // 8 bits, RGB, deflate, adaptive filters, not interlaced
   put_chunk(png, "IHDR", ihdr);
@@ -195,8 +208,29 @@ std::vector<unsigned char> encode_png8(std::span<const std::uint8_t> rgb, int wi
   put_chunk(png, "oFFs", std::vector<unsigned char>(9, 0));  // offset 0, 0 in pixels
   const std::string_view text("oiio:ColorSpace\0sRGB", 20);
   put_chunk(png, "tEXt", std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
-  for (std::size_t at = 0; at < stream.size(); at += idat_size)
-    put_chunk(png, "IDAT", std::span(stream).subspan(at, std::min(idat_size, stream.size() - at)));
+
+  // Each row filtered as libpng filters it, led by its filter's type.
+  const std::size_t w = static_cast<std::size_t>(width), h = static_cast<std::size_t>(height), n = 3 * w;
+  IdatStream stream(png, h * (n + 1));
+  std::vector<std::uint8_t> zeros(n, 0), candidates(4 * n), filtered(n + 1);
+  // libpng leaves out the filters that need a row above (one row) or a
+  // pixel to the left (one column).
+  std::array<bool, 5> allowed{true, true, true, true, true};
+  if (h == 1) allowed[up] = allowed[average] = allowed[paeth] = false;
+  if (w == 1) allowed[sub] = allowed[average] = allowed[paeth] = false;
+  for (std::size_t y = 0; y < h; ++y) {
+    const std::uint8_t* row = rgb.data() + y * n;
+    const std::uint8_t* above = y == 0 ? zeros.data() : row - n;
+    const auto sums = filter_row(row, above, n, candidates.data());
+    int best = none;
+    for (int f = sub; f <= paeth; ++f)
+      if (allowed[f] && sums[f] < sums[best]) best = f;
+    filtered[0] = static_cast<unsigned char>(best);
+    const std::uint8_t* src = best == none ? row : candidates.data() + static_cast<std::size_t>(best - 1) * n;
+    std::copy_n(src, n, filtered.data() + 1);
+    stream.add(filtered.data(), n + 1);
+  }
+  stream.finish();
   put_chunk(png, "IEND", {});
   return png;
 }

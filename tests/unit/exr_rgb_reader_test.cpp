@@ -74,6 +74,46 @@ void write_with_oiio(const fs::path& path, const FrameImage& im, const char* com
   ASSERT_TRUE(out->close());
 }
 
+// The byte that ends an EXR's header (the empty name after its last attribute).
+std::size_t header_end(const std::string& b) {
+  std::size_t at = 8;
+  while (b[at] != '\0') {
+    const std::size_t type_end = b.find('\0', b.find('\0', at) + 1);
+    std::int32_t size = 0;
+    std::memcpy(&size, &b[type_end + 1], sizeof size);
+    at = type_end + 5 + static_cast<std::size_t>(size);
+  }
+  return at;
+}
+
+// Where the value of attribute `name` starts.
+std::size_t value_at(const std::string& b, const std::string& name) {
+  const std::size_t at = b.find(std::string("\0", 1) + name + std::string("\0", 1));
+  return b.find('\0', at + name.size() + 2) + 5;
+}
+
+// An attribute as the header stores it: name, type, declared size, value.
+std::string attribute(const std::string& name, const std::string& type, const std::string& value,
+                      std::int32_t declared) {
+  std::string a = name + std::string("\0", 1) + type + std::string("\0", 1) + std::string(4, '\0') + value;
+  std::memcpy(&a[name.size() + type.size() + 2], &declared, sizeof declared);
+  return a;
+}
+
+// `b` with `extra` added at the end of its header, every block's offset
+// moved past it (the file is otherwise whole).
+std::string with_attribute(const std::string& b, const std::string& extra, int blocks) {
+  const std::size_t end = header_end(b);
+  std::string out = b.substr(0, end) + extra + b.substr(end);
+  for (int i = 0; i < blocks; ++i) {
+    std::uint64_t offset = 0;
+    std::memcpy(&offset, &out[end + 1 + extra.size() + 8 * static_cast<std::size_t>(i)], sizeof offset);
+    offset += extra.size();
+    std::memcpy(&out[end + 1 + extra.size() + 8 * static_cast<std::size_t>(i)], &offset, sizeof offset);
+  }
+  return out;
+}
+
 TEST(ExrRgbReader, GivesBackBitForBitWhatWriteExrWrote) {
   test::ScratchDir dir;
   for (const auto& [w, h] : {std::pair{1, 1}, std::pair{7, 5}, std::pair{33, 17}, std::pair{64, 48}})
@@ -152,6 +192,69 @@ TEST(ExrRgbReader, TakesNoFileCutShortAndNoChangedCompressedByte) {
     refused += !read_rgb_exr(bad);
   }
   EXPECT_EQ(refused, tried);
+}
+
+TEST(ExrRgbReader, LeavesHeadersOpenExrReadsOtherwiseToOpenImageIo) {
+  // Each file below is one OpenEXR would refuse or read differently from
+  // this reader; it must say nullopt (and OpenImageIO then decides).  The
+  // first one, a harmless attribute added the same way, shows the edits
+  // themselves leave a file it reads.
+  test::ScratchDir dir;
+  const fs::path file = dir / "edited.exr";
+  const FrameImage im = frame(6, 20, false, false);  // two zip blocks
+  write_exr(dir / "good.exr", im);
+  const std::string good = bytes_of(dir / "good.exr");
+  const auto reads = [&](const std::string& bytes) {
+    put(file, bytes);
+    return read_rgb_exr(file).has_value();
+  };
+  ASSERT_TRUE(reads(with_attribute(good, attribute("note", "string", "hello", 5), 2)));
+
+  const std::string bgr = good.substr(value_at(good, "channels"), 55);
+  EXPECT_FALSE(reads(with_attribute(good, attribute("channels", "chlist", bgr, 55), 2))) << "channels twice";
+  EXPECT_FALSE(reads(with_attribute(good, attribute("focus", "float", std::string(32, '\0'), 32), 2)))
+      << "a float declared 32 bytes long";
+  EXPECT_FALSE(reads(with_attribute(good, attribute(std::string(40, 'n'), "string", "x", 1), 2)))
+      << "a long name without the long-names flag";
+  EXPECT_FALSE(reads(with_attribute(good, attribute("thumb", "preview", std::string(8, '\0'), 8), 2)))
+      << "a preview";
+
+  std::string random_order = good;
+  random_order[value_at(good, "lineOrder")] = 2;
+  EXPECT_FALSE(reads(random_order)) << "lineOrder 2 (random)";
+  std::string flat = good;
+  std::memset(&flat[value_at(good, "pixelAspectRatio")], 0, 4);
+  EXPECT_FALSE(reads(flat)) << "pixelAspectRatio 0";
+
+  // Block 1 copied to the file's end and the table pointed there: OpenEXR
+  // reads on from block 0 to where block 1 was, this reader would follow
+  // the table.
+  const std::size_t table = header_end(good) + 1;
+  std::uint64_t second = 0;
+  std::memcpy(&second, &good[table + 8], sizeof second);
+  std::string moved = good + good.substr(second);
+  const std::uint64_t at_end = good.size();
+  std::memcpy(&moved[table + 8], &at_end, sizeof at_end);
+  EXPECT_FALSE(reads(moved)) << "a block away from where the one before it ends";
+
+  fs::create_directory(dir / "folder.exr");
+  EXPECT_FALSE(read_rgb_exr(dir / "folder.exr")) << "a directory";
+}
+
+TEST(ExrRgbReader, ReadsBlocksStoredBottomFirst) {
+  test::ScratchDir dir;
+  const FrameImage im = frame(13, 37, false, false);
+  const fs::path file = dir / "decreasing.exr";
+  OIIO::ImageSpec spec(im.width, im.height, 3, OIIO::TypeDesc::FLOAT);
+  spec.attribute("compression", "zip");
+  spec.attribute("openexr:lineOrder", "decreasingY");
+  auto out = OIIO::ImageOutput::create("openexr");
+  ASSERT_TRUE(out && out->open(file.string(), spec)) << OIIO::geterror();
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, im.rgb.data()));
+  ASSERT_TRUE(out->close());
+  const std::optional<FrameImage> back = read_rgb_exr(file);
+  ASSERT_TRUE(back);
+  EXPECT_TRUE(same_bits(back->rgb, im.rgb));
 }
 
 }  // namespace
