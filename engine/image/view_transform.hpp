@@ -53,9 +53,9 @@ std::array<double, 3> gamut_safe_view(const std::array<double, 3>& c);
 
 // gamut_safe_view of every pixel of interleaved rgb (3 floats a pixel),
 // each channel first times `scale` (the exposure not yet applied), in
-// place, rounded to float.  The very values gamut_safe_view gives pixel by
-// pixel, computed four pixels at a time (the same operations in the same
-// order, in vector registers), a frame's largest share of the view's time.
+// place, rounded to float: gamut_safe_view pixel by pixel, four pixels at
+// a time in vector registers (gamut_safe_view itself is that computation
+// on one colour, so the two are one definition).
 void show_gamut_safe(std::span<float> rgb, double scale);
 
 // The knee of gamut_safe_view, exposed for tests.
