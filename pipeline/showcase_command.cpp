@@ -141,8 +141,16 @@ void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const In
   const CardShape shape = plan.camera == DeliveryCamera::dome ? CardShape::dome : CardShape::flat;
   auto card = [&](const std::string& name, const std::vector<std::string>& lines) {
     const fs::path out = layout.card(name);
-    encode_title_card(card_lines_that_fit(lines, plan.width, plan.height, shape), plan.width, plan.height, card_frames,
-                      o, out, progress_printer(guard, "showcase", "frames"), shape);
+    const std::vector<std::string> shown = card_lines_that_fit(lines, plan.width, plan.height, shape);
+    if (shown.size() < lines.size() || shown == std::vector<std::string>{" "})
+      fmt::print(stderr, "showcase: the {} card's text does not fit a {}x{} frame even broken between words; {} (a larger --size "
+                 "shows it all)\n",
+                 name, plan.width, plan.height,
+                 shown == std::vector<std::string>{" "} ? "the card is blank"
+                                                        : fmt::format("it shows the first {} of its {} lines",
+                                                                      shown.size(), lines.size()));
+    encode_title_card(shown, plan.width, plan.height, card_frames, o, out, progress_printer(guard, "showcase", "frames"),
+                      shape);
     film.push_back(out);
   };
   card("opening", plan.opening);

@@ -29,9 +29,10 @@ enum class CardShape {
 // its size (subtitles).  The scale is the largest whole one that keeps
 // every line within 80% of the box's width and the text block within 70%
 // of its height (the box: the whole frame, or for a dome 1.0 x 0.5 of the
-// disc's radius about the sweet spot, inside the disc).  Throws
-// std::invalid_argument when there are no lines or the text cannot fit even
-// at one image pixel per font pixel.
+// disc's radius about the sweet spot, inside the disc).  A card too small
+// for a line as written at one image pixel per font pixel breaks its lines
+// between words instead.  Throws std::invalid_argument when there are no
+// lines or the text cannot fit even so.
 Rgb8Image title_card(int width, int height, const std::vector<std::string>& lines, CardShape shape = CardShape::flat);
 
 // The card shown for `frames` frames, encoded into `out` with `options` (use

@@ -14,6 +14,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "image/image_io.hpp"
 #include "image/srgb.hpp"
@@ -116,6 +117,34 @@ TEST(encode_picture, TitleCardScalesTextToFit) {
   EXPECT_NEAR((y0 + y1) / 2.0, 180, 8);
   EXPECT_THROW(lc::title_card(64, 36, {"FAR TOO LONG FOR THIS CARD"}), std::invalid_argument);
   EXPECT_THROW(lc::title_card(64, 36, {}), std::invalid_argument);
+}
+
+// The paper's titles on a small dome master (192 and 256 pixels, the
+// preview's): a title wider than the dome's text box is broken between words
+// instead of leaving the card blank, and every lit pixel lies inside the disc.
+TEST(encode_picture, TitleCardBreaksLinesToFitASmallDome) {
+  for (const int side : {192, 256})
+    for (const char* title : {"A SPINNING BLACK HOLE", "FALLING PAST IT", "TWO CHARGED BLACK HOLES", "LIGHTCONE"}) {
+      lc::Rgb8Image card;
+      ASSERT_NO_THROW(card = lc::title_card(side, side, {title}, lc::CardShape::dome)) << side << " " << title;
+      int lit = 0, rows_with_ink = 0;
+      for (int y = 0; y < side; ++y) {
+        bool row_lit = false;
+        for (int x = 0; x < side; ++x)
+          if (card.pixels[3 * (static_cast<std::size_t>(y) * side + static_cast<std::size_t>(x))] > 128) {
+            ++lit;
+            row_lit = true;
+            const double dx = x + 0.5 - 0.5 * side, dy = y + 0.5 - 0.5 * side;
+            EXPECT_LE(dx * dx + dy * dy, 0.25 * side * side) << side << " " << title << " at " << x << "," << y;
+          }
+        rows_with_ink += row_lit;
+      }
+      EXPECT_GT(lit, 0) << side << " " << title << ": a blank card";
+      // Two words or more that did not fit one line take two lines (14 rows of ink at least).
+      if (std::string_view(title).size() > 16) EXPECT_GE(rows_with_ink, 14) << side << " " << title;
+    }
+  // A single word wider than the box still cannot be drawn.
+  EXPECT_THROW(lc::title_card(64, 64, {"UNBREAKABLEWORD"}, lc::CardShape::dome), std::invalid_argument);
 }
 
 TEST(contact_sheet, PicksSpreadEvenlyWithFirstAndLast) {
