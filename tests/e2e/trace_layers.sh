@@ -11,6 +11,9 @@
 #      name, data[row, column] against --pixel column,row.
 #   4. `lightcone --version` names the Open MPI it was built with, the one
 #      mpirun here is.
+#   5. docs/layers.md's second reader, for a pip or conda Python (numpy
+#      alone, docs/python/lightcone_exr.py), run as written with OpenImageIO
+#      unimportable, prints the same and reads every channel as OIIO does.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 SHOT="$SRC/shots/bench/kerr_disk.lua"
@@ -91,5 +94,45 @@ mpi=$(mpirun --version 2>/dev/null | sed -n 's/^mpirun (Open MPI) \([0-9.]*\).*/
 [ -n "$mpi" ] || fail "mpirun --version names no Open MPI version"
 grep -q "^MPI: Open MPI $mpi (built against; loaded: Open MPI v$mpi)" version.out ||
   fail "--version does not name Open MPI $mpi: $(cat version.out)"
+
+# 5. docs/layers.md's reader for a pip or conda Python (numpy alone:
+# docs/python/lightcone_exr.py), as written, with OpenImageIO unimportable:
+# it prints what the docs say, and reads every channel of the frame exactly
+# as OpenImageIO does.
+CHECKS=$((CHECKS + 1))
+"$PY" - "$SRC/docs/layers.md" <<'PY' >reader_numpy.py || fail "docs/layers.md has no second Python reader"
+import re, sys
+blocks = re.findall(r"```python\n(.*?)```", open(sys.argv[1]).read(), re.S)
+if len(blocks) < 2:
+    sys.exit(1)
+print(blocks[1], end="")
+PY
+grep -q 'import lightcone_exr' reader_numpy.py || fail "docs/layers.md's second reader does not use lightcone_exr"
+mkdir -p docs && cp -r "$SRC/docs/python" docs/
+got=$("$PY" -c 'import sys; sys.modules["OpenImageIO"] = None; exec(open("reader_numpy.py").read())' 2>&1) ||
+  fail "docs/layers.md's numpy reader failed: $got"
+[ "$got" = "$said" ] || fail "docs/layers.md's numpy reader printed '$got'; the docs say '$said'"
+"$PY" - out/kerr/kerr_disk.0000.exr <<'PY' || fail "docs/python/lightcone_exr.py and OpenImageIO disagree"
+import sys
+import numpy as np
+import OpenImageIO as oiio
+sys.path.insert(0, "docs/python")
+import lightcone_exr
+frame = lightcone_exr.read(sys.argv[1])
+exr = oiio.ImageInput.open(sys.argv[1])
+names, data = exr.spec().channelnames, exr.read_image("float")
+if sorted(frame.channels) != sorted(names):
+    sys.exit(f"channels {sorted(frame.channels)}, OpenImageIO {sorted(names)}")
+for c in names:
+    if not np.array_equal(frame.channels[c], data[:, :, names.index(c)], equal_nan=True):
+        sys.exit(f"channel {c} differs")
+if frame.header.get("lightcone/shot") != "kerr_disk":
+    sys.exit(f"header: {frame.header}")
+PY
+# A file it cannot read is refused with its name, not misread.
+printf 'not an exr' >bad.exr
+bad=$("$PY" -c 'import sys; sys.path.insert(0, "docs/python"); import lightcone_exr; lightcone_exr.read("bad.exr")' 2>&1) &&
+  fail "lightcone_exr read a file that is no EXR"
+grep -q 'bad.exr: not an OpenEXR file' <<<"$bad" || fail "lightcone_exr's refusal does not name the file: $bad"
 
 e2e_end
