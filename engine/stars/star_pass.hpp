@@ -26,8 +26,12 @@
 // magnification.  Only pixels the camera saw sky through get stars: a star
 // behind the disk's edge in a quad that touches the disk is not drawn.
 
+#include <array>
+#include <cstddef>
 #include <span>
+#include <vector>
 
+#include "core/color.hpp"
 #include "core/image_wrap.hpp"
 #include "core/sky_point.hpp"
 #include "core/tensor.hpp"
@@ -53,6 +57,41 @@ struct StarPassOptions {
   // a star's light near an edge lands on the pixels across it.
   ImageWrap wrap{};
 };
+
+// A star image as stages 1-5 find it: the star (its index in the field),
+// its place (pixel units from the image's top-left corner), its
+// magnification and its light as the light model shows it there, before
+// the magnification.
+struct FoundStarImage {
+  std::size_t star;
+  double x, y, magnification;
+  Color light;
+};
+
+// Where a star image's light goes in a blurred frame (stars/star_streaks.hpp):
+// half of it spread evenly along the straight path from `before` to the
+// image's place, half from there to `after` (pixel units), the star's path
+// during its instant's share of the shutter.  Both ends at the image's place:
+// a point, drawn as the unblurred pass draws it.
+struct StreakPath {
+  std::array<double, 2> before, after;
+};
+
+// Stages 1-5: every star image of the frame whose rays are `sky` (width x
+// height), in a fixed order (rows of tiles top to bottom, as one thread
+// finds them).  Adds the CPU time taken, summed over the threads, to
+// *cpu_seconds if given.  Throws std::invalid_argument when the frame is
+// smaller than 2 x 2 or `sky` does not match its size.
+std::vector<FoundStarImage> find_star_images(std::span<const SkyPoint> sky, int width, int height,
+                                             const StarField& field, const CameraDirections& camera,
+                                             const StarPassOptions& options, double* cpu_seconds = nullptr);
+
+// Stages 6-7: the light of `images` landed on the pixels and added to `rgb`
+// (3 floats per pixel, width x height), each image at its place, or along
+// its path where `paths` (one per image, or empty) gives one.
+void draw_star_images(std::span<const FoundStarImage> images, std::span<const StreakPath> paths, int width,
+                      int height, const StarField& field, const CameraDirections& camera,
+                      const StarPassOptions& options, std::span<float> rgb, double* cpu_seconds = nullptr);
 
 // Adds the stars' light to `rgb` (linear RGB, 3 floats per pixel, row by
 // row, width x height); `sky` holds each pixel's ray (width x height).
