@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "core/file_checks.hpp"
+#include "lua/determinism.hpp"
 #include "lua/library_guards.hpp"
 #include "lua/string_patterns.hpp"
 
@@ -889,6 +890,7 @@ Sandbox::Sandbox(std::vector<std::filesystem::path> require_dirs, SandboxLimits 
   lua_pushcfunction(L, &print_to_stderr);
   lua_setglobal(L, "print");
   install_library_guards(L);
+  install_determinism(L);
   install_string_patterns(L);
 
   lua_pushcfunction(L, &Impl::message_handler);
