@@ -1064,4 +1064,20 @@ return table.concat({tostring(b), tostring(a), tostring(b), tostring(print), tos
   }
 }
 
+// A module name of any length: the message keeps its reason (the name is
+// cut, not the message).
+TEST(LuaSandbox, RequireOfAVeryLongNameKeepsTheReason) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "long.lua", "require(string.rep('a', 5000))\n");
+  Sandbox sandbox({dir.path()});
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
+  EXPECT_NE(msg.find("long.lua:1: cannot read module '" + std::string(200, 'a') + "... (5000 bytes)' from "),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find(": File name too long"), std::string::npos) << msg;
+  const fs::path bad = script(dir, "bad.lua", "require(string.rep('/', 5000))\n");
+  const std::string bad_msg = error_of<ScriptError>([&] { sandbox.run_file(bad); });
+  EXPECT_NE(bad_msg.find("... (5000 bytes): use dot-separated names"), std::string::npos) << bad_msg;
+}
+
 }  // namespace
