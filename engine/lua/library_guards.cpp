@@ -92,14 +92,13 @@ int guard_handler(lua_State* L) {
 // coroutines may still yield across pcall and xpcall. `type` is captured:
 // a script may reassign the global.
 constexpr const char* kPrelude = R"lua(
-local pcall_builtin, xpcall_builtin, tostring_builtin, sort_builtin, nested, guard_handler = ...
+local pcall_builtin, xpcall_builtin, sort_builtin, nested, guard_handler = ...
 local type = type
 function pcall(...) return pcall_builtin(...) end
 function xpcall(f, handler, ...)
   if type(handler) ~= "function" then return xpcall_builtin(f, handler, ...) end
   return xpcall_builtin(f, guard_handler(handler), ...)
 end
-function tostring(...) return tostring_builtin(...) end
 function table.sort(t, comp, ...)
   if type(comp) == "function" then comp = nested(comp) end
   return sort_builtin(t, comp, ...)
@@ -123,13 +122,12 @@ void install_library_guards(lua_State* L) {
   }
   lua_getglobal(L, "pcall");
   lua_getglobal(L, "xpcall");
-  lua_getglobal(L, "tostring");
   lua_getglobal(L, LUA_TABLIBNAME);
   lua_getfield(L, -1, "sort");
   lua_remove(L, -2);
   lua_pushcfunction(L, &make_nested);
   lua_pushcfunction(L, &guard_handler);
-  lua_call(L, 6, 0);
+  lua_call(L, 5, 0);
 }
 
 }  // namespace lc::lua

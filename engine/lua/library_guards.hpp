@@ -17,7 +17,8 @@
 //   is a value's own __call metamethod; called through a Lua function it is.
 // - tostring tail-calls a __tostring metamethod without running an
 //   instruction, so `__tostring = tostring` looped where the hook never
-//   fired; through a Lua function it runs instructions.
+//   fired; through a Lua function it runs instructions. That function is
+//   determinism.cpp's, which also gives addresses deterministic names.
 //
 // print, require and the string library's pattern functions are the
 // sandbox's own and hold NestedCalls themselves (sandbox.cpp,

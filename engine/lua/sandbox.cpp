@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "core/file_checks.hpp"
+#include "lua/determinism.hpp"
 #include "lua/library_guards.hpp"
 #include "lua/string_patterns.hpp"
 
@@ -95,6 +96,18 @@ constexpr std::size_t kMaxMessageBytes = 4096;
 std::string clipped(std::string_view text) {
   if (text.size() <= kMaxMessageBytes) return std::string(text);
   return fmt::format("{}... ({} more bytes)", text.substr(0, kMaxMessageBytes), text.size() - kMaxMessageBytes);
+}
+
+// The most of a module name or path a require message quotes: names may
+// be of any length, and a message is cut at kMaxMessageBytes, which must
+// not take its reason.
+constexpr std::size_t kShownNameBytes = 200;
+
+// `text` as a require message quotes it: whole up to kShownNameBytes, else
+// its start and its length.
+std::string shortened(std::string_view text) {
+  if (text.size() <= kShownNameBytes) return std::string(text);
+  return fmt::format("{}... ({} bytes)", text.substr(0, kShownNameBytes), text.size());
 }
 
 // Reads a whole Lua source file into `out`. Returns "" or why it cannot:
@@ -673,11 +686,13 @@ struct Sandbox::Impl {
     std::size_t len = 0;
     const char* p = lua_tolstring(L, 1, &len);
     const std::string name(p, len);
+    const std::string shown = shortened(name);
     if (!valid_module_name(name)) {
       throw failure(fmt::format(
-          "invalid module name {:?}: use dot-separated names of letters, digits and '_' "
+          "invalid module name {:?}{}: use dot-separated names of letters, digits and '_' "
           "(like 'lib.orbits'), not paths",
-          name));
+          name.substr(0, kShownNameBytes),
+          name.size() > kShownNameBytes ? fmt::format("... ({} bytes)", name.size()) : std::string()));
     }
     lua_settop(L, 1);
     lua_rawgeti(L, LUA_REGISTRYINDEX, modules_ref);
@@ -687,8 +702,9 @@ struct Sandbox::Impl {
     lua_settop(L, 1);
 
     if (auto it = std::find(loading.begin(), loading.end(), name); it != loading.end()) {
-      std::vector<std::string> chain(it, loading.end());
-      chain.push_back(name);
+      std::vector<std::string> chain;
+      for (; it != loading.end(); ++it) chain.push_back(shortened(*it));
+      chain.push_back(shown);
       throw failure(fmt::format("require cycle: {}", join(chain, " -> ")));
     }
 
@@ -703,12 +719,12 @@ struct Sandbox::Impl {
       std::error_code ec;
       const std::filesystem::path real = std::filesystem::canonical(candidate, ec);
       if (ec == std::errc::no_such_file_or_directory || ec == std::errc::not_a_directory) {
-        searched.push_back(candidate.string());
+        searched.push_back(shortened(candidate.string()));
         continue;
       }
       if (ec) {
         throw failure(
-            fmt::format("cannot read module '{}' from {}: {}", name, candidate.string(), ec.message()));
+            fmt::format("cannot read module '{}' from {}: {}", shown, shortened(candidate.string()), ec.message()));
       }
       // Checked before anything is read: a link in the shot's folder to
       // /etc/shadow would otherwise be parsed, and a line of it quoted in
@@ -716,25 +732,26 @@ struct Sandbox::Impl {
       if (std::none_of(require_roots.begin(), require_roots.end(),
                        [&](const auto& root) { return is_within(real, root); })) {
         std::vector<std::string> dirs;
-        for (const auto& d : require_dirs) dirs.push_back(d.string());
+        for (const auto& d : require_dirs) dirs.push_back(shortened(d.string()));
         throw failure(fmt::format(
-            "module '{}' ({}) leads through a link to {}, outside the folders modules are read from ({})", name,
-            candidate.string(), real.string(), join(dirs, ", ")));
+            "module '{}' ({}) leads through a link to {}, outside the folders modules are read from ({})", shown,
+            shortened(candidate.string()), shortened(real.string()), join(dirs, ", ")));
       }
       if (const std::string problem = read_source_file(real, limits.memory_bytes, source); !problem.empty()) {
-        throw failure(fmt::format("cannot read module '{}' from {}: {}", name, candidate.string(), problem));
+        throw failure(
+            fmt::format("cannot read module '{}' from {}: {}", shown, shortened(candidate.string()), problem));
       }
       found = std::move(candidate);
       break;
     }
     if (found.empty()) {
-      throw failure(fmt::format("module '{}' not found (searched: {})", name,
+      throw failure(fmt::format("module '{}' not found (searched: {})", shown,
                                            searched.empty() ? "no directories" : join(searched, ", ")));
     }
     if (looks_like_bytecode(source)) {
       throw failure(fmt::format(
-          "module '{}' ({}) is precompiled bytecode, which is refused: require Lua source", name,
-          found.string()));
+          "module '{}' ({}) is precompiled bytecode, which is refused: require Lua source", shown,
+          shortened(found.string())));
     }
     note_loaded(found);
     std::string chunkname = "@";  // built in two steps: GCC 12 misreports "@" + s (-Wrestrict, PR 105329)
@@ -889,6 +906,7 @@ Sandbox::Sandbox(std::vector<std::filesystem::path> require_dirs, SandboxLimits 
   lua_pushcfunction(L, &print_to_stderr);
   lua_setglobal(L, "print");
   install_library_guards(L);
+  install_determinism(L);
   install_string_patterns(L);
 
   lua_pushcfunction(L, &Impl::message_handler);

@@ -7,7 +7,9 @@
 // runs under a wall-clock limit and the whole state under a memory cap; calls
 // nested through C functions are bounded (detail::NestedCall), and the
 // library functions that could escape these limits are replaced
-// (library_guards.hpp, string_patterns.hpp). Every failure surfaces in C++ as
+// (library_guards.hpp, string_patterns.hpp). What LuaJIT takes from the
+// state's hash seed or from addresses (the order of pairs, tostring({})) is
+// made deterministic (determinism.hpp). Every failure surfaces in C++ as
 // ScriptError with the script's file:line.
 
 #include <lua.hpp>

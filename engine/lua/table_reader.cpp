@@ -49,6 +49,9 @@ std::string describe(lua_State* L, int index) {
 // have a key of any length.
 constexpr std::size_t kLongestKey = 64;
 
+// How many __index tables deep refuse_inherited looks (a chain may loop).
+constexpr int kMaxInheritance = 100;
+
 // `key` as a message quotes it.
 std::string shown_key(std::string_view key) {
   return key.size() <= kLongestKey ? std::string(key) : fmt::format("{}...", key.substr(0, kLongestKey));
@@ -156,7 +159,36 @@ int TableReader::fetch(std::string_view key) {
   lua_pushlstring(L_, key.data(), key.size());
   lua_rawget(L_, -2);
   lua_remove(L_, -2);
-  return lua_type(L_, -1);
+  const int type = lua_type(L_, -1);
+  if (type == LUA_TNIL) refuse_inherited(key);
+  return type;
+}
+
+void TableReader::refuse_inherited(std::string_view key) const {
+  const StackGuard guard(L_);
+  push();
+  // Each level: the metatable of the table on top, then its __index.
+  for (int level = 0; level < kMaxInheritance && lua_getmetatable(L_, -1) != 0; ++level) {
+    lua_pushliteral(L_, "__index");
+    lua_rawget(L_, -2);
+    const int type = lua_type(L_, -1);
+    if (type == LUA_TNIL) return;
+    if (type != LUA_TTABLE) {
+      fail(fmt::format(
+          "field '{}' is not in the table itself, and its metatable has an __index {}, which the engine does not "
+          "call: it reads a table's own fields only; set '{}' in the table",
+          shown_key(key), luaL_typename(L_, -1), shown_key(key)));
+    }
+    lua_pushlstring(L_, key.data(), key.size());
+    lua_rawget(L_, -2);
+    if (!lua_isnil(L_, -1)) {
+      fail(fmt::format(
+          "field '{}' is inherited through a metatable's __index, which the engine does not follow: it reads a "
+          "table's own fields only; set '{}' in the table",
+          shown_key(key), shown_key(key)));
+    }
+    lua_pop(L_, 1);
+  }
 }
 
 int TableReader::fetch_at(std::size_t i) {

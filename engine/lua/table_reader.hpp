@@ -31,8 +31,12 @@ class FieldError : public std::runtime_error {
 // frames). Ties go to the earlier candidate; `word` itself is no candidate.
 std::string nearest(std::string_view word, std::span<const std::string> candidates);
 
-// Reads one table strictly. All access is raw (metatables are ignored, no
-// Lua code runs) and every call leaves the Lua stack as it found it. The
+// Reads one table strictly. All access is raw (no Lua code runs) and every
+// call leaves the Lua stack as it found it. A field the table lacks but a
+// metatable's __index would give is refused, naming it, rather than read
+// or ignored: a field absent where the __index is a table that holds it,
+// or absent at all where the __index is a function (which would run
+// unprotected). The
 // reader pins the table with a registry reference, so readers and their child
 // readers may live in any order, but none may outlive the lua_State.
 // Getters throw FieldError; inside a lua_CFunction wrap them in protect().
@@ -106,7 +110,8 @@ class TableReader {
   std::string read_string(const Slot& slot, int type);
   TableReader read_table(const Slot& slot, int type);
   [[noreturn]] void fail(const std::string& problem) const;
-  [[noreturn]] void missing(std::string_view key) const;  // "missing field", with a near-miss hint
+  [[noreturn]] void missing(std::string_view key) const;
+  void refuse_inherited(std::string_view key) const;  // throws if a metatable's __index may give the field  // "missing field", with a near-miss hint
   [[noreturn]] void wrong_type(const Slot& slot, const char* expected) const;
 
   lua_State* L_ = nullptr;

@@ -20,7 +20,9 @@ namespace {
 
 // Builds {__kind = kind, __where = "file:line", <every argument field>} from
 // the call's argument table (a missing table reads as {}), leaving it on the
-// stack top, and returns a reader of it.
+// stack top, and returns a reader of it. The copy gets the argument's
+// metatable, so that the reader refuses fields its __index would give (the
+// copy holds own fields only); construct() takes it off again.
 lua::TableReader tagged_copy(lua_State* L, const char* kind) {
   if (lua_isnoneornil(L, 1)) {
     lua_settop(L, 0);
@@ -42,6 +44,7 @@ lua::TableReader tagged_copy(lua_State* L, const char* kind) {
   const std::string where = lua::Sandbox::where(L, 1);
   lua_pushstring(L, where.c_str());
   lua_setfield(L, out, "__where");
+  if (lua_getmetatable(L, 1) != 0) lua_setmetatable(L, out);
   return lua::TableReader(L, out, kind);
 }
 
@@ -58,6 +61,8 @@ int construct(lua_State* L) {
       lua::TableReader r = tagged_copy(L, kind);
       validate(r);
     }
+    lua_pushnil(L);
+    lua_setmetatable(L, -2);
     return 1;
   });
 }

@@ -1,6 +1,8 @@
 #include "script/shot.hpp"
 
 #include <algorithm>
+#include <iterator>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -11,6 +13,66 @@
 #include "script/script_paths.hpp"
 
 namespace lc {
+
+namespace {
+
+// Bounds of scene_fields' walk: how deep into nested tables, and how many
+// fields in all (a scene that shares one table many times over could make
+// the walk explode; then the comparison is skipped).
+constexpr int kMaxFieldDepth = 8;
+constexpr std::size_t kMaxFields = 100000;
+
+// Fields of a scene that are the frame's alone: an instant's are not used,
+// so they may be absent there.
+constexpr std::string_view kFrameOnlyFields[] = {"exposure", "shutter"};
+
+// Appends to `out` the path ("camera.yaw", "objects[2].position.r") of
+// every field of the table at the stack top and of the tables in it (keys
+// "__..." are the engine's tags and skipped). `walking` holds the tables
+// being walked, so a table holding itself ends the walk there. Raw access;
+// lua_next's order does not matter, the caller sorts. Returns false once
+// more than kMaxFields were found.
+bool collect_fields(lua_State* L, const std::string& prefix, int depth, std::vector<const void*>& walking,
+                    std::vector<std::string>& out) {
+  if (depth > kMaxFieldDepth ||
+      std::find(walking.begin(), walking.end(), lua_topointer(L, -1)) != walking.end())
+    return true;
+  walking.push_back(lua_topointer(L, -1));
+  bool within = true;
+  lua_pushnil(L);
+  while (within && lua_next(L, -2) != 0) {
+    std::string path;
+    if (lua_type(L, -2) == LUA_TSTRING) {
+      std::size_t n = 0;
+      const char* p = lua_tolstring(L, -2, &n);
+      const std::string_view key(p, n);
+      if (!key.starts_with("__")) path = prefix.empty() ? std::string(key) : fmt::format("{}.{}", prefix, key);
+    } else if (lua_type(L, -2) == LUA_TNUMBER) {
+      path = fmt::format("{}[{}]", prefix, lua_tonumber(L, -2));
+    }
+    if (!path.empty()) {
+      if (lua_istable(L, -1)) within = collect_fields(L, path, depth + 1, walking, out);
+      out.push_back(std::move(path));
+      within = within && out.size() <= kMaxFields;
+    }
+    lua_pop(L, 1);
+  }
+  if (!within) lua_pop(L, 1);  // the key lua_next left
+  walking.pop_back();
+  return within;
+}
+
+// The sorted paths of the fields of the scene table at the stack top (see
+// collect_fields), or nullopt if it has too many to compare.
+std::optional<std::vector<std::string>> scene_fields(lua_State* L) {
+  std::vector<const void*> walking;
+  std::vector<std::string> out;
+  if (!collect_fields(L, "", 0, walking, out)) return std::nullopt;
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
 
 Shot::Shot(const std::filesystem::path& file, lua::SandboxLimits limits) : file_(file), limits_(std::move(limits)) {
   unused_.emplace(load(info_));
@@ -47,23 +109,26 @@ void Shot::note_loaded_files(const lua::Sandbox& sandbox) {
     if (std::find(loaded_files_.begin(), loaded_files_.end(), p) == loaded_files_.end()) loaded_files_.push_back(p);
 }
 
-SceneSpec Shot::frame(int i) {
+SceneSpec Shot::frame(int i) { return frame(i, nullptr); }
+
+SceneSpec Shot::frame(int i, FieldPaths* fields) {
   const std::string ctx = fmt::format("{}: frame {}", file_.string(), i);
   if (i < 0 || i >= info_.frames)
     throw lua::FieldError(fmt::format("{}: no such frame (the shot has frames 0 to {})", ctx, info_.frames - 1));
-  return evaluate(i, ctx);
+  return evaluate(i, ctx, fields);
 }
 
 FrameSpecs Shot::frame_specs(int i) {
   FrameSpecs out;
-  out.frame = frame(i);
+  FieldPaths frame_fields;
+  out.frame = frame(i, &frame_fields);
   out.shutter = frame_shutter(info_.shot_shutter(), out.frame.shutter, shutter_override_);
   if (out.shutter.closed()) return out;
   const std::string frame_key = scene_key(out.frame);
   bool changes = false;
   for (const double t : out.shutter.instants()) {
     const double at = std::clamp(i + t, 0.0, static_cast<double>(info_.frames - 1));
-    SceneSpec s = at == i ? out.frame : evaluate_instant(i, at);
+    SceneSpec s = at == i ? out.frame : evaluate_instant(i, at, frame_fields);
     if (s.spacetime.index() != out.frame.spacetime.index())
       throw std::invalid_argument(fmt::format(
           "{}: frame {}: the spacetime is {} at the frame but {} at {:g}, within its shutter; a shutter cannot be "
@@ -87,14 +152,32 @@ FrameSpecs Shot::frame_specs(int i) {
   return out;
 }
 
-SceneSpec Shot::evaluate_instant(int i, double at) {
+SceneSpec Shot::evaluate_instant(int i, double at, const FieldPaths& frame_fields) {
   const std::string ctx = fmt::format("{}: frame {} at {:g}", file_.string(), i, at);
   const std::string hint = fmt::format(
       " (frame {}'s shutter is open: frame(i) is also called at fractional i, the instants of its shutter; a script "
       "that only knows whole frames can close it with `shutter = 0`: docs/motion_blur.md)",
       i);
   try {
-    return evaluate(at, ctx);
+    FieldPaths fields;
+    SceneSpec s = evaluate(at, ctx, &fields);
+    // A field set at the frame and absent at an instant would take its
+    // default there without a word: most often a table indexed by i.
+    if (frame_fields && fields) {
+      std::vector<std::string> lost;
+      std::set_difference(frame_fields->begin(), frame_fields->end(), fields->begin(), fields->end(),
+                          std::back_inserter(lost));
+      std::erase_if(lost, [](const std::string& f) {
+        return std::find(std::begin(kFrameOnlyFields), std::end(kFrameOnlyFields), f) != std::end(kFrameOnlyFields);
+      });
+      if (!lost.empty())
+        throw lua::FieldError(fmt::format(
+            "{}: field '{}' is set at frame {} but not at {:g}: a table indexed by a fractional i gives nil (index "
+            "by whole frames, math.floor(i), or interpolate between them), or the field appears or disappears "
+            "within the shutter, a cut",
+            ctx, lost.front(), i, at));
+    }
+    return s;
   } catch (const lua::FieldError& e) {
     throw lua::FieldError(std::string(e.what()) + hint);
   } catch (const lua::ScriptError& e) {
@@ -102,7 +185,7 @@ SceneSpec Shot::evaluate_instant(int i, double at) {
   }
 }
 
-SceneSpec Shot::evaluate(double at, const std::string& ctx) {
+SceneSpec Shot::evaluate(double at, const std::string& ctx, FieldPaths* fields) {
   ShotInfo unused_info;
   Loaded fresh = unused_ ? std::move(*unused_) : load(unused_info);
   unused_.reset();
@@ -124,6 +207,7 @@ SceneSpec Shot::evaluate(double at, const std::string& ctx) {
   try {
     lua::TableReader t(L, -1, ctx);
     SceneSpec fs = read_scene_spec(t);
+    if (fields != nullptr) *fields = scene_fields(L);
     lua_pop(L, 1);
     fs.camera = delivered(fs.camera, delivery_);
     return fs;

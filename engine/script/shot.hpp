@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "camera/delivery.hpp"
@@ -63,6 +64,12 @@ class Shot {
   std::vector<std::filesystem::path> asset_dirs() const;
 
  private:
+  // The sorted paths of the fields a frame's scene table sets
+  // ("camera.yaw"), to compare an instant's with its frame's; nullopt for
+  // a scene too large to compare.
+  using FieldPaths = std::optional<std::vector<std::string>>;
+  // frame(i), also noting the paths of its fields if `fields` is given.
+  SceneSpec frame(int i, FieldPaths* fields);
   // A sandbox that has run the script, and its frame function.
   struct Loaded {
     lua::Sandbox sandbox;
@@ -72,11 +79,13 @@ class Shot {
   // into `info`; throws as the constructor does.
   Loaded load(ShotInfo& info);
   // The script's frame(at) (at: a frame number, fractional at a shutter's
-  // instants), its errors prefixed with `ctx`.
-  SceneSpec evaluate(double at, const std::string& ctx);
+  // instants), its errors prefixed with `ctx`; the paths of its scene's
+  // fields into `fields` if given.
+  SceneSpec evaluate(double at, const std::string& ctx, FieldPaths* fields = nullptr);
   // evaluate at `at`, an instant of frame i's shutter, its errors saying
-  // so.
-  SceneSpec evaluate_instant(int i, double at);
+  // so. Throws lua::FieldError where a field of the frame's scene
+  // (`frame_fields`) is absent at the instant.
+  SceneSpec evaluate_instant(int i, double at, const FieldPaths& frame_fields);
   void note_loaded_files(const lua::Sandbox& sandbox);
 
   std::filesystem::path file_;

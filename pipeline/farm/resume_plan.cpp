@@ -56,14 +56,23 @@ std::string explain_stale(const FrameStore& store, const ShotSurvey& survey, con
     reasons.push_back(fmt::format("{} rendered at {}, this render asks for {}", frames_were(group.second), desc,
                                   settings.describe(group.first)));
   if (!by_inputs.empty()) {
-    std::vector<std::string> changed;
+    // A file the journal never recorded is one the frames did not read
+    // (a catalogue or sky image now at another path).
+    std::vector<std::string> changed, unread;
     for (const auto& [path, hash] : survey.files) {
       auto it = store.journal().inputs.find(path);
-      if (it != store.journal().inputs.end() && it->second != hash) changed.push_back(path);
+      if (it == store.journal().inputs.end()) unread.push_back(path);
+      else if (it->second != hash) changed.push_back(path);
     }
-    reasons.push_back(fmt::format("{} rendered from {}", frames_were(by_inputs),
-                                  changed.empty() ? std::string("other inputs (the script, its modules or sky images)")
-                                                  : fmt::format("other versions of: {}", fmt::join(changed, ", "))));
+    std::vector<std::string> what;
+    if (!changed.empty()) what.push_back(fmt::format("other versions of: {}", fmt::join(changed, ", ")));
+    if (!unread.empty())
+      what.push_back(fmt::format("other files than this render reads: {} {} not among them", fmt::join(unread, ", "),
+                                 unread.size() == 1 ? "was" : "were"));
+    reasons.push_back(fmt::format(
+        "{} rendered from {}", frames_were(by_inputs),
+        what.empty() ? std::string("other inputs (the script, its modules, sky images or star catalogues)")
+                     : fmt::format("{}", fmt::join(what, "; and from "))));
   }
   return fmt::format("{}", fmt::join(reasons, "; "));
 }

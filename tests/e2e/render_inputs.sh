@@ -32,5 +32,13 @@ cmp -s before.exr out/catalogue.0000.exr || fail "the refused resume changed fra
 "$LIGHTCONE" render catalogue.lua --out out --force --progress 0 2>r2.log || fail "--force: $(cat r2.log)"
 cmp -s before.exr out/catalogue.0000.exr && fail "frame 0 was not rendered again with the new catalogue"
 "$LIGHTCONE" encode out -o film.mp4 2>enc.log || fail "encode after --force: $(cat enc.log)"
+# The catalogue named at another path, with other stars: the refusal names
+# it (issue 43; it said "other inputs (the script, its modules or sky
+# images)").
+"$LIGHTCONE" render catalogue.lua --out moved --frames 0 --progress 0 2>m1.log || fail "moved: $(cat m1.log)"
+{ star 064508.92 -164258.0 -1.44 00.01; star 002000.00 +100000.0 00.03 -0.00; } >other.dat
+LIGHTCONE_STAR_CATALOGUE="$WORK/other.dat" expect_error moved \
+  "frame 0 was rendered from other files than this render reads: $WORK/other.dat was not among them" -- \
+  "$LIGHTCONE" render catalogue.lua --out moved --progress 0
 echo "render_inputs: $CHECKS error checks, $FAILURES failures"
 [ "$FAILURES" -eq 0 ]

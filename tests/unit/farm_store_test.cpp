@@ -13,6 +13,7 @@
 #include "image/image_io.hpp"
 #include "render/renderer.hpp"
 #include "scratch_dir.hpp"
+#include "test_errors.hpp"
 #include "tiny_frame.hpp"
 
 namespace lc::farm {
@@ -89,6 +90,27 @@ TEST(FarmStore, RefusalNamesTheChangedInputAndForceRendersOnlyThose) {
   EXPECT_EQ(plan.todo, (std::vector<int>{0, 2}));
   EXPECT_EQ(plan.stale, (std::vector<int>{0}));
   EXPECT_EQ(plan.done, (std::vector<int>{1}));
+}
+
+// A file the journal never recorded (a catalogue now at another path) is
+// named, not "other inputs" (issue 43).
+TEST(FarmStore, RefusalNamesAFileTheFramesDidNotRead) {
+  test::ScratchDir dir;
+  const FrameSettings st{4, 2, 1, false};
+  {
+    FrameStore store(dir.path(), "s");
+    store.note_inputs({{"/x/shot.lua", "00000000000000aa"}, {"/x/stars.dat", "00000000000000dd"}});
+    store.write_frame(0, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, Look{});
+  }
+  FrameStore store(dir.path(), "s");
+  ShotSurvey survey;
+  survey.files["/x/shot.lua"] = "00000000000000aa";
+  survey.files["/y/other.dat"] = "00000000000000ee";
+  survey.frames[0].inputs = "00000000000000bb";
+  const std::string e = test::error_of([&] { plan_resume(store, survey, st, {0}, false, "s"); });
+  EXPECT_NE(e.find("frame 0 was rendered from other files than this render reads: /y/other.dat was not among them"),
+            std::string::npos)
+      << e;
 }
 
 TEST(FarmStore, TemporariesOfAKilledRenderAreRemoved) {

@@ -972,4 +972,112 @@ TEST(LuaSandbox, ScriptsAndModulesAreRegularFiles) {
   EXPECT_EQ(dir_msg, "cannot read script " + dir.path().string() + ": Is a directory");
 }
 
+// What a script sees must not depend on the state's hash seed or on
+// addresses (issue 43): every frame runs in a fresh state, and LuaJIT seeds
+// each one's string hash anew. pairs walks integers, other numbers,
+// strings by bytes, then booleans; the same in every state.
+TEST(LuaSandbox, PairsWalksTheSameOrderInEveryState) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "order.lua", R"(
+local t = {approach = 10, hold = 0.5, pan = 3, zoom = 1, [true] = 1, [false] = 0, [2.5] = 1, [-1] = 1,
+           "one", "two", [10] = 1, Zed = 1, ["a\0b"] = 1, a = 1, ab = 1}
+local out = {}
+for k, v in pairs(t) do out[#out + 1] = tostring(k) end
+local walked = {}
+for k in next, t do walked[#walked + 1] = tostring(k) end
+local each = {}
+table.foreach(t, function(k) each[#each + 1] = tostring(k) end)
+local yaw = 0
+for _, v in pairs({approach = 10, hold = 0.5, pan = 3}) do yaw = yaw / 2 + v end
+return table.concat(out, " ") .. "|" .. table.concat(walked, " ") .. "|" .. table.concat(each, " ") .. "|" .. yaw
+)");
+  using namespace std::string_literals;
+  const std::string order = "-1 1 2 10 2.5 Zed a a\0b ab approach hold pan zoom false true"s;
+  const std::string want = order + "|" + order + "|" + order + "|5.75";
+  for (int k = 0; k < 20; ++k) {
+    Sandbox sandbox({});
+    sandbox.run_file(file);
+    ASSERT_EQ(top_string(sandbox.state()), want) << "state " << k;
+  }
+}
+
+// The walk takes the keys when pairs is called: values may change, keys
+// cleared are skipped; next goes on after any key, a cleared one too.
+TEST(LuaSandbox, PairsAndNextWhileTheTableChanges) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "change.lua", R"(
+local t = {a = 1, b = 2, c = 3, d = 4}
+local seen = {}
+for k, v in pairs(t) do
+  seen[#seen + 1] = k .. v
+  t.c = nil
+  t[k] = v * 10
+end
+local after_cleared = next(t, "c")
+local empty = next({})
+local f, s, k0 = pairs(t)
+local k1 = f(s, k0)
+local k3 = f(s, "b")  -- called with another key: goes on after it
+return table.concat(seen, " ") .. "|" .. after_cleared .. "|" .. tostring(empty) .. "|" .. k1 .. k3 .. t.a
+)");
+  Sandbox sandbox({});
+  sandbox.run_file(file);
+  EXPECT_EQ(top_string(sandbox.state()), "a1 b2 d4|d|nil|ad10");
+}
+
+// Keys whose only order is an address cannot be walked the same way twice:
+// refused at the script's line, advising an array.
+TEST(LuaSandbox, PairsRefusesKeysOrderedOnlyByTheirAddress) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "keys.lua", "local t = {a = 1}\nt[{}] = 2\nfor k in pairs(t) do end\n");
+  Sandbox sandbox({});
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
+  EXPECT_NE(msg.find("keys.lua:3: pairs: this table has a key that is a table value, whose only order is its memory "
+                     "address"),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("walk it with ipairs"), std::string::npos) << msg;
+  const fs::path with_next = script(dir, "next.lua", "local t = {}\nt[print] = 1\nlocal k = next(t)\n");
+  const std::string next_msg = error_of<ScriptError>([&] { sandbox.run_file(with_next); });
+  EXPECT_NE(next_msg.find("next.lua:3: next: this table has a key that is a function value"), std::string::npos)
+      << next_msg;
+}
+
+// tostring and string.format show a value's identity, numbered in the
+// order the script first asks, where LuaJIT shows its address.
+TEST(LuaSandbox, IdentitiesInsteadOfAddresses) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "ids.lua", R"(
+local a, b = {}, {}
+local named = setmetatable({}, {__tostring = function() return "named" end})
+local co = coroutine.create(function() end)
+return table.concat({tostring(b), tostring(a), tostring(b), tostring(print), tostring(co), tostring(named),
+  string.format("%s|%p|%-4p|%p|%p|%s|%d%%", a, a, b, 1, "x", named, 7), ("%p"):format(b), tostring(1.5),
+  tostring(nil)}, " ")
+)");
+  const std::string want =
+      "table: #1 table: #2 table: #1 function: #3 thread: #4 named table: #2|#2|#1  |NULL|#5|named|7% #1 1.5 nil";
+  for (int k = 0; k < 5; ++k) {
+    Sandbox sandbox({});
+    sandbox.run_file(file);
+    ASSERT_EQ(top_string(sandbox.state()), want);
+  }
+}
+
+// A module name of any length: the message keeps its reason (the name is
+// cut, not the message).
+TEST(LuaSandbox, RequireOfAVeryLongNameKeepsTheReason) {
+  ScratchDir dir;
+  const fs::path file = script(dir, "long.lua", "require(string.rep('a', 5000))\n");
+  Sandbox sandbox({dir.path()});
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
+  EXPECT_NE(msg.find("long.lua:1: cannot read module '" + std::string(200, 'a') + "... (5000 bytes)' from "),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find(": File name too long"), std::string::npos) << msg;
+  const fs::path bad = script(dir, "bad.lua", "require(string.rep('/', 5000))\n");
+  const std::string bad_msg = error_of<ScriptError>([&] { sandbox.run_file(bad); });
+  EXPECT_NE(bad_msg.find("... (5000 bytes): use dot-separated names"), std::string::npos) << bad_msg;
+}
+
 }  // namespace

@@ -245,11 +245,38 @@ TEST_F(LuaTableReader, FinishRejectsStrayNonStringKeys) {
   EXPECT_NE(msg.find("unexpected key of type table"), std::string::npos) << msg;
 }
 
-TEST_F(LuaTableReader, MetatablesAreIgnored) {
+TEST_F(LuaTableReader, MetamethodsNeverRun) {
   push("setmetatable({}, {__index = function() error('must not run') end})");
   TableReader r(L, -1, "spec");
-  EXPECT_EQ(error_of<FieldError>([&] { r.number("mass"); }), "spec: missing field 'mass'");
+  EXPECT_EQ(error_of<FieldError>([&] { r.number("mass"); }),
+            "spec: field 'mass' is not in the table itself, and its metatable has an __index function, which the "
+            "engine does not call: it reads a table's own fields only; set 'mass' in the table");
   r.finish();
+}
+
+// Fields a metatable's __index would give were ignored without a word
+// (issue 43): the reader reads own fields only, so it refuses them, naming
+// the field; a table whose __index gives nothing it reads is fine.
+TEST_F(LuaTableReader, FieldsInheritedThroughIndexAreRefused) {
+  push("setmetatable({mass = 1}, {__index = setmetatable({}, {__index = {spin = 0.5}})})");
+  TableReader r(L, -1, "spacetime");
+  EXPECT_EQ(r.number("mass"), 1);
+  EXPECT_EQ(error_of<FieldError>([&] { r.optional_number("spin"); }),
+            "spacetime: field 'spin' is inherited through a metatable's __index, which the engine does not follow: "
+            "it reads a table's own fields only; set 'spin' in the table");
+  EXPECT_EQ(r.optional_number("charge"), std::nullopt);  // inherited from nowhere
+  push("setmetatable({}, {__index = function() return 3 end})");
+  TableReader f(L, -1, "camera");
+  EXPECT_EQ(error_of<FieldError>([&] { f.number_or("fov", 60); }),
+            "camera: field 'fov' is not in the table itself, and its metatable has an __index function, which the "
+            "engine does not call: it reads a table's own fields only; set 'fov' in the table");
+  push("setmetatable({fov = 30}, {__index = function() error('never') end})");
+  TableReader own(L, -1, "camera");
+  EXPECT_EQ(own.number_or("fov", 60), 30);  // an own field: no __index asked
+  push("setmetatable({}, {__tostring = function() return 'x' end})");
+  TableReader plain(L, -1, "camera");
+  EXPECT_EQ(plain.number_or("fov", 60), 60);
+  EXPECT_EQ(lua_gettop(L), 4);
 }
 
 TEST_F(LuaTableReader, NoStackLeaks) {

@@ -25,6 +25,7 @@
 #include "scratch_dir.hpp"
 #include "script/shot.hpp"
 #include "stars/star_field.hpp"
+#include "lua/table_reader.hpp"
 #include "test_errors.hpp"
 
 namespace lc {
@@ -176,6 +177,38 @@ return {name = 's', frames = 3, width = 8, height = 8,
   const std::string b = test::error_of([&] { too_long.frame_specs(0); });
   EXPECT_NE(b.find("field 'shutter' must be between 0 and 1"), std::string::npos) << b;
   EXPECT_NE(b.find("frame 0"), std::string::npos) << b;
+}
+
+// A table indexed by a fractional i gives nil: where that was an optional
+// field, the instant took its default without a word (issue 43). A field
+// set at the frame and absent at an instant is an error naming both; the
+// frame's own exposure and shutter (an instant's are not used) may be.
+TEST(FrameSpecs, AFieldSetAtTheFrameButNotAtAnInstantIsAnError) {
+  ScratchDir dir;
+  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
+local yaws = {0, 10, 20}
+return {name = 's', frames = 3, width = 8, height = 8, shutter = 0.5, time_samples = 2,
+  frame = function(i)
+    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0},
+            camera = lc.camera{fov = 40, yaw = yaws[i + 1]}}
+  end})");
+  Shot shot(file);
+  const std::string e = test::error_of<lua::FieldError>([&] { shot.frame_specs(1); });
+  EXPECT_EQ(e.find("shot.lua: frame 1 at 0.875: field 'camera.yaw' is set at frame 1 but not at 0.875: a table "
+                   "indexed by a fractional i gives nil"),
+            e.find("shot.lua"))
+      << e;
+  EXPECT_NE(e.find("(frame 1's shutter is open"), std::string::npos) << e;
+
+  const auto own = write_shot(dir, R"(local lc = require 'lightcone'
+local exposures = {1, 2, 3}
+return {name = 's', frames = 3, width = 8, height = 8, time_samples = 2,
+  frame = function(i)
+    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20 + i, z = 0},
+            exposure = exposures[i + 1], shutter = i == 1 and 0.5 or nil}
+  end})");
+  Shot frame_only(own);
+  EXPECT_TRUE(frame_only.frame_specs(1).blurred());
 }
 
 // --- pictures ----------------------------------------------------------------
