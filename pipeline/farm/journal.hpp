@@ -135,7 +135,9 @@ inline constexpr std::size_t max_journal_line = 64 * 1024;
 JournalContents parse_journal(std::istream& in, const std::string& name);
 JournalContents parse_journal(const std::string& text, const std::string& name);
 
-// Reads DIR/<shot>.journal; a missing file is an empty journal.
+// Reads DIR/<shot>.journal; a missing file is an empty journal.  Throws
+// naming it when it is no regular file (a link, a FIFO: see open_own_file
+// in durable_file.hpp), or unreadable.
 JournalContents read_journal(const std::filesystem::path& file);
 
 // Appends lines durably.  The file is created (with its header) on the first
