@@ -187,6 +187,9 @@ void FrameStore::develop_frame(int frame, const Look& look) {
   const auto png_bytes = size_of(png);
   if (!png_bytes) throw std::runtime_error(fmt::format("{} vanished right after it was written", png.string()));
   jf.png_bytes = *png_bytes;
+  // The render's own look stays on record beside the developed one: the
+  // next develop's exposure shift starts from it, whatever was applied since.
+  if (!jf.render_look) jf.render_look = jf.look;
   jf.look = look;
   append_frame_line(jf);
 }

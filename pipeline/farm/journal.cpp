@@ -141,13 +141,13 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
         !parse_number(*finished, jf.cost.finished))
       return std::nullopt;
   }
-  // Written where the PNG has a look of its own.
-  if (const std::string* look = get("look")) {
-    try {
-      jf.look = parse_look_text(*look);
-    } catch (const std::invalid_argument&) {
-      return std::nullopt;
-    }
+  // Written where the PNG has a look of its own, and where a develop gave
+  // it another than the render's.
+  try {
+    if (const std::string* look = get("look")) jf.look = parse_look_text(*look);
+    if (const std::string* look = get("render_look")) jf.render_look = parse_look_text(*look);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
   }
   return jf;
 }
@@ -208,10 +208,12 @@ std::string journal_frame_line(const JournalFrame& f) {
                                  ? fmt::format(" time_samples={}", *f.settings.shutter.time_samples)
                                  : "");
   const std::string look = look_text(f.look);
-  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}{}",
+  const std::string render_look =
+      f.render_look && !(*f.render_look == f.look) ? " render_look=" + look_text(*f.render_look) : "";
+  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}{}{}",
                                 f.frame, f.settings.width, f.settings.height, f.settings.supersample,
                                 f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", depth, f.inputs, parts,
-                                f.exr_bytes, f.png_bytes, c.rays, cost, look.empty() ? "" : " look=" + look));
+                                f.exr_bytes, f.png_bytes, c.rays, cost, look.empty() ? "" : " look=" + look, render_look));
 }
 
 std::string journal_input_line(const std::string& hash, const std::string& path) {
