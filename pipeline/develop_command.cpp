@@ -152,6 +152,33 @@ std::vector<int> frames_to_develop(const farm::FrameStore& store, const fs::path
   return frames;
 }
 
+// The number of decimal places in the shortest text that reads back as
+// `v` ("-34.2": 1), or -1 where that text is too long to be worth it.
+int decimal_places(double v) {
+  char text[64];
+  const auto [end, ec] = std::to_chars(text, text + sizeof text, v, std::chars_format::fixed);
+  if (ec != std::errc()) return -1;
+  const std::string_view t(text, static_cast<std::size_t>(end - text));
+  const auto dot = t.find('.');
+  return dot == std::string_view::npos ? 0 : static_cast<int>(t.size() - dot - 1);
+}
+
+// a + b as the decimals written would add: -34.2 + 0.5 is -33.7, where the
+// binary sum is -33.699999999999996, which the journal's look would then
+// spell.  The exact decimal sum has no more places than the longer of the
+// two, and the binary sum lies within an ulp or so of it, so rounding it to
+// those places finds it; a + b itself where a text is too long.
+double decimal_sum(double a, double b) {
+  const int places_a = decimal_places(a), places_b = decimal_places(b), places = std::max(places_a, places_b);
+  const double sum = a + b;
+  if (places_a < 0 || places_b < 0 || places > 17) return sum;
+  char text[64];
+  const auto [end, ec] = std::to_chars(text, text + sizeof text, sum, std::chars_format::fixed, places);
+  double rounded = sum;
+  if (ec != std::errc() || std::from_chars(text, end, rounded).ec != std::errc()) return sum;
+  return rounded;
+}
+
 }  // namespace
 
 std::vector<LookFlag> look_flags() {
@@ -167,9 +194,11 @@ std::vector<LookFlag> look_flags() {
   return flags;
 }
 
-Look developed_look(const Look& recorded, const std::map<std::string, std::string>& flags,
+Look developed_look(const Look& current, const Look& rendered, const std::map<std::string, std::string>& flags,
                     std::optional<double> exposure_shift) {
-  ShotInfo s = as_fields(recorded);
+  ShotInfo s = as_fields(current);
+  // The shift is from the render's exposure unless --exposure gives another.
+  if (exposure_shift) s.exposure = rendered.exposure;
   for_each_field<ShotInfo>([&](const auto& f) {
     if (const auto it = flags.find(std::string(f.name)); it != flags.end() && is_look_field(f.name))
       set_from_text(s, f, it->second);
@@ -183,7 +212,7 @@ Look developed_look(const Look& recorded, const std::map<std::string, std::strin
   }
   Look look = s.look();
   if (exposure_shift) {
-    look.exposure += *exposure_shift;
+    look.exposure = decimal_sum(look.exposure, *exposure_shift);
     if (!(std::abs(look.exposure) <= 64.0))
       throw std::invalid_argument(fmt::format("--exposure-shift {}: takes an exposure to {} stops, outside -64 to 64",
                                               *exposure_shift, look.exposure));
@@ -195,7 +224,7 @@ int run_develop(const DevelopCommand& cmd) {
   // Input: the parsed flags; output: the frames' PNGs and journal lines,
   // and a summary on stderr.  Flags are checked before the directory is
   // touched, every frame's EXR before any PNG is written.
-  developed_look(Look{}, cmd.look, cmd.exposure_shift);
+  developed_look(Look{}, Look{}, cmd.look, cmd.exposure_shift);
   // Each frame takes the same few large buffers (the EXR's pixels, the
   // look's copy, the bloom's light).  Above glibc's mmap threshold each
   // would be mapped, faulted in and zeroed page by page, and unmapped again
@@ -213,7 +242,8 @@ int run_develop(const DevelopCommand& cmd) {
 
   const auto& journal = store.journal().frames;
   std::vector<Look> looks;
-  for (int f : frames) looks.push_back(developed_look(journal.at(f).look, cmd.look, cmd.exposure_shift));
+  for (int f : frames)
+    looks.push_back(developed_look(journal.at(f).look, journal.at(f).rendered_look(), cmd.look, cmd.exposure_shift));
   double render_seconds = 0.0;
   bool render_recorded = true;
   for (int f : frames) {

@@ -14,7 +14,10 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include "core/file_checks.hpp"
 
 namespace lc {
 
@@ -90,9 +93,20 @@ void remove_stale_temporaries(const fs::path& dir, const std::string& name) {
 
 }  // namespace
 
-DurableFile::DurableFile(fs::path final_path, StaleTemporaries stale) : final_(std::move(final_path)) {
-  std::tie(target_, descriptor_) = follow_links(final_);
+DurableFile::DurableFile(fs::path final_path, StaleTemporaries stale, FinalName name) : final_(std::move(final_path)) {
   std::error_code ec;
+  if (name == FinalName::own) {
+    // The name itself, never what it leads to (a rename replaces a link).
+    target_ = final_;
+    if (fs::is_directory(fs::symlink_status(final_, ec)))
+      throw std::runtime_error(fmt::format("cannot write {}: it is a directory", final_.string()));
+    if (stale == StaleTemporaries::remove) remove_stale_temporaries(target_.parent_path(), target_.filename().string());
+    temp_ = target_;
+    temp_ += fmt::format("{}{}", kTempMark, ::getpid());
+    clear_temporary_name();
+    return;
+  }
+  std::tie(target_, descriptor_) = follow_links(final_);
   const fs::file_status st = descriptor_ >= 0 ? fs::file_status(fs::file_type::character) : fs::status(target_, ec);
   const fs::file_type type = st.type();
   if (type == fs::file_type::directory || type == fs::file_type::block || type == fs::file_type::socket) {
@@ -115,6 +129,21 @@ DurableFile::DurableFile(fs::path final_path, StaleTemporaries stale) : final_(s
     temp_ = target_;
     temp_ += fmt::format("{}{}", kTempMark, ::getpid());
   }
+  clear_temporary_name();
+}
+
+void DurableFile::clear_temporary_name() const {
+  // The temporary's name carries this process's pid, so whatever is there
+  // is not a live writer's: a killed process of the same pid left it, or it
+  // was planted (a link in a shared folder or in /tmp, which a library
+  // writing by path would follow).  Unlinking removes a link, not what it
+  // leads to; a name that cannot be removed (another user's in /tmp, a
+  // directory) stops the write before anything is written through it.
+  if (::unlink(temp_.c_str()) == 0 || errno == ENOENT || errno == ENOTDIR) return;
+  struct stat st {};
+  if (::lstat(temp_.c_str(), &st) != 0) return;
+  throw std::runtime_error(fmt::format("cannot write {}: its temporary {} is already there and cannot be removed ({})",
+                                       final_.string(), temp_.string(), std::strerror(errno)));
 }
 
 DurableFile::~DurableFile() {
@@ -129,7 +158,9 @@ void DurableFile::write(std::string_view bytes) {
   // fewer bytes than asked, and a signal may interrupt it.
   if (committed_) throw std::logic_error("DurableFile::write after commit");
   if (fd_ < 0) {
-    fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    // O_EXCL: the constructor cleared the name, so anything there now was
+    // put there since, and is not written through.
+    fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd_ < 0) fail("write", final_, errno);
   }
   while (!bytes.empty()) {
@@ -150,7 +181,7 @@ void DurableFile::sync_temp() const {
     if (::fsync(fd_) != 0) fail("sync", final_, errno);
     return;
   }
-  const int fd = ::open(temp_.c_str(), O_RDONLY | O_CLOEXEC);
+  const int fd = ::open(temp_.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
   if (fd < 0) fail("sync", final_, errno);
   sync_and_close(fd, final_);
 }
@@ -176,7 +207,7 @@ void DurableFile::copy_into_stream() {
     fd_ = -1;
     if (rc != 0) fail("write", final_, errno);
   }
-  const int in = ::open(temp_.c_str(), O_RDONLY | O_CLOEXEC);
+  const int in = ::open(temp_.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
   if (in < 0) fail("read back the temporary of", final_, errno);
   const int out = descriptor_ >= 0 ? ::fcntl(descriptor_, F_DUPFD_CLOEXEC, 0)
                                    : ::open(target_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
@@ -239,6 +270,70 @@ void sync_directory(const fs::path& dir) {
   const int fd = ::open(d.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd < 0) throw std::runtime_error(fmt::format("cannot open {} to sync it: {}", d.string(), std::strerror(errno)));
   sync_and_close(fd, d);
+}
+
+namespace {
+
+// Throws why `path` could not be opened as a regular file of lightcone's
+// own: what it is, when it is no regular file (open says only ELOOP for a
+// link, ENXIO for a FIFO without a reader), else the OS's reason `err`.
+[[noreturn]] void refuse_own_file(std::string_view what, const fs::path& path, int err, const struct stat* opened) {
+  struct stat st {};
+  const bool known = opened ? (st = *opened, true) : ::lstat(path.c_str(), &st) == 0;
+  if (!known || S_ISREG(st.st_mode)) fail(what, path, err);
+  if (S_ISLNK(st.st_mode))
+    throw std::runtime_error(fmt::format(
+        "cannot {} {}: it is a symbolic link, and lightcone never follows a link among its own files in a folder "
+        "(move it away)",
+        what, path.string()));
+  throw std::runtime_error(fmt::format(
+      "cannot {} {}: it is {}, not a regular file, and lightcone keeps its own files in a folder as regular files "
+      "only (move it away)",
+      what, path.string(), file_kind(st.st_mode)));
+}
+
+}  // namespace
+
+OwnFile open_own_file(const fs::path& path, int flags, std::string_view what) {
+  constexpr int guard = O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY;
+  const bool create = (flags & O_CREAT) != 0;
+  const int access = flags & ~(O_CREAT | O_EXCL);
+  OwnFile out;
+  // Created only when absent (O_EXCL), so `created` is exact; an existing
+  // one is opened as it is.  A file removed between the two opens (a
+  // releasing lock holder) is looked for again.
+  for (int attempt = 0; attempt < 100 && out.fd < 0; ++attempt) {
+    if (create) {
+      out.fd = ::open(path.c_str(), access | O_CREAT | O_EXCL | guard, 0644);
+      if (out.fd >= 0) {
+        out.created = true;
+        break;
+      }
+      if (errno != EEXIST) fail(what, path, errno);
+    }
+    out.fd = ::open(path.c_str(), access | guard);
+    if (out.fd >= 0) break;
+    if (errno != ENOENT) refuse_own_file(what, path, errno, nullptr);
+    if (!create) return out;
+  }
+  if (out.fd < 0) fail(what, path, EAGAIN);
+  struct stat st {};
+  if (::fstat(out.fd, &st) != 0) {
+    const int err = errno;
+    ::close(out.fd);
+    fail(what, path, err);
+  }
+  if (!S_ISREG(st.st_mode)) {
+    ::close(out.fd);
+    refuse_own_file(what, path, 0, &st);
+  }
+  const int status = ::fcntl(out.fd, F_GETFL);
+  if (status < 0 || ::fcntl(out.fd, F_SETFL, status & ~O_NONBLOCK) != 0) {
+    const int err = errno;
+    ::close(out.fd);
+    fail(what, path, err);
+  }
+  return out;
 }
 
 bool is_temporary_name(std::string_view file_name) {

@@ -16,7 +16,8 @@
 // it, once the process that made it is gone.  Errors are std::runtime_error
 // naming the final path and the OS reason.
 //
-// What the final name may be (docs/cli.md, "Output files"):
+// What the final name may be (docs/cli.md, "Output files"), for a name the
+// user gave (FinalName::users):
 // - absent or a regular file: replaced as above;
 // - a symbolic link: followed (any depth), the file it ends at is replaced
 //   and the link kept, as a shell's `>` would write through it;
@@ -26,6 +27,14 @@
 //   directory first (libraries that write by path may seek) and are copied
 //   in at commit(), with an error on any short write;
 // - a directory, a block device or a socket: refused before any work.
+// A name lightcone gives a file of its own in a folder it keeps (a render's
+// frames, previews and meter: FinalName::own) is the name itself: whatever
+// is there (a link, a FIFO, a device) is replaced by the rename and nothing
+// it leads to is written; only a directory is refused.
+//
+// The temporary is never a link either: a file already under its name (a
+// killed process of the same pid left it, or someone planted it) is removed
+// first, and write() creates it afresh without following a link.
 
 #include <filesystem>
 #include <initializer_list>
@@ -39,16 +48,26 @@ namespace lc {
 // keeps a frame's write from listing a folder of thousands of frames.
 enum class StaleTemporaries { remove, cleaned_by_caller };
 
+// Whose name the final path is, which decides what a link or a special
+// file under it means (above).
+enum class FinalName {
+  users,  // given by the user (-o FILE): written through as a shell's `>` would
+  own,    // lightcone's own file in a folder it keeps: the name itself is replaced
+};
+
 class DurableFile {
  public:
   // Input: the final path.  Reserves "<final>.tmp-<pid>" (the pid keeps two
   // processes writing the same name apart; for a device, FIFO or descriptor
   // "lightcone-<name>.tmp-<pid>" in the temporary directory) and removes
-  // temporaries of the same name left by processes that are gone; nothing is
-  // created yet.  Throws when `final_path` cannot be a file (a directory, a
-  // block device, a socket, a link loop), which would otherwise be found
-  // only after all the work.
-  explicit DurableFile(std::filesystem::path final_path, StaleTemporaries stale = StaleTemporaries::remove);
+  // temporaries of the same name left by processes that are gone, and
+  // whatever is under its own temporary's name; nothing is created yet.
+  // Throws when `final_path` cannot be a file (a directory; for a user's
+  // name also a block device, a socket, a link loop), which would otherwise
+  // be found only after all the work, or when a file under the temporary's
+  // name cannot be removed.
+  explicit DurableFile(std::filesystem::path final_path, StaleTemporaries stale = StaleTemporaries::remove,
+                       FinalName name = FinalName::users);
   ~DurableFile();
   DurableFile(const DurableFile&) = delete;
   DurableFile& operator=(const DurableFile&) = delete;
@@ -77,6 +96,7 @@ class DurableFile {
   void rename_into_place();
   void copy_into_stream();
   void put_in_place();
+  void clear_temporary_name() const;
 
   std::filesystem::path final_;  // as given
   std::filesystem::path target_;  // where the bytes end: final_ with its links followed
@@ -92,6 +112,24 @@ void commit_together(std::initializer_list<DurableFile*> files);
 // Input: a directory ("" is the current one).  fsyncs it, so that renames
 // and new names in it survive a crash; throws naming it.
 void sync_directory(const std::filesystem::path& dir);
+
+// A file lightcone keeps open in a folder of its own (the lock, a journal,
+// an event log), opened in place: never through a link, never blocking (a
+// FIFO would hang the open, or the first read, for good), and only if it is
+// a regular file.  Inputs: the path; `flags`: O_RDONLY, O_WRONLY or O_RDWR,
+// with O_CREAT and O_APPEND as wanted (O_NOFOLLOW, O_CLOEXEC and O_NOCTTY
+// are added; O_NONBLOCK is used to open and cleared after); `what` says
+// what the caller was doing, for messages ("lock", "write the journal").
+// Output: the descriptor, and whether this call created the file (so that a
+// caller that fails can remove what it made and only that); fd -1 when the
+// file is absent and O_CREAT not given.  Throws std::runtime_error naming
+// the path: "cannot lock out/lightcone.lock: it is a symbolic link, not a
+// regular file; ..." or the OS's reason.
+struct OwnFile {
+  int fd = -1;
+  bool created = false;
+};
+OwnFile open_own_file(const std::filesystem::path& path, int flags, std::string_view what);
 
 // Whether `file_name` is a DurableFile temporary ("<name>.tmp-<digits>"):
 // one found on disk was left by a killed process, since a live one removes

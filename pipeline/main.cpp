@@ -301,7 +301,8 @@ int main(int argc, char** argv) {
     develop_cmd->add_option(f.flag, develop.look[f.field],
                             f.help + (f.field == "exposure" ? "; replaces every frame's own (see --exposure-shift)" : ""));
   develop_cmd->add_option("--exposure-shift", develop.exposure_shift,
-                          "Stops added to each frame's exposure (its own, its shot's or the metered one)")
+                          "Stops added to the exposure each frame was rendered with (its own, its shot's or the "
+                          "metered one), never to the last develop's: running it again shifts nothing more")
       ->check(number());
   develop_cmd->add_option("--threads", develop.threads, "Frames developed at once (default: every core)")
       ->check(number(End{1}, End{1024}));

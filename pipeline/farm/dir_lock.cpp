@@ -11,6 +11,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "durable_file.hpp"
+
 namespace lc::farm {
 
 namespace {
@@ -30,43 +32,55 @@ std::string holder(int fd) {
 // Opens (creating) the lock file and locks it without waiting.  Because the
 // file is removed on release, a racer may lock a file that was just
 // unlinked: after locking, check that the path still names the locked file,
-// and start over if not.
+// and start over if not.  The file is opened as lightcone's own
+// (open_own_file): a link planted under its name is refused, never
+// truncated through, and a FIFO never blocks.  A lock file this call made
+// and could not use (a full disk) is removed again; one that was there
+// before is left.
 DirLock::DirLock(const std::filesystem::path& dir, const char* flag) : file_(dir / file_name) {
+  // "--out DIR: <why>", the one form of every refusal.
+  auto refuse = [&](const std::string& why) {
+    return std::runtime_error(fmt::format("{} {}: {}", flag, dir.string(), why));
+  };
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const int fd = ::open(file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0)
-      throw std::runtime_error(fmt::format("{} {}: cannot write to the output directory ({}: {})", flag,
-                                           dir.string(), file_.string(), std::strerror(errno)));
+    OwnFile own;
+    try {
+      own = open_own_file(file_, O_RDWR | O_CREAT, "write to the output directory's lock");
+    } catch (const std::runtime_error& e) {
+      throw refuse(e.what());
+    }
+    const int fd = own.fd;
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       const int err = errno;
       const std::string who = holder(fd);
       ::close(fd);
       if (err == EWOULDBLOCK)
-        throw std::runtime_error(fmt::format(
-            "{} {}: another lightcone render is writing there ({}); wait for it to finish or stop it — a stopped "
-            "render resumes where it left off",
-            flag, dir.string(), who));
-      throw std::runtime_error(fmt::format("{} {}: cannot lock {}: {}", flag, dir.string(), file_.string(),
-                                           std::strerror(err)));
+        throw refuse(fmt::format("another lightcone render is writing there ({}); wait for it to finish or stop it — "
+                                 "a stopped render resumes where it left off",
+                                 who));
+      throw refuse(fmt::format("cannot lock {}: {}", file_.string(), std::strerror(err)));
     }
     struct stat held {}, named {};
-    if (::fstat(fd, &held) == 0 && ::stat(file_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+    if (::fstat(fd, &held) == 0 && ::lstat(file_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
         held.st_dev == named.st_dev) {
       char host[256] = {};
       ::gethostname(host, sizeof host - 1);
       const std::string who = fmt::format("pid {} on {}\n", ::getpid(), host);
-      if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, who.data(), who.size(), 0) != static_cast<ssize_t>(who.size())) {
+      // Written before the old text is cut, so a write that fails leaves
+      // a file that was there as it was (less a torn tail at worst).
+      if (::pwrite(fd, who.data(), who.size(), 0) != static_cast<ssize_t>(who.size()) ||
+          ::ftruncate(fd, static_cast<off_t>(who.size())) != 0) {
         const int err = errno;
+        if (own.created) ::unlink(file_.c_str());  // still held: nobody else has it
         ::close(fd);
-        throw std::runtime_error(fmt::format("{} {}: cannot write to the output directory ({}: {})", flag,
-                                             dir.string(), file_.string(), std::strerror(err)));
+        throw refuse(fmt::format("cannot write to the output directory ({}: {})", file_.string(), std::strerror(err)));
       }
       fd_ = fd;
       return;
     }
     ::close(fd);  // lost a race with a releasing holder: try again
   }
-  throw std::runtime_error(fmt::format("{} {}: cannot lock {} (it keeps changing)", flag, dir.string(), file_.string()));
+  throw refuse(fmt::format("cannot lock {} (it keeps changing)", file_.string()));
 }
 
 DirLock::~DirLock() {

@@ -3,7 +3,9 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
-#include <fstream>
+#include <istream>
+
+#include <ext/stdio_filebuf.h>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -12,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "core/line_reader.hpp"
+#include "durable_file.hpp"
 #include "farm/checked_line.hpp"
 
 namespace lc::farm {
@@ -101,16 +104,21 @@ std::string percent_decode(const std::string& text) {
 fs::path EventLog::file_of(const fs::path& dir, const std::string& shot) { return dir / (shot + ".events"); }
 
 EventLog::EventLog(const fs::path& dir, const std::string& shot) : name_(file_of(dir, shot).string()) {
-  fd_ = ::open(name_.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0) {
-    fmt::print(stderr, "render: warning: cannot write the event log {} ({}): `lightcone monitor` will not see this run\n",
-               name_, std::strerror(errno));
+  // Opened as lightcone's own file: a link under its name is not appended
+  // through, a FIFO does not block the render (which holds the folder's
+  // lock); either is said and the render goes on without a log.
+  OwnFile own;
+  try {
+    own = open_own_file(name_, O_WRONLY | O_APPEND | O_CREAT, "write the event log");
+  } catch (const std::runtime_error& e) {
+    fmt::print(stderr, "render: warning: {}: `lightcone monitor` will not see this run\n", e.what());
     warned_ = true;
     return;
   }
+  fd_ = own.fd;
+  created_ = own.created;
   struct stat st {};
-  created_ = ::fstat(fd_, &st) == 0 && st.st_size == 0;
-  if (created_) append(std::string(header));
+  if (::fstat(fd_, &st) == 0 && st.st_size == 0) append(std::string(header));
 }
 
 EventLog::~EventLog() {
@@ -203,8 +211,17 @@ ProgressEvents::~ProgressEvents() {
 
 EventSummary read_events(const fs::path& file, std::size_t keep) {
   EventSummary s;
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return s;
+  // A log that is no regular file of lightcone's (a FIFO would block the
+  // reader for good) reads as none, as a missing one does.
+  OwnFile own;
+  try {
+    own = open_own_file(file, O_RDONLY, "read the event log");
+  } catch (const std::runtime_error&) {
+    return s;
+  }
+  if (own.fd < 0) return s;
+  __gnu_cxx::stdio_filebuf<char> buffer(own.fd, std::ios::in | std::ios::binary);  // closes the descriptor
+  std::istream in(&buffer);
   LineReader lines(in, max_event_line);
   bool first = true;
   while (const auto line = lines.next()) {

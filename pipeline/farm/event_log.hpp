@@ -51,8 +51,9 @@ struct RunStart {
 class EventLog {
  public:
   // Opens DIR/<shot>.events for appending, creating it with its header.
-  // Never throws: a log that cannot be opened is said once on stderr and
-  // the methods do nothing.
+  // Never throws: a log that cannot be opened, or is no regular file (a
+  // link is never appended through, a FIFO never waited on), is said once
+  // on stderr and the methods do nothing.
   EventLog(const std::filesystem::path& dir, const std::string& shot);
   ~EventLog();
   EventLog(const EventLog&) = delete;
@@ -130,6 +131,8 @@ struct EventSummary {
   int frames_stored = 0;                    // its frame lines
   int bad_lines = 0;                        // lines that failed their check or did not parse
 };
+// A log that is missing, or no regular file (a link, a FIFO), reads as
+// an empty summary.
 EventSummary read_events(const std::filesystem::path& file, std::size_t keep = 200);
 
 // Text as an event field's value: bytes other than letters, digits and

@@ -3,10 +3,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
+#include <istream>
 #include <numeric>
 #include <sstream>
 
+#include <ext/stdio_filebuf.h>
+#include <fcntl.h>
 #include <fmt/format.h>
 
 #include "assets/shot_resources.hpp"
@@ -50,8 +52,18 @@ std::string meter_text(const MeterReadings& m) {
 // with `frames` frames; else none (it is metered again and replaced).
 std::optional<MeterReadings> read_meter(const fs::path& file, const std::string& key, int width, int height,
                                         int frames) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return std::nullopt;
+  // Read as lightcone's own file: one that is no regular file (a FIFO
+  // would block the render for good, a link lead anywhere) is metered
+  // again, and the rename of the new one replaces it.
+  OwnFile own;
+  try {
+    own = open_own_file(file, O_RDONLY, "read");
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
+  if (own.fd < 0) return std::nullopt;
+  __gnu_cxx::stdio_filebuf<char> buffer(own.fd, std::ios::in | std::ios::binary);  // closes the descriptor
+  std::istream in(&buffer);
   std::ostringstream ss;
   ss << in.rdbuf();
   const std::string text = ss.str();
@@ -105,7 +117,7 @@ MeterReadings shot_readings(Shot& shot, const fs::path& dir, int frame_width, in
       fmt::print(stderr, "render: auto exposure: metered {}/{} frames\n", f + 1, frames);
     }
   }
-  DurableFile out(file);
+  DurableFile out(file, StaleTemporaries::remove, FinalName::own);
   out.write(meter_text(m));
   out.commit();
   fmt::print(stderr, "render: auto exposure: metered in {:.1f} s\n",

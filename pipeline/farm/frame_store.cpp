@@ -26,12 +26,26 @@ bool is_frame_temporary(const std::string& name, const std::string& shot) {
 }
 
 // Removes temporaries left by a killed render (we hold the lock: nobody
-// else is writing them).
+// else is writing them); a link of such a name is removed itself.
 void remove_temporaries(const fs::path& dir, const std::string& shot) {
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return;
+  if (!fs::is_directory(fs::symlink_status(dir, ec))) return;  // (a link to a folder elsewhere is not looked into)
   for (const auto& e : fs::directory_iterator(dir, ec))
-    if (e.is_regular_file(ec) && is_frame_temporary(e.path().filename().string(), shot)) fs::remove(e.path(), ec);
+    if ((e.is_symlink(ec) || e.is_regular_file(ec)) && is_frame_temporary(e.path().filename().string(), shot))
+      fs::remove(e.path(), ec);
+}
+
+// Makes the previews' folder `dir` if missing, refusing a link under its
+// name: the previews are the render's own files and go nowhere else.
+void make_preview_dir(const fs::path& dir) {
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(dir, ec);
+  if (fs::is_symlink(st))
+    throw std::runtime_error(fmt::format("cannot write previews into {}: it is a symbolic link, and lightcone never "
+                                         "follows a link among its own files in a folder (move it away)",
+                                         dir.string()));
+  fs::create_directories(dir, ec);
+  if (ec) throw std::runtime_error(fmt::format("cannot create {}: {}", dir.string(), ec.message()));
 }
 
 // Why a write into `dir` may have failed, when the image library's message
@@ -71,16 +85,25 @@ std::optional<std::uintmax_t> size_of(const fs::path& p) {
 
 FrameStore::FrameStore(fs::path dir, std::string shot, const char* flag) : dir_(std::move(dir)), shot_(std::move(shot)) {
   std::error_code ec;
+  const bool made = !fs::exists(fs::symlink_status(dir_, ec));
   fs::create_directories(dir_, ec);
   if (ec || !fs::is_directory(dir_))
     throw std::runtime_error(fmt::format("{} {}: cannot create the output directory: {}", flag, dir_.string(),
                                          ec ? ec.message() : "a file of that name exists"));
-  lock_ = std::make_unique<DirLock>(dir_, flag);
-  remove_temporaries(dir_, shot_);
-  remove_temporaries(preview_dir(), shot_);
-  const fs::path file = dir_ / (shot_ + ".journal");
-  journal_ = read_journal(file);
-  writer_ = std::make_unique<JournalWriter>(file, journal_.valid_bytes);
+  try {
+    lock_ = std::make_unique<DirLock>(dir_, flag);
+    remove_temporaries(dir_, shot_);
+    remove_temporaries(preview_dir(), shot_);
+    const fs::path file = dir_ / (shot_ + ".journal");
+    journal_ = read_journal(file);
+    writer_ = std::make_unique<JournalWriter>(file, journal_.valid_bytes);
+  } catch (...) {
+    // Refused (a full disk, another render, a journal that is not one):
+    // the folder is left as it was found, so one made here goes again.
+    lock_.reset();
+    if (made) fs::remove(dir_, ec);  // (only if empty)
+    throw;
+  }
 }
 
 FrameState FrameStore::state(int frame, const FrameSettings& settings, const std::string& inputs) const {
@@ -164,6 +187,9 @@ void FrameStore::develop_frame(int frame, const Look& look) {
   const auto png_bytes = size_of(png);
   if (!png_bytes) throw std::runtime_error(fmt::format("{} vanished right after it was written", png.string()));
   jf.png_bytes = *png_bytes;
+  // The render's own look stays on record beside the developed one: the
+  // next develop's exposure shift starts from it, whatever was applied since.
+  if (!jf.render_look) jf.render_look = jf.look;
   jf.look = look;
   append_frame_line(jf);
 }
@@ -194,9 +220,7 @@ void FrameStore::write_preview(int frame, FrameImage image, const std::vector<in
                                const Look& look) {
   fill_missing_rows(image, rendered);
   const fs::path dir = preview_dir();
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(fmt::format("cannot create {}: {}", dir.string(), ec.message()));
+  make_preview_dir(dir);
   with_space_hint(dir, [&] { write_png_file(frame_path(dir, shot_, frame, "png"), image, look); });
 }
 

@@ -66,7 +66,8 @@ class FrameStore {
   // Makes a finished frame's PNG again from its EXR through `look`, at the
   // depth it was rendered with (`lightcone develop`): the PNG is replaced
   // atomically and durably, then a journal line like the frame's with the
-  // new PNG's size and the look supersedes it.  The same look gives the
+  // new PNG's size and the look supersedes it, keeping the look the render
+  // made the PNG with on record (JournalFrame::render_look).  The same look gives the
   // same PNG to the byte (the EXR holds the floats the render's PNG was
   // made from).  Throws std::runtime_error naming the file when the frame
   // has no journal line, its EXR is missing or not of the size recorded

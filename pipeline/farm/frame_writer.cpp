@@ -40,15 +40,17 @@ void write_verified(const DurableFile& file, FrameFormat format, const FrameImag
 
 void write_frame_files(const std::filesystem::path& exr, const std::filesystem::path& png, const FrameImage& image,
                        const ImageMetadata& metadata, const Look& look, PngDepth png_depth) {
-  // The frame store clears its folders of temporaries when a render starts.
-  DurableFile exr_file(exr, StaleTemporaries::cleaned_by_caller), png_file(png, StaleTemporaries::cleaned_by_caller);
+  // The frame store clears its folders of temporaries when a render starts;
+  // the names are its own (a link there is replaced, not written through).
+  DurableFile exr_file(exr, StaleTemporaries::cleaned_by_caller, FinalName::own),
+      png_file(png, StaleTemporaries::cleaned_by_caller, FinalName::own);
   write_verified(exr_file, FrameFormat::exr, image, metadata);
   write_verified(png_file, FrameFormat::png, look.identity() ? image : look.applied(image), {}, png_depth);
   commit_together({&exr_file, &png_file});
 }
 
 void write_png_file(const std::filesystem::path& png, const FrameImage& image, const Look& look, PngDepth png_depth) {
-  DurableFile file(png, StaleTemporaries::cleaned_by_caller);
+  DurableFile file(png, StaleTemporaries::cleaned_by_caller, FinalName::own);
   write_verified(file, FrameFormat::png, look.identity() ? image : look.applied(image), {}, png_depth);
   file.commit();
 }

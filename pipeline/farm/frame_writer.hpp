@@ -4,7 +4,9 @@
 // (the image writers do not always notice a failed write: on a full disk a
 // PNG can come out empty without an error) and only then committed.  The
 // frame store's cleanup finds the temporaries of a killed render by their
-// name (is_temporary_name).
+// name (is_temporary_name).  The names are the frame store's own
+// (DurableFile's FinalName::own): whatever is under one, a planted link
+// included, is replaced, and nothing outside the folder is written.
 
 #include <filesystem>
 

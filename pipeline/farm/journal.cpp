@@ -6,12 +6,13 @@
 #include <cmath>
 #include <type_traits>
 #include <cstring>
-#include <fstream>
+#include <istream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
+#include <ext/stdio_filebuf.h>
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -140,13 +141,13 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
         !parse_number(*finished, jf.cost.finished))
       return std::nullopt;
   }
-  // Written where the PNG has a look of its own.
-  if (const std::string* look = get("look")) {
-    try {
-      jf.look = parse_look_text(*look);
-    } catch (const std::invalid_argument&) {
-      return std::nullopt;
-    }
+  // Written where the PNG has a look of its own, and where a develop gave
+  // it another than the render's.
+  try {
+    if (const std::string* look = get("look")) jf.look = parse_look_text(*look);
+    if (const std::string* look = get("render_look")) jf.render_look = parse_look_text(*look);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
   }
   return jf;
 }
@@ -207,10 +208,12 @@ std::string journal_frame_line(const JournalFrame& f) {
                                  ? fmt::format(" time_samples={}", *f.settings.shutter.time_samples)
                                  : "");
   const std::string look = look_text(f.look);
-  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}{}",
+  const std::string render_look =
+      f.render_look && !(*f.render_look == f.look) ? " render_look=" + look_text(*f.render_look) : "";
+  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}{}{}",
                                 f.frame, f.settings.width, f.settings.height, f.settings.supersample,
                                 f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", depth, f.inputs, parts,
-                                f.exr_bytes, f.png_bytes, c.rays, cost, look.empty() ? "" : " look=" + look));
+                                f.exr_bytes, f.png_bytes, c.rays, cost, look.empty() ? "" : " look=" + look, render_look));
 }
 
 std::string journal_input_line(const std::string& hash, const std::string& path) {
@@ -304,11 +307,13 @@ StaleFrames stale_frames(const JournalContents& journal, const std::map<int, std
 }
 
 JournalContents read_journal(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    if (!std::filesystem::exists(file)) return {};
-    throw std::runtime_error(fmt::format("cannot read {}: {}", file.string(), std::strerror(errno)));
-  }
+  // Opened as lightcone's own file: a FIFO under the journal's name would
+  // block the read for good (a render holding the folder's lock), a link
+  // would lead to another folder's journal.
+  const OwnFile own = open_own_file(file, O_RDONLY, "read the journal");
+  if (own.fd < 0) return {};
+  __gnu_cxx::stdio_filebuf<char> buffer(own.fd, std::ios::in | std::ios::binary);  // closes the descriptor
+  std::istream in(&buffer);
   return parse_journal(in, file.string());
 }
 
@@ -339,11 +344,13 @@ void write_all(int fd, const std::string& data, const std::filesystem::path& p) 
 
 }  // namespace
 
-// Opens (creating with the header, or cutting a torn tail) on first use.
+// Opens (creating with the header, or cutting a torn tail) on first use,
+// as lightcone's own file: never through a link (which would append to
+// another folder's journal), never a FIFO.
 void JournalWriter::open() {
-  const bool existed = std::filesystem::exists(file_);
-  fd_ = ::open(file_.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0) fail(file_, "open");
+  const OwnFile own = open_own_file(file_, O_WRONLY | O_CREAT, "write the journal");
+  fd_ = own.fd;
+  const bool existed = !own.created;
   if (::ftruncate(fd_, static_cast<off_t>(existed ? valid_bytes_ : 0)) != 0) fail(file_, "truncate");
   if (::lseek(fd_, 0, SEEK_END) < 0) fail(file_, "seek in");
   if (!existed || valid_bytes_ == 0) {

@@ -11,13 +11,17 @@
 //     [region=<x0>,<y0>,<frame W>x<frame H>] [camera=<dome|360>]
 //     inputs=<16 hex> script=<16 hex> [sky=<16 hex>] exr=<bytes> png=<bytes> rays=<n>
 //     reused=<n> core_seconds=<s> star_seconds=<s> finished=<unix seconds> [look=<look_text>]
+//     [render_look=<look_text>]
 // A later frame line for the same frame supersedes an earlier one.  Lines
 // of older journals lack sampling (full), script and sky, and what the
 // frame cost beyond its rays; png_depth is written only for 16-bit PNGs,
 // region only for a window of the frame (size is then the window's),
 // camera only for a shot delivered through another camera, look only where
 // the PNG shows the EXR through another look than the paper's (image/look.hpp:
-// what `lightcone develop` starts from).
+// what `lightcone develop` starts from), render_look only where a develop
+// made the PNG through another look than the render did (the render's own,
+// which develop's exposure shift and --reset start from; "" for the
+// paper's).
 
 #include <cstdint>
 #include <cstddef>
@@ -85,6 +89,10 @@ struct JournalFrame {
   std::uintmax_t exr_bytes = 0, png_bytes = 0;
   FrameCost cost;
   Look look;  // what the PNG shows of the EXR
+  // The look the render made the PNG with, where a develop has since made
+  // it with another (`look`); none: `look` is the render's own.
+  std::optional<Look> render_look;
+  const Look& rendered_look() const { return render_look ? *render_look : look; }
 };
 
 struct JournalContents {
@@ -135,7 +143,9 @@ inline constexpr std::size_t max_journal_line = 64 * 1024;
 JournalContents parse_journal(std::istream& in, const std::string& name);
 JournalContents parse_journal(const std::string& text, const std::string& name);
 
-// Reads DIR/<shot>.journal; a missing file is an empty journal.
+// Reads DIR/<shot>.journal; a missing file is an empty journal.  Throws
+// naming it when it is no regular file (a link, a FIFO: see open_own_file
+// in durable_file.hpp), or unreadable.
 JournalContents read_journal(const std::filesystem::path& file);
 
 // Appends lines durably.  The file is created (with its header) on the first

@@ -80,12 +80,44 @@ ls all | grep -q tmp && fail "temporary files left by develop"
 "$LIGHTCONE" develop all --exposure-shift 1 --view filmic --bloom 0 2>brighter.log || fail "develop brighter: $(cat brighter.log)"
 for f in original/kerr_fall.*.png; do cmp -s "$f" "all/$(basename "$f")" && fail "develop left $(basename "$f") as it was"; done
 for f in original/kerr_fall.*.exr; do cmp -s "$f" "all/$(basename "$f")" || fail "develop changed $(basename "$f")"; done
-grep -q ' look=exposure:-3[0-9.]*,view:filmic,white_balance:5000,saturation:1.2 #' all/kerr_fall.journal \
+grep -q ' look=exposure:-3[0-9.]*,view:filmic,white_balance:5000,saturation:1.2 ' all/kerr_fall.journal \
   || fail "journal lacks the developed look: $(tail -2 all/kerr_fall.journal)"
 "$LIGHTCONE" encode all -o developed.mp4 2>encode.log || fail "encode after develop: $(cat encode.log)"
 check_probe developed.mp4 nb_read_frames=7
-"$LIGHTCONE" develop all --exposure-shift -1 --view gamut_safe --bloom 0.2 --frames 120 2>back.log || fail "back: $(cat back.log)"
+# The shift is from the render's own exposure, which the journal keeps
+# beside the developed look: a shift of 0 with the render's view and bloom
+# gives the original PNG back.
+grep -q ' look=exposure:-3[0-9.]*,view:filmic,.* render_look=exposure:-3[0-9.]*,view:gamut_safe,white_balance:5000,saturation:1.2,bloom:0.2 #' \
+  all/kerr_fall.journal || fail "journal lacks the render's own look: $(tail -1 all/kerr_fall.journal)"
+"$LIGHTCONE" develop all --exposure-shift 0 --view gamut_safe --bloom 0.2 --frames 120 2>back.log || fail "back: $(cat back.log)"
 cmp -s all/kerr_fall.0120.png original/kerr_fall.0120.png || fail "the recorded look again did not give frame 120 back"
+# A develop stopped part way and run again gives the frames one run whole
+# gives (issue 43: the frames developed before the stop were shifted a
+# second time).  Frame 60's PNG name is a directory, so a develop on one
+# thread stops there after frames 0 and 30.
+cp -r original stopped && cp -r original whole
+rm stopped/kerr_fall.0060.png && mkdir stopped/kerr_fall.0060.png
+SHIFT=(--exposure-shift 0.5 --threads 1)
+expect_error stopped "kerr_fall.0060.png: it is a directory" -- "$LIGHTCONE" develop stopped "${SHIFT[@]}"
+grep -q "develop: stopped after 2 of 7 frames" stopped.err || fail "the develop did not stop after two frames: $(cat stopped.err)"
+rmdir stopped/kerr_fall.0060.png
+"$LIGHTCONE" develop stopped "${SHIFT[@]}" 2>stopped_again.log || fail "develop again: $(cat stopped_again.log)"
+"$LIGHTCONE" develop whole "${SHIFT[@]}" 2>whole.log || fail "develop whole: $(cat whole.log)"
+same_frames whole stopped kerr_fall
+# ... and run once more, the same again; the look's exposure as the decimals add.
+"$LIGHTCONE" develop stopped "${SHIFT[@]}" 2>stopped_third.log || fail "develop a third time: $(cat stopped_third.log)"
+same_frames whole stopped kerr_fall
+$PY - stopped/kerr_fall.journal <<'PY' || fail "the shifted exposures are not the render's plus 0.5 as decimals add"
+import re, sys
+from decimal import Decimal
+last = {}
+for line in open(sys.argv[1]):
+    m = re.match(r"frame=(\d+) .* look=exposure:(\S+?),.* render_look=exposure:(\S+?),", line)
+    if m: last[m[1]] = (m[2], m[3])
+assert len(last) == 7, last
+for frame, (shown, rendered) in last.items():
+    assert Decimal(shown) == Decimal(rendered) + Decimal("0.5"), (frame, shown, rendered)
+PY
 # A render resumed after develop keeps the developed frames (done, not damaged).
 "$LIGHTCONE" render "$FALL" --out all --frames "$FRAMES" "${SMALL[@]}" 2>again.log || fail "again: $(cat again.log)"
 grep -q "nothing to render" again.log || fail "developed frames were rendered again: $(cat again.log)"

@@ -24,6 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstring>
 #include <thread>
 
@@ -296,6 +297,119 @@ TEST(DurableFile, WhatCannotBeAFileIsRefusedBeforeAnyWork) {
     EXPECT_EQ(error_of([&] { DurableFile out(dir / "block"); }),
               "cannot write " + (dir / "block").string() + ": it is a block device, which lightcone does not write to");
   }
+}
+
+// A file outside the folder a test writes in, which nothing may write.
+struct Outside {
+  explicit Outside(const ScratchDir& dir) : path(dir / "outside.txt") { std::ofstream(path) << "not lightcone's"; }
+  bool unchanged() const { return contents(path) == "not lightcone's"; }
+  fs::path path;
+};
+
+TEST(DurableFile, AnOwnNameIsReplacedNeverFollowed) {
+  // A frame's, a preview's or the meter's name in a render's folder: a
+  // link planted there had the file it leads to replaced (issue 43).
+  ScratchDir dir;
+  const Outside outside(dir);
+  fs::create_directories(dir / "out");
+  fs::create_symlink(outside.path, dir / "out" / "s.0000.png");
+  {
+    DurableFile out(dir / "out" / "s.0000.png", lc::StaleTemporaries::remove, lc::FinalName::own);
+    EXPECT_EQ(out.temp_path().parent_path(), dir / "out");
+    out.write("frame");
+    out.commit();
+  }
+  EXPECT_TRUE(outside.unchanged());
+  EXPECT_FALSE(fs::is_symlink(dir / "out" / "s.0000.png"));
+  EXPECT_EQ(contents(dir / "out" / "s.0000.png"), "frame");
+  // A FIFO is replaced too, not written in (nobody reads it).
+  ASSERT_EQ(::mkfifo((dir / "out" / "s.meter").c_str(), 0600), 0);
+  {
+    DurableFile out(dir / "out" / "s.meter", lc::StaleTemporaries::remove, lc::FinalName::own);
+    out.write("readings");
+    out.commit();
+  }
+  EXPECT_EQ(contents(dir / "out" / "s.meter"), "readings");
+  EXPECT_EQ(error_of([&] { DurableFile out(dir / "out", lc::StaleTemporaries::remove, lc::FinalName::own); }),
+            "cannot write " + (dir / "out").string() + ": it is a directory");
+}
+
+TEST(DurableFile, TheTemporaryIsNeverWrittenThrough) {
+  // A link under the temporary's name (it carries the pid, so it can be
+  // planted ahead) was truncated and written through, then renamed into
+  // place as a link to what it led to.
+  ScratchDir dir;
+  const Outside outside(dir);
+  const fs::path temp = dir / ("out.csv.tmp-" + std::to_string(::getpid()));
+  for (const bool by_library : {false, true}) {
+    fs::create_symlink(outside.path, temp);
+    {
+      DurableFile out(dir / "out.csv");
+      EXPECT_EQ(out.temp_path(), temp);
+      if (by_library)
+        std::ofstream(out.temp_path(), std::ios::binary) << "picture";
+      else
+        out.write("a,b\n");
+      out.commit();
+    }
+    EXPECT_TRUE(outside.unchanged());
+    EXPECT_FALSE(fs::is_symlink(dir / "out.csv"));
+    EXPECT_EQ(contents(dir / "out.csv"), by_library ? "picture" : "a,b\n");
+  }
+  // One that cannot be removed stops the write before anything is written.
+  fs::create_directories(temp / "inside");
+  const std::string message = error_of([&] { DurableFile out(dir / "out.csv"); });
+  EXPECT_EQ(message.rfind("cannot write " + (dir / "out.csv").string() + ": its temporary " + temp.string() +
+                              " is already there and cannot be removed (",
+                          0),
+            0u)
+      << message;
+}
+
+TEST(DurableFile, OwnFilesAreOpenedOnlyAsRegularFiles) {
+  ScratchDir dir;
+  const Outside outside(dir);
+  // Absent: made (and said so) or, without O_CREAT, none.
+  EXPECT_EQ(lc::open_own_file(dir / "log", O_RDONLY, "read").fd, -1);
+  lc::OwnFile made = lc::open_own_file(dir / "log", O_WRONLY | O_APPEND | O_CREAT, "write");
+  ASSERT_GE(made.fd, 0);
+  EXPECT_TRUE(made.created);
+  EXPECT_EQ(::write(made.fd, "x", 1), 1);  // blocking again, writable
+  EXPECT_EQ(::fcntl(made.fd, F_GETFL) & O_NONBLOCK, 0);
+  ::close(made.fd);
+  lc::OwnFile again = lc::open_own_file(dir / "log", O_WRONLY | O_APPEND | O_CREAT, "write");
+  EXPECT_FALSE(again.created);
+  ::close(again.fd);
+  // A link, dangling or not, is refused: never written through, never made.
+  const std::string link = ": it is a symbolic link, and lightcone never follows a link among its own files in a "
+                           "folder (move it away)";
+  const std::string why = ", not a regular file, and lightcone keeps its own files in a folder as regular files only "
+                          "(move it away)";
+  fs::create_symlink(outside.path, dir / "lock");
+  fs::create_symlink(dir / "nowhere", dir / "dangling");
+  for (const char* name : {"lock", "dangling"}) {
+    EXPECT_EQ(error_of([&] { lc::open_own_file(dir / name, O_RDWR | O_CREAT, "lock"); }),
+              "cannot lock " + (dir / name).string() + link);
+    EXPECT_EQ(error_of([&] { lc::open_own_file(dir / name, O_RDONLY, "read"); }),
+              "cannot read " + (dir / name).string() + link);
+  }
+  EXPECT_TRUE(outside.unchanged());
+  EXPECT_FALSE(fs::exists(dir / "nowhere"));
+  // A FIFO is refused at once, however opened (for reading or writing,
+  // open would wait for the other end; a read of one opened both ways
+  // would wait for a writer).
+  const lc::test::UnblockedFifo fifo(dir / "journal");
+  const auto start = std::chrono::steady_clock::now();
+  for (const int flags : {O_RDONLY, O_WRONLY | O_CREAT, O_RDWR | O_CREAT, O_WRONLY | O_APPEND})
+    EXPECT_EQ(error_of([&] { lc::open_own_file(fifo.path(), flags, "read the journal"); }),
+              "cannot read the journal " + fifo.path().string() + ": it is a FIFO" + why);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(3));
+  fs::create_directories(dir / "folder");
+  EXPECT_EQ(error_of([&] { lc::open_own_file(dir / "folder", O_RDONLY, "read"); }),
+            "cannot read " + (dir / "folder").string() + ": it is a directory" + why);
+  // Where it cannot be made: the OS's reason.
+  EXPECT_EQ(error_of([&] { lc::open_own_file(dir / "no" / "lock", O_RDWR | O_CREAT, "lock"); }),
+            "cannot lock " + (dir / "no" / "lock").string() + ": No such file or directory");
 }
 
 Names sorted(Names n) {

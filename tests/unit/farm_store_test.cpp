@@ -2,9 +2,13 @@
 // what resume trusts (journal line + files of the recorded sizes), and the
 // cleanup of temporaries a killed render left behind.
 
+#include <chrono>
+#include <csignal>
 #include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "farm/frame_files.hpp"
@@ -39,6 +43,60 @@ TEST(FarmStore, LockIsReleasedAndRemoved) {
   { FrameStore first(dir / "out", "s"); }
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / DirLock::file_name));
   EXPECT_NO_THROW(FrameStore again(dir / "out", "s"));
+}
+
+// Runs `f` with files limited to `bytes` (ulimit -f): a write past it fails
+// with EFBIG, as one onto a full disk fails, without root or a small disk.
+template <class F>
+void with_file_limit(rlim_t bytes, F&& f) {
+  rlimit old{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);  // the error, not the signal that kills
+  rlimit lim = old;
+  lim.rlim_cur = bytes;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &lim), 0);
+  f();
+  ::setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, old_handler);
+}
+
+TEST(FarmStore, ALockFileItMadeAndCouldNotUseIsRemovedOneThatWasThereIsLeft) {
+  // A full disk left an empty lightcone.lock behind (issue 43).
+  test::ScratchDir dir;
+  std::filesystem::create_directories(dir / "out");
+  const auto lock = dir / "out" / DirLock::file_name;
+  with_file_limit(0, [&] {
+    const std::string message = test::error_of([&] { FrameStore store(dir / "out", "s"); });
+    EXPECT_NE(message.find("cannot write to the output directory (" + lock.string() + ": File too large)"),
+              std::string::npos)
+        << message;
+  });
+  EXPECT_FALSE(std::filesystem::exists(lock));
+  // One a killed render left stays (nobody's lock, but not this run's to remove).
+  std::ofstream(lock) << "pid 1 on elsewhere\n";
+  with_file_limit(4, [&] { EXPECT_THROW(FrameStore store(dir / "out", "s"), std::runtime_error); });
+  EXPECT_TRUE(std::filesystem::exists(lock));
+}
+
+TEST(FarmStore, ItsOwnFilesAreNeverLinksOrFifos) {
+  // A link under the lock's or the journal's name was written through; a
+  // FIFO under the journal's name hung the render that held the lock.
+  test::ScratchDir dir;
+  std::ofstream(dir / "outside.txt") << "not lightcone's";
+  std::filesystem::create_directories(dir / "a");
+  std::filesystem::create_symlink(dir / "outside.txt", dir / "a" / DirLock::file_name);
+  std::string message = test::error_of([&] { FrameStore store(dir / "a", "s"); });
+  EXPECT_NE(message.find((dir / "a" / DirLock::file_name).string() + ": it is a symbolic link"), std::string::npos)
+      << message;
+  std::filesystem::create_directories(dir / "b");
+  const test::UnblockedFifo fifo(dir / "b" / "s.journal");
+  const auto start = std::chrono::steady_clock::now();
+  message = test::error_of([&] { FrameStore store(dir / "b", "s"); });
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(3));
+  EXPECT_NE(message.find(fifo.path().string() + ": it is a FIFO"), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(dir / "b" / DirLock::file_name));  // the lock went with the refusal
+  std::ifstream in(dir / "outside.txt");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "not lightcone's");
 }
 
 TEST(FarmStore, ResumeTrustsJournalAndFileSizes) {

@@ -113,6 +113,27 @@ TEST(Journal, ALookIsRecordedWhereThePngHasOne) {
   EXPECT_EQ(parse_journal(journal_header_line() + "\n" + bad + "\n", "j").frames.size(), 0u);
 }
 
+// Where a develop made the PNG through another look, the render's own is
+// recorded beside it ("" for the paper's), so a later develop can shift
+// from it; a line without it is the render's own look.
+TEST(Journal, TheRendersOwnLookIsKeptBesideADevelopedOne) {
+  JournalFrame f = frame(4);
+  f.look = Look{.exposure = -33.7, .view = View::filmic};
+  f.render_look = f.look;  // the same: not written
+  EXPECT_EQ(journal_frame_line(f).find("render_look"), std::string::npos);
+  EXPECT_FALSE(parse_journal(journal_header_line() + "\n" + journal_frame_line(f) + "\n", "j").frames.at(4).render_look);
+  for (const Look rendered : {Look{.exposure = -34.2, .view = View::gamut_safe}, Look{}}) {
+    f.render_look = rendered;
+    const std::string line = journal_frame_line(f);
+    EXPECT_NE(line.find(" look=exposure:-33.7,view:filmic render_look=" + look_text(rendered) + " #"), std::string::npos)
+        << line;
+    const JournalFrame back = parse_journal(journal_header_line() + "\n" + line + "\n", "j").frames.at(4);
+    EXPECT_EQ(back.look, f.look);
+    ASSERT_TRUE(back.render_look);
+    EXPECT_EQ(back.rendered_look(), rendered);
+  }
+}
+
 TEST(Journal, EmptyTextIsAnEmptyJournal) {
   const JournalContents j = parse_journal("", "j");
   EXPECT_TRUE(j.frames.empty());
