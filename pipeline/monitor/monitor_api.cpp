@@ -4,7 +4,6 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <cstdio>
 #include <stdexcept>
@@ -18,6 +17,7 @@
 #include "farm/frame_files.hpp"
 #include "farm/journal.hpp"
 #include "image/image_io.hpp"
+#include "monitor/folder_file.hpp"
 #include "monitor/layer_picture.hpp"
 #include "monitor/pixel_trace.hpp"
 #include "render/layers.hpp"
@@ -34,6 +34,12 @@ namespace {
 // stopped (killed, or its node lost): it writes progress every 2 s.
 constexpr double silent_after_seconds = 15.0;
 constexpr int max_frames_per_reply = 10000;
+// The largest file served (a frame's PNG, the chart library): one request
+// must not hold more in memory.  A 16-bit 8K frame's PNG is ~200 MB.
+constexpr std::size_t max_served_bytes = 512u << 20;
+// The pixel traces kept, so that asking again for a pixel (the page's
+// user clicking about) costs no new trace.
+constexpr std::size_t max_cached_traces = 64;
 
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
@@ -73,12 +79,48 @@ std::string event_json(const farm::Event& e) {
   return out + "}";
 }
 
+// The bytes of `p` (no link in its last component: the callers resolve
+// links first), if it is a regular file of at most max_served_bytes.
 std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw BadRequest(404, fmt::format("cannot read {}", p.filename().string()));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  const FolderFile file(p);
+  if (file.missing() || file.refused()) throw BadRequest(404, fmt::format("cannot read {}", p.filename().string()));
+  try {
+    return file.read_all(max_served_bytes);
+  } catch (const std::runtime_error& e) {
+    throw BadRequest(413, fmt::format("{} {}", p.filename().string(), e.what()));
+  }
+}
+
+// The journal of `shot` in `dir` (canonical), read only if it is a regular
+// file of the folder that begins as lightcone's journals do: a link, a FIFO,
+// a device or someone else's file is refused without a word of what it
+// holds.  No journal: an empty one.
+farm::JournalContents journal_of(const fs::path& dir, const std::string& shot) {
+  const std::string name = shot + ".journal";
+  const FolderFile file(dir / name);
+  if (file.missing()) return {};
+  if (file.refused()) throw BadRequest(403, fmt::format("{} {}", name, file.why()));
+  // A journal cut short in its first line (a crash as it was created) is a
+  // prefix of the header; anything else is not lightcone's.
+  const std::string header = farm::journal_header_line() + "\n";
+  const std::string head = file.head(header.size());
+  if (header.compare(0, head.size(), head) != 0)
+    throw BadRequest(422, fmt::format("{} is not a lightcone journal: not read", name));
+  try {
+    return farm::read_journal(file.self_path());
+  } catch (const std::exception&) {
+    throw std::runtime_error(fmt::format("cannot read {}", name));
+  }
+}
+
+// The event log of `shot` in `dir`, on the same terms as journal_of (its
+// lines that fail their check are only counted, never shown).
+farm::EventSummary events_of(const fs::path& dir, const std::string& shot, std::size_t keep) {
+  const fs::path path = farm::EventLog::file_of(dir, shot);
+  const FolderFile file(path);
+  if (file.missing()) return {};
+  if (file.refused()) throw BadRequest(403, fmt::format("{} {}", path.filename().string(), file.why()));
+  return farm::read_events(file.self_path(), keep);
 }
 
 }  // namespace
@@ -92,7 +134,9 @@ std::vector<std::string> shots_in(const fs::path& dir) {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     const std::string ext = e.path().extension().string();
-    if ((ext == ".journal" || ext == ".events") && e.is_regular_file(ec)) shots.push_back(e.path().stem().string());
+    // Not followed through a link: a link's target is not the render's.
+    if ((ext == ".journal" || ext == ".events") && e.symlink_status(ec).type() == fs::file_type::regular)
+      shots.push_back(e.path().stem().string());
   }
   std::sort(shots.begin(), shots.end());
   shots.erase(std::unique(shots.begin(), shots.end()), shots.end());
@@ -115,10 +159,11 @@ Reply MonitorApi::get(const std::string& path, const Query& query) const {
     if (path == "/" || path == "/index.html") return {200, "text/html; charset=utf-8", std::string(monitor_page)};
     if (path == "/chart.js") {
       std::error_code ec;
-      if (!fs::is_regular_file(chart_script_, ec))
+      const fs::path chart = fs::canonical(chart_script_, ec);  // Debian's names are links
+      if (ec || !fs::is_regular_file(chart, ec))
         return error_reply(404, fmt::format("{} is missing: install Debian's libjs-chart.js for the cost chart",
                                             chart_script_.string()));
-      return {200, "text/javascript", read_file(chart_script_)};
+      return {200, "text/javascript", read_file(chart)};
     }
     if (path == "/api/folders") return folders_reply();
     if (path == "/api/status") return status_reply(query);
@@ -146,6 +191,26 @@ Reply MonitorApi::folders_reply() const {
   std::string names;
   for (const LayerSpec& l : layers) names += (names.empty() ? "" : ", ") + json_text(std::string(l.name));
   return {200, "application/json", out + "], \"layers\": [" + names + "]}\n"};
+}
+
+std::optional<std::string> MonitorApi::TraceCache::find(const std::string& key) const {
+  // Input: a pixel's key (the frame as its journal line records it); a copy,
+  // as another thread may drop the kept one meanwhile.
+  const std::lock_guard lock(mutex);
+  const auto it = replies.find(key);
+  if (it == replies.end()) return std::nullopt;
+  return it->second;
+}
+
+void MonitorApi::TraceCache::keep(const std::string& key, const std::string& reply) {
+  // Input: a trace's reply; the oldest kept is dropped beyond the bound.
+  const std::lock_guard lock(mutex);
+  if (!replies.emplace(key, reply).second) return;
+  order.push_back(key);
+  if (order.size() > max_cached_traces) {
+    replies.erase(order.front());
+    order.pop_front();
+  }
 }
 
 namespace {
@@ -180,7 +245,7 @@ fs::path frame_file(const fs::path& dir, const fs::path& file, long frame, const
 
 Reply MonitorApi::status_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
-  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  const farm::JournalContents journal = journal_of(dir, shot);
   std::map<int, std::uintmax_t> png_sizes;
   const auto sequences = find_frame_sequences(dir);
   if (const auto seq = sequences.find(shot); seq != sequences.end())
@@ -209,7 +274,7 @@ Reply MonitorApi::status_reply(const Query& q) const {
   const std::size_t stale_count = stale.other_settings.size() + stale.earlier_script.size() + stale.earlier_sky.size() +
                                   stale.unrecorded.size();
 
-  const farm::EventSummary ev = farm::read_events(farm::EventLog::file_of(dir, shot), 50);
+  const farm::EventSummary ev = events_of(dir, shot, 50);
   std::string run = "null";
   std::vector<int> in_flight;
   int to_do = 0;
@@ -277,7 +342,7 @@ Reply MonitorApi::frames_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
   const long from = number_param(q, "from", 0, 10'000'000, 0);
   const long count = number_param(q, "count", 1, max_frames_per_reply, 1000);
-  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  const farm::JournalContents journal = journal_of(dir, shot);
   std::string out;
   long n = 0;
   for (auto it = journal.frames.lower_bound(static_cast<int>(from)); it != journal.frames.end() && n < count; ++it, ++n) {
@@ -292,7 +357,7 @@ Reply MonitorApi::frames_reply(const Query& q) const {
 
 Reply MonitorApi::events_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
-  const farm::EventSummary ev = farm::read_events(farm::EventLog::file_of(dir, shot), 200);
+  const farm::EventSummary ev = events_of(dir, shot, 200);
   std::string out;
   for (const farm::Event& e : ev.recent) out += (out.empty() ? "" : ", ") + event_json(e);
   return {200, "application/json", fmt::format("{{\"events\": [{}]}}\n", out)};
@@ -311,7 +376,7 @@ Reply MonitorApi::trace_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
   const long frame = number_param(q, "frame", 0, 99'999'999);
   if (tracer_.empty()) throw BadRequest(501, "this monitor was started without the pixel inspector");
-  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  const farm::JournalContents journal = journal_of(dir, shot);
   const auto line = journal.frames.find(static_cast<int>(frame));
   if (line == journal.frames.end()) throw BadRequest(404, fmt::format("frame {} of '{}' is not finished", frame, shot));
   const farm::FrameSettings& st = line->second.settings;
@@ -320,7 +385,7 @@ Reply MonitorApi::trace_reply(const Query& q) const {
                                       "`lightcone trace` instead",
                                       frame));
   const long x = number_param(q, "x", 0, st.width - 1), y = number_param(q, "y", 0, st.height - 1);
-  const farm::EventSummary ev = farm::read_events(farm::EventLog::file_of(dir, shot), 1);
+  const farm::EventSummary ev = events_of(dir, shot, 1);
   if (!ev.run || ev.run->script.empty())
     throw BadRequest(409, "the render's event log does not name its shot script (rendered by an older lightcone?)");
   std::error_code ec;
@@ -334,8 +399,20 @@ Reply MonitorApi::trace_reply(const Query& q) const {
   r.width = st.width;
   r.height = st.height;
   r.camera = std::string(name_of(st.camera));
+  // The same pixel of the same frame as rendered (its inputs and when it
+  // was stored), traced before: its answer again.
+  const std::string key = fmt::format("{}/{}/{}/{}/{}/{}/{}/{}", number_param(q, "folder", 0, 1L << 30), shot, frame, x, y,
+                                      line->second.inputs, line->second.cost.finished, r.script.string());
+  if (auto cached = traces_.find(key)) return {200, "application/json", std::move(*cached)};
+  // One trace at a time: each is a process working a CPU the render may
+  // want, and a page clicked about would start one per click.
+  std::unique_lock busy(traces_.busy, std::try_to_lock);
+  if (!busy.owns_lock())
+    throw BadRequest(429, "the pixel inspector is tracing another pixel (one at a time): try again in a moment");
   try {
-    return {200, "application/json", trace_pixel_json(tracer_, r)};
+    std::string body = trace_pixel_json(tracer_, r);
+    traces_.keep(key, body);
+    return {200, "application/json", std::move(body)};
   } catch (const std::runtime_error& e) {
     throw BadRequest(422, e.what());
   }
