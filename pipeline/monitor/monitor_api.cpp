@@ -243,6 +243,33 @@ fs::path frame_file(const fs::path& dir, const fs::path& file, long frame, const
 
 }  // namespace
 
+namespace {
+
+// The frames the latest run stored per second of wall time lately: over
+// its last frame_rate_window frames as the log's recent events hold them
+// (from the run's start while it has stored no more: the shot's loading is
+// the run's), or, when they hold fewer than two of them (slow frames among
+// many progress lines), over the whole run to its last event.  nullopt
+// before a frame, or with no time between.
+std::optional<double> frames_per_second(const farm::EventSummary& ev) {
+  constexpr std::size_t frame_rate_window = 20;
+  if (!ev.run || ev.frames_stored == 0) return std::nullopt;
+  std::vector<double> times;
+  for (const farm::Event& e : ev.recent)
+    if (e.kind == "frame") times.push_back(e.time);
+  if (times.size() == static_cast<std::size_t>(ev.frames_stored)) times.insert(times.begin(), ev.run->time);
+  if (times.size() > frame_rate_window + 1) times.erase(times.begin(), times.end() - (frame_rate_window + 1));
+  if (times.size() >= 3 || (times.size() == 2 && times.front() == ev.run->time)) {
+    if (times.back() > times.front()) return static_cast<double>(times.size() - 1) / (times.back() - times.front());
+    return std::nullopt;
+  }
+  const double last = ev.recent.empty() ? ev.run->time : ev.recent.back().time;
+  if (last <= ev.run->time) return std::nullopt;
+  return ev.frames_stored / (last - ev.run->time);
+}
+
+}  // namespace
+
 Reply MonitorApi::status_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
   const farm::JournalContents journal = journal_of(dir, shot);
@@ -257,15 +284,11 @@ Reply MonitorApi::status_reply(const Query& q) const {
   const farm::StaleFrames stale = farm::stale_frames(journal, png_sizes);
   int done = 0;
   double core_seconds = 0.0;
-  int costed = 0;
   std::vector<std::pair<std::int64_t, int>> by_time;
   for (const auto& [f, jf] : journal.frames) {
     const auto png = png_sizes.find(f);
     if (png != png_sizes.end() && png->second == jf.png_bytes) ++done;
-    if (jf.cost.recorded()) {
-      core_seconds += jf.cost.core_seconds + jf.cost.star_seconds;
-      ++costed;
-    }
+    if (jf.cost.recorded()) core_seconds += jf.cost.core_seconds + jf.cost.star_seconds;
     by_time.emplace_back(jf.cost.finished, f);
   }
   std::sort(by_time.rbegin(), by_time.rend());
@@ -274,7 +297,7 @@ Reply MonitorApi::status_reply(const Query& q) const {
   const std::size_t stale_count = stale.other_settings.size() + stale.earlier_script.size() + stale.earlier_sky.size() +
                                   stale.unrecorded.size();
 
-  const farm::EventSummary ev = events_of(dir, shot, 50);
+  const farm::EventSummary ev = events_of(dir, shot, 200);
   std::string run = "null";
   std::vector<int> in_flight;
   int to_do = 0;
@@ -314,17 +337,18 @@ Reply MonitorApi::status_reply(const Query& q) const {
       for (std::string f; std::getline(open, f, ',');)
         if (!f.empty()) in_flight.push_back(std::atoi(f.c_str()));
     }
-    to_do = state == "running" ? std::max(0, r.todo - ev.frames_stored) : 0;
-    // ETA: the frames left at the mean core-seconds the journal measured,
-    // over the run's render threads.
-    const std::string eta = state == "running" && costed > 0 && threads > 0
-                                ? json_number(to_do * (core_seconds / costed) / threads)
-                                : "null";
+    // The run's frames not stored, whatever its state: an interrupted run
+    // left them for the same command to resume.
+    to_do = std::max(0, r.todo - ev.frames_stored);
+    const std::optional<double> rate = frames_per_second(ev);
+    const std::string per_minute = rate ? json_number(*rate * 60.0) : "null";
+    const std::string eta = state == "running" && rate ? json_number(to_do / *rate) : "null";
     run = fmt::format(
         "{{\"state\": {}, \"started\": {}, \"last_event\": {}, \"pid\": {}, \"host\": {}, \"ranks\": {}, \"threads\": {}, "
-        "\"todo\": {}, \"stored\": {}, \"eta_seconds\": {}, \"workers\": [{}], \"size\": [{}, {}]}}",
+        "\"todo\": {}, \"stored\": {}, \"frames_per_minute\": {}, \"eta_seconds\": {}, \"workers\": [{}], "
+        "\"size\": [{}, {}]}}",
         json_text(state), json_number(r.time), json_number(last), r.pid, json_text(r.host), r.ranks, threads, r.todo,
-        ev.frames_stored, eta, workers, r.width, r.height);
+        ev.frames_stored, per_minute, eta, workers, r.width, r.height);
   }
   std::string errors;
   for (const farm::Event& e : ev.errors)
@@ -342,17 +366,25 @@ Reply MonitorApi::frames_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
   const long from = number_param(q, "from", 0, 10'000'000, 0);
   const long count = number_param(q, "count", 1, max_frames_per_reply, 1000);
+  const long since = number_param(q, "since", 0, 1L << 40, 0);
   const farm::JournalContents journal = journal_of(dir, shot);
   std::string out;
   long n = 0;
-  for (auto it = journal.frames.lower_bound(static_cast<int>(from)); it != journal.frames.end() && n < count; ++it, ++n) {
+  std::string next = "null";  // where to go on from when `count` cut the answer short
+  for (auto it = journal.frames.lower_bound(static_cast<int>(from)); it != journal.frames.end(); ++it) {
     const farm::JournalFrame& jf = it->second;
+    if (jf.cost.finished < since) continue;
+    if (n == count) {
+      next = std::to_string(jf.frame);
+      break;
+    }
     out += fmt::format("{}{{\"frame\": {}, \"core_seconds\": {}, \"rays\": {}, \"finished\": {}}}", n ? ", " : "",
                        jf.frame, jf.cost.recorded() ? json_number(jf.cost.core_seconds + jf.cost.star_seconds) : "null",
                        jf.cost.rays, jf.cost.finished);
+    ++n;
   }
   return {200, "application/json",
-          fmt::format("{{\"total\": {}, \"frames\": [{}]}}\n", journal.frames.size(), out)};
+          fmt::format("{{\"total\": {}, \"frames\": [{}], \"next\": {}}}\n", journal.frames.size(), out, next)};
 }
 
 Reply MonitorApi::events_reply(const Query& q) const {

@@ -7,7 +7,8 @@
 # fast while normal requests are answered, and the monitor's memory stays
 # bounded; journals that are links, FIFOs or someone else's are refused
 # without a word of them and hold nothing; in a real browser one shot
-# that cannot be shown says so on its card while the others are shown.
+# that cannot be shown says so on its card while the others are shown, and
+# a 12,000-frame film's cost chart has all its points.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
@@ -23,6 +24,24 @@ mkfifo out/fifo.journal
 cp out/kerr_fall.events out/fifo.events
 ln -s "$WORK/passwd" out/leak.journal
 ln -s "$WORK/passwd" out/count.events
+# A film of 12,000 frames: the render's frame line copied with each
+# frame's number and cost, each line with its check (FNV-1a, as
+# pipeline/farm/checked_line.hpp).
+"$PY" - out/kerr_fall.journal out/long.journal <<'PY'
+import re, sys
+def check(content):
+    h = 0xcbf29ce484222325
+    for b in content:
+        h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+    return b"%s #%016x\n" % (content, h)
+lines = open(sys.argv[1], "rb").read().split(b"\n")
+frame = next(l.rpartition(b" #")[0] for l in lines if l.startswith(b"frame="))
+with open(sys.argv[2], "wb") as out:
+    out.write(lines[0] + b"\n")
+    for f in range(12000):
+        line = re.sub(rb"^frame=0 ", b"frame=%d " % f, frame)
+        out.write(check(re.sub(rb"core_seconds=[0-9.]+", b"core_seconds=%d" % (1 + f % 7), line)))
+PY
 
 "$LIGHTCONE" monitor out --port 0 2>monitor.log &
 monitor=$!
@@ -39,7 +58,7 @@ code() { curl -s --max-time 5 -o body.txt -w "%{http_code}" "$URL$1"; }
 # Links are not shots; a foreign journal is refused unquoted; the FIFO
 # answers at once, ten requests at a time, and holds nothing.
 shots=$(curl -s --max-time 5 "$URL/api/folders")
-grep -q '"shots": \["fifo", "foreign", "kerr_fall"\]' <<<"$shots" || fail "the shots listed: $shots"
+grep -q '"shots": \["fifo", "foreign", "kerr_fall", "long"\]' <<<"$shots" || fail "the shots listed: $shots"
 [ "$(code "/api/status?folder=0&shot=leak")" = 404 ] || fail "a linked journal: $(cat body.txt)"
 [ "$(code "/api/status?folder=0&shot=count")" = 404 ] || fail "a linked event log: $(cat body.txt)"
 [ "$(code "/api/status?folder=0&shot=foreign")" = 422 ] || fail "a foreign journal: $(cat body.txt)"
@@ -77,6 +96,8 @@ grep -q 'data-count="done">1<' page.html || fail "the good shot's card: $(grep -
 grep -q 'cannot show this shot: foreign.journal is not a lightcone journal' page.html \
   || fail "the foreign shot's card: $(grep -o 'class="card-error">[^<]*<' page.html)"
 grep -q "SECRET" page.html && fail "the page quotes a foreign file"
+# The long film's cost chart has all its 12,000 points (not 10,000).
+grep -q 'data-points="12000"' page.html || fail "the long film's chart: $(grep -o 'data-points="[0-9]*"' page.html | tr '\n' ' ')"
 
 # A kill (SIGTERM, as Ctrl-C) stops it at once.
 kill -TERM "$monitor"

@@ -5,12 +5,14 @@
 // naming why, and nothing outside the folders is read.
 
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <future>
 #include <memory>
 #include <thread>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "farm/checked_line.hpp"
@@ -63,11 +65,16 @@ TEST(MonitorApi, StatusCountsTheJournalAndTheRun) {
   EXPECT_TRUE(has(s, "\"frames\": {\"done\": 3, \"in_flight\": [3], \"to_do\": 2, \"stale\": 0}")) << s.body;
   EXPECT_TRUE(has(s, "\"state\": \"running\"")) << s.body;
   EXPECT_TRUE(has(s, "\"latest\": [2,1,0]")) << s.body;
-  // Two frames left at the journal's mean of 2 core-seconds, on 2 threads.
-  EXPECT_TRUE(has(s, "\"eta_seconds\": 2,")) << s.body;
   const Reply frames = api.get("/api/frames", {{"folder", "0"}, {"shot", "s"}, {"from", "1"}, {"count", "1"}});
   EXPECT_EQ(frames.body.rfind("{\"total\": 3, \"frames\": [{\"frame\": 1, \"core_seconds\": 2, \"rays\": 8, \"finished\": ", 0), 0u)
       << frames.body;  // one frame: `count` 1 from frame 1
+  EXPECT_TRUE(has(frames, "\"next\": 2}")) << frames.body;  // where the rest goes on
+  const Reply rest = api.get("/api/frames", {{"folder", "0"}, {"shot", "s"}, {"from", "2"}, {"count", "5"}});
+  EXPECT_TRUE(has(rest, "[{\"frame\": 2, ") && has(rest, "\"next\": null}")) << rest.body;
+  // Only the frames finished since a time (what the page asks for once it has the rest).
+  const std::string later = std::to_string(std::time(nullptr) + 1000);
+  const Reply none = api.get("/api/frames", {{"folder", "0"}, {"shot", "s"}, {"since", later}});
+  EXPECT_TRUE(has(none, "{\"total\": 3, \"frames\": [], \"next\": null}")) << none.body;
   const Reply events = api.get("/api/events", {{"folder", "0"}, {"shot", "s"}});
   EXPECT_TRUE(has(events, "\"event\": \"progress\"")) << events.body;
   const Reply png = api.get("/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "2"}});
@@ -170,7 +177,36 @@ TEST(MonitorApi, ARunThatStoppedWithoutAnEndIsSaidToHaveStopped) {
   const MonitorApi api({dir});
   const Reply s = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
   EXPECT_TRUE(has(s, "\"state\": \"stopped\"")) << s.body;
-  EXPECT_TRUE(has(s, "\"to_do\": 0")) << s.body;
+  EXPECT_TRUE(has(s, "\"to_do\": 4")) << s.body;  // left for the same command to resume
+}
+
+// The ETA in wall time: the frames left at the rate the run stored its
+// latest frames; and the frames left after an interruption.
+TEST(MonitorApi, TheEtaIsInWallTimeAndFramesLeftOutliveTheRun) {
+  test::ScratchDir scratch;
+  const fs::path dir = scratch / "out";
+  fs::create_directories(dir);
+  const long t0 = static_cast<long>(std::time(nullptr)) - 40;
+  {
+    std::ofstream out(farm::EventLog::file_of(dir, "s"));
+    out << farm::with_check("lightcone-events 1") << "\n";
+    out << farm::with_check(fmt::format("t={} event=run pid=1 host=h ranks=1 threads=8 todo=5 done=0 size=4x2", t0)) << "\n";
+    for (int f = 0; f < 3; ++f)  // one every 10 s
+      out << farm::with_check(fmt::format("t={} event=frame frame={} core_seconds=80 rays=8", t0 + 10 * (f + 1), f)) << "\n";
+    out << farm::with_check(fmt::format("t={} event=progress stored=3 total=5 open=3", t0 + 39)) << "\n";
+  }
+  const MonitorApi api({dir});
+  const Reply running = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(running, "\"state\": \"running\"")) << running.body;
+  EXPECT_TRUE(has(running, "\"to_do\": 2")) << running.body;
+  // 3 frames in 30 s: 6 a minute, the 2 left in 20 s (not 2 x 80 core-seconds over 8 threads).
+  EXPECT_TRUE(has(running, "\"frames_per_minute\": 6, \"eta_seconds\": 20,")) << running.body;
+  std::ofstream(farm::EventLog::file_of(dir, "s"), std::ios::app)
+      << farm::with_check(fmt::format("t={} event=end status=interrupted stored=3", t0 + 40)) << "\n";
+  const Reply interrupted = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(interrupted, "\"state\": \"interrupted\"")) << interrupted.body;
+  EXPECT_TRUE(has(interrupted, "\"to_do\": 2")) << interrupted.body;
+  EXPECT_TRUE(has(interrupted, "\"eta_seconds\": null")) << interrupted.body;
 }
 
 // An MPI run's workers: each one's state from what the latest progress
