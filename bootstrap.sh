@@ -20,7 +20,7 @@ packages=(
   luajit libluajit-5.1-dev libgsl-dev libopenmpi-dev openmpi-bin
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   libopenimageio-dev openimageio-tools libcli11-dev libfmt-dev libgtest-dev libcairo2-dev
-  libcpp-httplib-dev libjs-chart.js zlib1g-dev libdeflate-dev
+  libmicrohttpd-dev libjs-chart.js zlib1g-dev libdeflate-dev
 )
 # The end-to-end tests also read results back with tools a minimal Debian
 # lacks: python3 (PNG chunks, MP4 atoms, JSON), python3-openimageio and

@@ -1,11 +1,20 @@
 #include "monitor_command.hpp"
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 
+#include <netdb.h>
+#include <sys/socket.h>
+
 #include <fmt/format.h>
-#include <httplib.h>
+#include <microhttpd.h>
 
 #include "interrupt.hpp"
 #include "monitor/monitor_api.hpp"
@@ -14,9 +23,251 @@ namespace lc {
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
+// What one client may cost the monitor (docs/monitor.md, "Safe by
+// default").  libmicrohttpd holds a request's line and header lines in the
+// connection's own memory: a head larger than this is answered 431 and the
+// connection closed.
+constexpr std::size_t connection_memory_bytes = 32 * 1024;
+constexpr unsigned max_connections = 64;
+// A connection that sends or takes nothing for this long is closed
+// (libmicrohttpd's timeout, reset by every byte).
+constexpr unsigned idle_timeout_seconds = 10;
+// From a connection's opening (or its last answer) to the end of a
+// request's head, whatever trickles in meanwhile: a client sending a
+// header line every few seconds is closed after this.
+constexpr auto head_deadline = std::chrono::seconds(5);
+// The threads that poll the connections and answer the requests (all but
+// the pixel inspector's, which run on a thread of their own).
+constexpr unsigned polling_threads = 4;
+
 bool loopback(const std::string& address) {
   return address == "127.0.0.1" || address == "::1" || address == "localhost" || address.rfind("127.", 0) == 0;
 }
+
+// One connection's wait for a request's head: since when, and whether it
+// is waiting (between requests, or in a head) or being answered.
+struct HeadWait {
+  int fd = -1;
+  Clock::time_point since = Clock::now();
+  bool waiting = true;
+  bool cut = false;
+};
+
+// An /api/trace request being answered on a thread of its own (the
+// connection suspended meanwhile, so a trace holds no polling thread).
+struct Pending {
+  std::thread worker;
+  monitor::Reply reply;
+  std::atomic<bool> done{false};
+};
+
+// The HTTP server over the monitor's API, on libmicrohttpd: every request
+// is a GET or HEAD without a body (anything else is refused before a byte
+// of it is read), each connection's memory and time are bounded, and slow
+// clients hold no thread (an internal epoll thread pool).  Range requests:
+// one range is ignored (the whole answer, 200); several are refused (416).
+class Server {
+ public:
+  // Inputs: the API (outliving the server), the address and port (0: any
+  // free one).  Throws std::runtime_error when it cannot listen there.
+  Server(const monitor::MonitorApi& api, const std::string& bind, int port) : api_(api) {
+    addrinfo hints{};
+    hints.ai_family = AF_UNSPEC;
+    hints.ai_socktype = SOCK_STREAM;
+    hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
+    addrinfo* found = nullptr;
+    const std::string service = std::to_string(port);
+    if (::getaddrinfo(bind.c_str(), service.c_str(), &hints, &found) != 0 || !found) throw_cannot_listen(bind, port);
+    const std::unique_ptr<addrinfo, void (*)(addrinfo*)> address(found, ::freeaddrinfo);
+    const unsigned flags = MHD_USE_AUTO_INTERNAL_THREAD | MHD_ALLOW_SUSPEND_RESUME |
+                           (found->ai_family == AF_INET6 ? MHD_USE_IPv6 : 0);
+    // libmicrohttpd's default sets SO_REUSEADDR alone (not SO_REUSEPORT,
+    // with which a second monitor would share a port in use silently).
+    daemon_ = MHD_start_daemon(
+        flags, static_cast<std::uint16_t>(port), nullptr, nullptr, &Server::answer, this, MHD_OPTION_SOCK_ADDR,
+        found->ai_addr, MHD_OPTION_THREAD_POOL_SIZE, polling_threads, MHD_OPTION_CONNECTION_LIMIT, max_connections,
+        MHD_OPTION_CONNECTION_MEMORY_LIMIT, connection_memory_bytes, MHD_OPTION_CONNECTION_TIMEOUT,
+        idle_timeout_seconds, MHD_OPTION_NOTIFY_CONNECTION, &Server::connection_event, this,
+        MHD_OPTION_NOTIFY_COMPLETED, &Server::completed, this, MHD_OPTION_END);
+    if (!daemon_) throw_cannot_listen(bind, port);
+    const MHD_DaemonInfo* info = MHD_get_daemon_info(daemon_, MHD_DAEMON_INFO_BIND_PORT);
+    port_ = info ? info->port : port;
+    watchman_ = std::thread([this] { cut_slow_heads(); });
+  }
+
+  // Waits for the traces being answered (each cut off after 60 s), then
+  // stops: libmicrohttpd must not be stopped with a connection suspended.
+  ~Server() {
+    {
+      std::unique_lock lock(mutex_);
+      traces_done_.wait(lock, [this] { return traces_ == 0; });
+      stopping_ = true;
+    }
+    watch_.notify_all();
+    watchman_.join();
+    MHD_stop_daemon(daemon_);
+  }
+
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  int port() const { return port_; }
+
+ private:
+  [[noreturn]] static void throw_cannot_listen(const std::string& bind, int port) {
+    throw std::runtime_error(fmt::format("--bind {} --port {}: cannot listen there (in use, or not an address of this "
+                                         "machine); try another --port, or --port 0 for any free one",
+                                         bind, port));
+  }
+
+  // A connection opened or closed: its head wait is kept from one to the
+  // other (closed is said before libmicrohttpd closes the socket, so the
+  // watchman never shuts another connection's).
+  static void connection_event(void* cls, MHD_Connection* c, void** socket_context, MHD_ConnectionNotificationCode code) {
+    auto* self = static_cast<Server*>(cls);
+    const std::lock_guard lock(self->mutex_);
+    if (code == MHD_CONNECTION_NOTIFY_STARTED) {
+      const MHD_ConnectionInfo* info = MHD_get_connection_info(c, MHD_CONNECTION_INFO_CONNECTION_FD);
+      auto wait = std::make_unique<HeadWait>();
+      wait->fd = info ? info->connect_fd : -1;
+      *socket_context = wait.get();
+      self->waits_.emplace(wait.get(), std::move(wait));
+    } else if (*socket_context) {
+      self->waits_.erase(static_cast<HeadWait*>(*socket_context));
+      *socket_context = nullptr;
+    }
+  }
+
+  // Marks the connection's head received (`waiting` false) or its answer
+  // sent (waiting for the next head from now).
+  void set_waiting(MHD_Connection* c, bool waiting) {
+    const MHD_ConnectionInfo* info = MHD_get_connection_info(c, MHD_CONNECTION_INFO_SOCKET_CONTEXT);
+    const std::lock_guard lock(mutex_);
+    if (!info || !info->socket_context) return;
+    auto* wait = static_cast<HeadWait*>(info->socket_context);
+    wait->waiting = waiting;
+    wait->since = Clock::now();
+  }
+
+  // A request answered (or given up): its trace, if any, is freed, and the
+  // connection waits for its next head.
+  static void completed(void* cls, MHD_Connection* c, void** req_cls, MHD_RequestTerminationCode) {
+    auto* self = static_cast<Server*>(cls);
+    if (auto* pending = static_cast<Pending*>(*req_cls)) {
+      if (pending->worker.joinable()) pending->worker.join();
+      delete pending;
+      *req_cls = nullptr;
+    }
+    self->set_waiting(c, true);
+  }
+
+  // The watchman: shuts the socket of each connection whose head has taken
+  // longer than head_deadline (libmicrohttpd then closes it); its timeout
+  // alone would wait for ever on a client sending a byte now and then.
+  void cut_slow_heads() {
+    std::unique_lock lock(mutex_);
+    while (!stopping_) {
+      watch_.wait_for(lock, std::chrono::milliseconds(250));
+      const auto now = Clock::now();
+      for (auto& [key, wait] : waits_)
+        if (wait->waiting && !wait->cut && wait->fd >= 0 && now - wait->since > head_deadline) {
+          ::shutdown(wait->fd, SHUT_RDWR);
+          wait->cut = true;
+        }
+    }
+  }
+
+  static MHD_Result queue(MHD_Connection* c, const monitor::Reply& reply,
+                          const std::map<std::string, std::string>& extra = {}) {
+    // The body is copied into a buffer the response owns.
+    auto* body = new std::string(reply.body);
+    MHD_Response* response = MHD_create_response_from_buffer_with_free_callback_cls(
+        body->size(), body->data(), [](void* cls) { delete static_cast<std::string*>(cls); }, body);
+    if (!response) {
+      delete body;
+      return MHD_NO;
+    }
+    MHD_add_response_header(response, MHD_HTTP_HEADER_CONTENT_TYPE, reply.content_type.c_str());
+    MHD_add_response_header(response, MHD_HTTP_HEADER_CACHE_CONTROL, "no-store");
+    MHD_add_response_header(response, "X-Content-Type-Options", "nosniff");
+    for (const auto& [name, value] : extra) MHD_add_response_header(response, name.c_str(), value.c_str());
+    const MHD_Result queued = MHD_queue_response(c, static_cast<unsigned>(reply.status), response);
+    MHD_destroy_response(response);
+    return queued;
+  }
+
+  static MHD_Result add_argument(void* cls, MHD_ValueKind, const char* key, const char* value) {
+    static_cast<monitor::Query*>(cls)->emplace(key ? key : "", value ? value : "");
+    return MHD_YES;
+  }
+
+  static std::string header(MHD_Connection* c, const char* name) {
+    const char* v = MHD_lookup_connection_value(c, MHD_HEADER_KIND, name);
+    return v ? v : "";
+  }
+
+  // libmicrohttpd's access handler, called once a request's head is in:
+  // the request is refused or answered then, before any body is read
+  // (the monitor takes none), except a pixel trace, answered when its
+  // thread is done (called again after the connection is resumed).
+  static MHD_Result answer(void* cls, MHD_Connection* c, const char* url, const char* method, const char*,
+                           const char*, size_t* upload_size, void** req_cls) {
+    auto* self = static_cast<Server*>(cls);
+    if (auto* pending = static_cast<Pending*>(*req_cls)) {
+      if (!pending->done) {  // not expected: resumed before its reply
+        MHD_suspend_connection(c);
+        return MHD_YES;
+      }
+      pending->worker.join();
+      return queue(c, pending->reply, pending->reply.status == 429 ? std::map<std::string, std::string>{{"Retry-After", "1"}}
+                                                                  : std::map<std::string, std::string>{});
+    }
+    self->set_waiting(c, false);
+    const std::string verb = method;
+    if (verb != "GET" && verb != "HEAD")
+      return queue(c, monitor::error_reply(405, "the monitor only reads: GET or HEAD"), {{"Allow", "GET, HEAD"}});
+    if (!header(c, MHD_HTTP_HEADER_TRANSFER_ENCODING).empty() || !header(c, MHD_HTTP_HEADER_CONTENT_ENCODING).empty() ||
+        (!header(c, MHD_HTTP_HEADER_CONTENT_LENGTH).empty() && header(c, MHD_HTTP_HEADER_CONTENT_LENGTH) != "0") ||
+        *upload_size != 0)
+      return queue(c, monitor::error_reply(413, "the monitor takes no request body"));
+    if (header(c, MHD_HTTP_HEADER_RANGE).find(',') != std::string::npos)
+      return queue(c, monitor::error_reply(416, "several ranges in one request are not served"));
+    monitor::Query query;
+    MHD_get_connection_values(c, MHD_GET_ARGUMENT_KIND, &Server::add_argument, &query);
+    const std::string path = url ? url : "";
+    if (path != "/api/trace") return queue(c, self->api_.get(path, query));
+    // A trace takes up to a minute: on a thread of its own, the connection
+    // suspended meanwhile (its polling thread serves the others).
+    auto* pending = new Pending;
+    *req_cls = pending;
+    {
+      const std::lock_guard lock(self->mutex_);
+      ++self->traces_;
+    }
+    MHD_suspend_connection(c);
+    pending->worker = std::thread([self, c, pending, query = std::move(query)] {
+      pending->reply = self->api_.get("/api/trace", query);
+      pending->done = true;
+      MHD_resume_connection(c);
+      const std::lock_guard lock(self->mutex_);
+      --self->traces_;
+      self->traces_done_.notify_all();
+    });
+    return MHD_YES;
+  }
+
+  const monitor::MonitorApi& api_;
+  MHD_Daemon* daemon_ = nullptr;
+  int port_ = 0;
+  std::mutex mutex_;  // guards what follows
+  std::map<HeadWait*, std::unique_ptr<HeadWait>> waits_;
+  int traces_ = 0;
+  bool stopping_ = false;
+  std::condition_variable traces_done_, watch_;
+  std::thread watchman_;
+};
 
 }  // namespace
 
@@ -28,62 +279,18 @@ int run_monitor(const MonitorCommand& cmd) {
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   const monitor::MonitorApi api(cmd.dirs, ec ? std::filesystem::path{} : self);
-  httplib::Server server;
-  server.Get(".*", [&api](const httplib::Request& req, httplib::Response& res) {
-    monitor::Query query;
-    for (const auto& [k, v] : req.params) query.emplace(k, v);
-    const monitor::Reply reply = api.get(req.path, query);
-    res.status = reply.status;
-    res.set_header("Cache-Control", "no-store");
-    res.set_header("X-Content-Type-Options", "nosniff");
-    res.set_content(reply.body, reply.content_type.c_str());
-  });
-  // Anything but GET (and HEAD, which httplib answers from GET) is refused.
-  const auto refuse = [](const httplib::Request&, httplib::Response& res) {
-    const monitor::Reply r = monitor::error_reply(405, "the monitor only reads: GET");
-    res.status = r.status;
-    res.set_content(r.body, r.content_type.c_str());
-  };
-  server.Post(".*", refuse);
-  server.Put(".*", refuse);
-  server.Delete(".*", refuse);
-  server.Patch(".*", refuse);
-  server.set_payload_max_length(64 * 1024);
-  // httplib's default also sets SO_REUSEPORT, with which a second monitor
-  // on a port in use would share it silently (each answering some of the
-  // requests): only SO_REUSEADDR, so a port in use is refused.
-  server.set_socket_options([](socket_t sock) {
-    int yes = 1;
-    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  });
-
-  const int port = cmd.port == 0 ? server.bind_to_any_port(cmd.bind) : (server.bind_to_port(cmd.bind, cmd.port) ? cmd.port : -1);
-  if (port < 0)
-    throw std::runtime_error(fmt::format("--bind {} --port {}: cannot listen there (in use, or not an address of this "
-                                         "machine); try another --port, or --port 0 for any free one",
-                                         cmd.bind, cmd.port));
+  InterruptGuard guard;
+  const Server server(api, cmd.bind, cmd.port);
   fmt::print(stderr, "monitor: {} folder{} at http://{}:{}/ (Ctrl-C to stop)\n", api.folders().size(),
              api.folders().size() == 1 ? "" : "s", cmd.bind.find(':') != std::string::npos ? "[" + cmd.bind + "]" : cmd.bind,
-             port);
+             server.port());
   if (!loopback(cmd.bind))
     fmt::print(stderr,
                "monitor: warning: listening on {}, not only this machine: anyone who can reach it sees the frames and "
                "the folders' paths. Prefer the default 127.0.0.1 and an ssh tunnel (docs/monitor.md)\n",
                cmd.bind);
-  InterruptGuard guard;
-  std::thread watcher([&server, &guard] {
-    while (guard.signal() == 0 && !server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    while (guard.signal() == 0 && server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    server.stop();
-  });
-  const bool ok = server.listen_after_bind();
-  server.stop();
-  watcher.join();
-  if (guard.signal()) {
-    fmt::print(stderr, "monitor: stopped by {}\n", signal_name(guard.signal()));
-    return 0;
-  }
-  if (!ok) throw std::runtime_error("monitor: the server stopped listening");
+  while (guard.signal() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  fmt::print(stderr, "monitor: stopped by {}\n", signal_name(guard.signal()));
   return 0;
 }
 

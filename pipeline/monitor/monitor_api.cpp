@@ -4,7 +4,6 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <cstdio>
 #include <stdexcept>
@@ -18,6 +17,7 @@
 #include "farm/frame_files.hpp"
 #include "farm/journal.hpp"
 #include "image/image_io.hpp"
+#include "monitor/folder_file.hpp"
 #include "monitor/layer_picture.hpp"
 #include "monitor/pixel_trace.hpp"
 #include "render/layers.hpp"
@@ -34,6 +34,12 @@ namespace {
 // stopped (killed, or its node lost): it writes progress every 2 s.
 constexpr double silent_after_seconds = 15.0;
 constexpr int max_frames_per_reply = 10000;
+// The largest file served (a frame's PNG, the chart library): one request
+// must not hold more in memory.  A 16-bit 8K frame's PNG is ~200 MB.
+constexpr std::size_t max_served_bytes = 512u << 20;
+// The pixel traces kept, so that asking again for a pixel (the page's
+// user clicking about) costs no new trace.
+constexpr std::size_t max_cached_traces = 64;
 
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
@@ -73,12 +79,48 @@ std::string event_json(const farm::Event& e) {
   return out + "}";
 }
 
+// The bytes of `p` (no link in its last component: the callers resolve
+// links first), if it is a regular file of at most max_served_bytes.
 std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw BadRequest(404, fmt::format("cannot read {}", p.filename().string()));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  const FolderFile file(p);
+  if (file.missing() || file.refused()) throw BadRequest(404, fmt::format("cannot read {}", p.filename().string()));
+  try {
+    return file.read_all(max_served_bytes);
+  } catch (const std::runtime_error& e) {
+    throw BadRequest(413, fmt::format("{} {}", p.filename().string(), e.what()));
+  }
+}
+
+// The journal of `shot` in `dir` (canonical), read only if it is a regular
+// file of the folder that begins as lightcone's journals do: a link, a FIFO,
+// a device or someone else's file is refused without a word of what it
+// holds.  No journal: an empty one.
+farm::JournalContents journal_of(const fs::path& dir, const std::string& shot) {
+  const std::string name = shot + ".journal";
+  const FolderFile file(dir / name);
+  if (file.missing()) return {};
+  if (file.refused()) throw BadRequest(403, fmt::format("{} {}", name, file.why()));
+  // A journal cut short in its first line (a crash as it was created) is a
+  // prefix of the header; anything else is not lightcone's.
+  const std::string header = farm::journal_header_line() + "\n";
+  const std::string head = file.head(header.size());
+  if (header.compare(0, head.size(), head) != 0)
+    throw BadRequest(422, fmt::format("{} is not a lightcone journal: not read", name));
+  try {
+    return farm::read_journal(file.self_path());
+  } catch (const std::exception&) {
+    throw std::runtime_error(fmt::format("cannot read {}", name));
+  }
+}
+
+// The event log of `shot` in `dir`, on the same terms as journal_of (its
+// lines that fail their check are only counted, never shown).
+farm::EventSummary events_of(const fs::path& dir, const std::string& shot, std::size_t keep) {
+  const fs::path path = farm::EventLog::file_of(dir, shot);
+  const FolderFile file(path);
+  if (file.missing()) return {};
+  if (file.refused()) throw BadRequest(403, fmt::format("{} {}", path.filename().string(), file.why()));
+  return farm::read_events(file.self_path(), keep);
 }
 
 }  // namespace
@@ -92,7 +134,9 @@ std::vector<std::string> shots_in(const fs::path& dir) {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     const std::string ext = e.path().extension().string();
-    if ((ext == ".journal" || ext == ".events") && e.is_regular_file(ec)) shots.push_back(e.path().stem().string());
+    // Not followed through a link: a link's target is not the render's.
+    if ((ext == ".journal" || ext == ".events") && e.symlink_status(ec).type() == fs::file_type::regular)
+      shots.push_back(e.path().stem().string());
   }
   std::sort(shots.begin(), shots.end());
   shots.erase(std::unique(shots.begin(), shots.end()), shots.end());
@@ -115,10 +159,11 @@ Reply MonitorApi::get(const std::string& path, const Query& query) const {
     if (path == "/" || path == "/index.html") return {200, "text/html; charset=utf-8", std::string(monitor_page)};
     if (path == "/chart.js") {
       std::error_code ec;
-      if (!fs::is_regular_file(chart_script_, ec))
+      const fs::path chart = fs::canonical(chart_script_, ec);  // Debian's names are links
+      if (ec || !fs::is_regular_file(chart, ec))
         return error_reply(404, fmt::format("{} is missing: install Debian's libjs-chart.js for the cost chart",
                                             chart_script_.string()));
-      return {200, "text/javascript", read_file(chart_script_)};
+      return {200, "text/javascript", read_file(chart)};
     }
     if (path == "/api/folders") return folders_reply();
     if (path == "/api/status") return status_reply(query);
@@ -146,6 +191,26 @@ Reply MonitorApi::folders_reply() const {
   std::string names;
   for (const LayerSpec& l : layers) names += (names.empty() ? "" : ", ") + json_text(std::string(l.name));
   return {200, "application/json", out + "], \"layers\": [" + names + "]}\n"};
+}
+
+std::optional<std::string> MonitorApi::TraceCache::find(const std::string& key) const {
+  // Input: a pixel's key (the frame as its journal line records it); a copy,
+  // as another thread may drop the kept one meanwhile.
+  const std::lock_guard lock(mutex);
+  const auto it = replies.find(key);
+  if (it == replies.end()) return std::nullopt;
+  return it->second;
+}
+
+void MonitorApi::TraceCache::keep(const std::string& key, const std::string& reply) {
+  // Input: a trace's reply; the oldest kept is dropped beyond the bound.
+  const std::lock_guard lock(mutex);
+  if (!replies.emplace(key, reply).second) return;
+  order.push_back(key);
+  if (order.size() > max_cached_traces) {
+    replies.erase(order.front());
+    order.pop_front();
+  }
 }
 
 namespace {
@@ -178,9 +243,36 @@ fs::path frame_file(const fs::path& dir, const fs::path& file, long frame, const
 
 }  // namespace
 
+namespace {
+
+// The frames the latest run stored per second of wall time lately: over
+// its last frame_rate_window frames as the log's recent events hold them
+// (from the run's start while it has stored no more: the shot's loading is
+// the run's), or, when they hold fewer than two of them (slow frames among
+// many progress lines), over the whole run to its last event.  nullopt
+// before a frame, or with no time between.
+std::optional<double> frames_per_second(const farm::EventSummary& ev) {
+  constexpr std::size_t frame_rate_window = 20;
+  if (!ev.run || ev.frames_stored == 0) return std::nullopt;
+  std::vector<double> times;
+  for (const farm::Event& e : ev.recent)
+    if (e.kind == "frame") times.push_back(e.time);
+  if (times.size() == static_cast<std::size_t>(ev.frames_stored)) times.insert(times.begin(), ev.run->time);
+  if (times.size() > frame_rate_window + 1) times.erase(times.begin(), times.end() - (frame_rate_window + 1));
+  if (times.size() >= 3 || (times.size() == 2 && times.front() == ev.run->time)) {
+    if (times.back() > times.front()) return static_cast<double>(times.size() - 1) / (times.back() - times.front());
+    return std::nullopt;
+  }
+  const double last = ev.recent.empty() ? ev.run->time : ev.recent.back().time;
+  if (last <= ev.run->time) return std::nullopt;
+  return ev.frames_stored / (last - ev.run->time);
+}
+
+}  // namespace
+
 Reply MonitorApi::status_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
-  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  const farm::JournalContents journal = journal_of(dir, shot);
   std::map<int, std::uintmax_t> png_sizes;
   const auto sequences = find_frame_sequences(dir);
   if (const auto seq = sequences.find(shot); seq != sequences.end())
@@ -192,15 +284,11 @@ Reply MonitorApi::status_reply(const Query& q) const {
   const farm::StaleFrames stale = farm::stale_frames(journal, png_sizes);
   int done = 0;
   double core_seconds = 0.0;
-  int costed = 0;
   std::vector<std::pair<std::int64_t, int>> by_time;
   for (const auto& [f, jf] : journal.frames) {
     const auto png = png_sizes.find(f);
     if (png != png_sizes.end() && png->second == jf.png_bytes) ++done;
-    if (jf.cost.recorded()) {
-      core_seconds += jf.cost.core_seconds + jf.cost.star_seconds;
-      ++costed;
-    }
+    if (jf.cost.recorded()) core_seconds += jf.cost.core_seconds + jf.cost.star_seconds;
     by_time.emplace_back(jf.cost.finished, f);
   }
   std::sort(by_time.rbegin(), by_time.rend());
@@ -209,7 +297,7 @@ Reply MonitorApi::status_reply(const Query& q) const {
   const std::size_t stale_count = stale.other_settings.size() + stale.earlier_script.size() + stale.earlier_sky.size() +
                                   stale.unrecorded.size();
 
-  const farm::EventSummary ev = farm::read_events(farm::EventLog::file_of(dir, shot), 50);
+  const farm::EventSummary ev = events_of(dir, shot, 200);
   std::string run = "null";
   std::vector<int> in_flight;
   int to_do = 0;
@@ -249,17 +337,18 @@ Reply MonitorApi::status_reply(const Query& q) const {
       for (std::string f; std::getline(open, f, ',');)
         if (!f.empty()) in_flight.push_back(std::atoi(f.c_str()));
     }
-    to_do = state == "running" ? std::max(0, r.todo - ev.frames_stored) : 0;
-    // ETA: the frames left at the mean core-seconds the journal measured,
-    // over the run's render threads.
-    const std::string eta = state == "running" && costed > 0 && threads > 0
-                                ? json_number(to_do * (core_seconds / costed) / threads)
-                                : "null";
+    // The run's frames not stored, whatever its state: an interrupted run
+    // left them for the same command to resume.
+    to_do = std::max(0, r.todo - ev.frames_stored);
+    const std::optional<double> rate = frames_per_second(ev);
+    const std::string per_minute = rate ? json_number(*rate * 60.0) : "null";
+    const std::string eta = state == "running" && rate ? json_number(to_do / *rate) : "null";
     run = fmt::format(
         "{{\"state\": {}, \"started\": {}, \"last_event\": {}, \"pid\": {}, \"host\": {}, \"ranks\": {}, \"threads\": {}, "
-        "\"todo\": {}, \"stored\": {}, \"eta_seconds\": {}, \"workers\": [{}], \"size\": [{}, {}]}}",
+        "\"todo\": {}, \"stored\": {}, \"frames_per_minute\": {}, \"eta_seconds\": {}, \"workers\": [{}], "
+        "\"size\": [{}, {}]}}",
         json_text(state), json_number(r.time), json_number(last), r.pid, json_text(r.host), r.ranks, threads, r.todo,
-        ev.frames_stored, eta, workers, r.width, r.height);
+        ev.frames_stored, per_minute, eta, workers, r.width, r.height);
   }
   std::string errors;
   for (const farm::Event& e : ev.errors)
@@ -277,22 +366,30 @@ Reply MonitorApi::frames_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
   const long from = number_param(q, "from", 0, 10'000'000, 0);
   const long count = number_param(q, "count", 1, max_frames_per_reply, 1000);
-  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  const long since = number_param(q, "since", 0, 1L << 40, 0);
+  const farm::JournalContents journal = journal_of(dir, shot);
   std::string out;
   long n = 0;
-  for (auto it = journal.frames.lower_bound(static_cast<int>(from)); it != journal.frames.end() && n < count; ++it, ++n) {
+  std::string next = "null";  // where to go on from when `count` cut the answer short
+  for (auto it = journal.frames.lower_bound(static_cast<int>(from)); it != journal.frames.end(); ++it) {
     const farm::JournalFrame& jf = it->second;
+    if (jf.cost.finished < since) continue;
+    if (n == count) {
+      next = std::to_string(jf.frame);
+      break;
+    }
     out += fmt::format("{}{{\"frame\": {}, \"core_seconds\": {}, \"rays\": {}, \"finished\": {}}}", n ? ", " : "",
                        jf.frame, jf.cost.recorded() ? json_number(jf.cost.core_seconds + jf.cost.star_seconds) : "null",
                        jf.cost.rays, jf.cost.finished);
+    ++n;
   }
   return {200, "application/json",
-          fmt::format("{{\"total\": {}, \"frames\": [{}]}}\n", journal.frames.size(), out)};
+          fmt::format("{{\"total\": {}, \"frames\": [{}], \"next\": {}}}\n", journal.frames.size(), out, next)};
 }
 
 Reply MonitorApi::events_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
-  const farm::EventSummary ev = farm::read_events(farm::EventLog::file_of(dir, shot), 200);
+  const farm::EventSummary ev = events_of(dir, shot, 200);
   std::string out;
   for (const farm::Event& e : ev.recent) out += (out.empty() ? "" : ", ") + event_json(e);
   return {200, "application/json", fmt::format("{{\"events\": [{}]}}\n", out)};
@@ -311,7 +408,7 @@ Reply MonitorApi::trace_reply(const Query& q) const {
   const auto [dir, shot] = folder_and_shot(dirs_, q);
   const long frame = number_param(q, "frame", 0, 99'999'999);
   if (tracer_.empty()) throw BadRequest(501, "this monitor was started without the pixel inspector");
-  const farm::JournalContents journal = farm::read_journal(dir / (shot + ".journal"));
+  const farm::JournalContents journal = journal_of(dir, shot);
   const auto line = journal.frames.find(static_cast<int>(frame));
   if (line == journal.frames.end()) throw BadRequest(404, fmt::format("frame {} of '{}' is not finished", frame, shot));
   const farm::FrameSettings& st = line->second.settings;
@@ -320,7 +417,7 @@ Reply MonitorApi::trace_reply(const Query& q) const {
                                       "`lightcone trace` instead",
                                       frame));
   const long x = number_param(q, "x", 0, st.width - 1), y = number_param(q, "y", 0, st.height - 1);
-  const farm::EventSummary ev = farm::read_events(farm::EventLog::file_of(dir, shot), 1);
+  const farm::EventSummary ev = events_of(dir, shot, 1);
   if (!ev.run || ev.run->script.empty())
     throw BadRequest(409, "the render's event log does not name its shot script (rendered by an older lightcone?)");
   std::error_code ec;
@@ -334,8 +431,20 @@ Reply MonitorApi::trace_reply(const Query& q) const {
   r.width = st.width;
   r.height = st.height;
   r.camera = std::string(name_of(st.camera));
+  // The same pixel of the same frame as rendered (its inputs and when it
+  // was stored), traced before: its answer again.
+  const std::string key = fmt::format("{}/{}/{}/{}/{}/{}/{}/{}", number_param(q, "folder", 0, 1L << 30), shot, frame, x, y,
+                                      line->second.inputs, line->second.cost.finished, r.script.string());
+  if (auto cached = traces_.find(key)) return {200, "application/json", std::move(*cached)};
+  // One trace at a time: each is a process working a CPU the render may
+  // want, and a page clicked about would start one per click.
+  std::unique_lock busy(traces_.busy, std::try_to_lock);
+  if (!busy.owns_lock())
+    throw BadRequest(429, "the pixel inspector is tracing another pixel (one at a time): try again in a moment");
   try {
-    return {200, "application/json", trace_pixel_json(tracer_, r)};
+    std::string body = trace_pixel_json(tracer_, r);
+    traces_.keep(key, body);
+    return {200, "application/json", std::move(body)};
   } catch (const std::runtime_error& e) {
     throw BadRequest(422, e.what());
   }

@@ -10,8 +10,11 @@
 // (farm/frame_files.hpp); the shot must be one the folder holds, and the
 // file must be a regular file inside the folder once links are followed.
 
+#include <deque>
 #include <filesystem>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +54,8 @@ class MonitorApi {
   //   /api/frame.png         ?folder=N&shot=S&frame=F[&preview=1]: a frame's PNG
   //   /api/layer.png         ?folder=N&shot=S&frame=F&layer=L: a data layer of its EXR in false colour
   //   /api/trace             ?folder=N&shot=S&frame=F&x=I&y=J: the pixel's ray, as `lightcone trace` reports it
+  //                          (one trace at a time: 429 while another runs; a pixel traced before answers from a cache)
+  // Safe to call from several threads at once.
   Reply get(const std::string& path, const Query& query) const;
 
   const std::vector<std::filesystem::path>& folders() const { return dirs_; }
@@ -64,9 +69,21 @@ class MonitorApi {
   Reply trace_reply(const Query& query) const;
   Reply layer_png(const Query& query) const;
 
+  // The pixel inspector's traces: `busy` held while one runs, and the
+  // latest replies by pixel (at most a bound, the oldest dropped first).
+  struct TraceCache {
+    std::mutex busy;
+    mutable std::mutex mutex;
+    std::map<std::string, std::string> replies;
+    std::deque<std::string> order;
+    std::optional<std::string> find(const std::string& key) const;
+    void keep(const std::string& key, const std::string& reply);
+  };
+
   std::vector<std::filesystem::path> dirs_;  // canonical
   std::filesystem::path tracer_;
   std::filesystem::path chart_script_;
+  mutable TraceCache traces_;
 };
 
 // The JSON error reply.

@@ -26,6 +26,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The trace runs at this niceness (nice(1)'s scale): a render on the same
+// node keeps its CPUs, the trace takes what they leave.
+constexpr int trace_niceness = 10;
+// coreutils' nice, which sets the niceness and then runs the trace, so the
+// trace never runs a moment at the monitor's priority.
+constexpr const char* nice_program = "/usr/bin/nice";
+
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::ostringstream ss;
@@ -82,10 +89,12 @@ std::string path_json(const std::string& csv, std::string& chart) {
 std::string trace_pixel_json(const fs::path& tracer, const PixelRequest& r, double seconds) {
   const Scratch scratch;
   const fs::path out = scratch.dir / "report.json", err = scratch.dir / "stderr.txt", csv = scratch.dir / "path.csv";
-  std::vector<std::string> args = {tracer.string(), "trace", r.script.string(), "--frame", std::to_string(r.frame),
-                                   "--pixel", fmt::format("{},{}", r.x, r.y), "--size",
-                                   fmt::format("{}x{}", r.width, r.height), "--camera", r.camera, "--json", "-o",
-                                   csv.string()};
+  std::vector<std::string> args = {"nice",    "-n",      std::to_string(trace_niceness),
+                                   tracer.string(), "trace", r.script.string(),
+                                   "--frame", std::to_string(r.frame), "--pixel",
+                                   fmt::format("{},{}", r.x, r.y), "--size", fmt::format("{}x{}", r.width, r.height),
+                                   "--camera", r.camera, "--json",
+                                   "-o", csv.string()};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -95,9 +104,9 @@ std::string trace_pixel_json(const fs::path& tracer, const PixelRequest& r, doub
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, tracer.c_str(), &actions, nullptr, argv.data(), environ);
+  const int spawned = posix_spawn(&pid, nice_program, &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) throw std::runtime_error(fmt::format("cannot run {}: {}", tracer.string(), std::strerror(spawned)));
+  if (spawned != 0) throw std::runtime_error(fmt::format("cannot run {}: {}", nice_program, std::strerror(spawned)));
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   int status = 0;
   while (::waitpid(pid, &status, WNOHANG) == 0) {

@@ -3,7 +3,8 @@
 // pixel of a rendered frame, with the ray's path, as JSON.  The trace runs
 // in a child process (`tracer`, the lightcone binary itself), so a shot
 // script's evaluation never runs inside the server and a slow one is cut
-// off, not waited on forever.
+// off, not waited on forever; it runs at a low priority (nice 10), so a
+// render on the same node keeps its CPUs.
 
 #include <filesystem>
 #include <string>

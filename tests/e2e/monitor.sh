@@ -46,7 +46,8 @@ journalled=$(grep -c '^frame=' out/kerr_fall.journal || true)
 [ "$(field 'd["run"]["state"]' <<<"$status")" = running ] || fail "held: not running: $status"
 [ "$(field 'd["frames"]["to_do"]' <<<"$status")" = $((9 - journalled)) ] || fail "held: to do: $status"
 [ "$(field 'len(d["frames"]["in_flight"]) > 0' <<<"$status")" = True ] || fail "held: nothing in flight: $status"
-[ "$(field 'd["run"]["eta_seconds"] is not None' <<<"$status")" = True ] || fail "held: no ETA: $status"
+[ "$(field 'd["run"]["eta_seconds"] is not None and d["run"]["frames_per_minute"] > 0' <<<"$status")" = True ] \
+  || fail "held: no ETA in wall time: $status"
 [ "$(field 'd["run"]["threads"]' <<<"$status")" = 2 ] || fail "held: threads: $status"
 # The page, while the render is held: its counts are the journal's.
 BROWSER=(chromium --headless=new --no-sandbox --disable-gpu --hide-scrollbars --window-size=1200,800
@@ -64,6 +65,9 @@ kill -TERM "$render"
 wait "$render" 2>/dev/null || true
 status=$(api "/api/status?$Q")
 [ "$(field 'd["run"]["state"]' <<<"$status")" = interrupted ] || fail "after Ctrl-C: $status"
+# The frames left are still left (the same command resumes them).
+left=$((9 - $(grep -c '^frame=' out/kerr_fall.journal || true)))
+[ "$(field 'd["frames"]["to_do"]' <<<"$status")" = "$left" ] || fail "after Ctrl-C: to do is not $left: $status"
 "$LIGHTCONE" render "$FALL" --out out "${SMALL[@]}" 2>resume.log || fail "resume: $(cat resume.log)"
 status=$(api "/api/status?$Q")
 [ "$(field 'd["frames"]["done"]' <<<"$status")" = 9 ] || fail "resumed: done: $status"

@@ -4,9 +4,15 @@
 // frame linked out of the folder, huge ranges, unknown pages) is a 4xx
 // naming why, and nothing outside the folders is read.
 
+#include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <future>
+#include <memory>
+#include <thread>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "farm/checked_line.hpp"
@@ -59,11 +65,16 @@ TEST(MonitorApi, StatusCountsTheJournalAndTheRun) {
   EXPECT_TRUE(has(s, "\"frames\": {\"done\": 3, \"in_flight\": [3], \"to_do\": 2, \"stale\": 0}")) << s.body;
   EXPECT_TRUE(has(s, "\"state\": \"running\"")) << s.body;
   EXPECT_TRUE(has(s, "\"latest\": [2,1,0]")) << s.body;
-  // Two frames left at the journal's mean of 2 core-seconds, on 2 threads.
-  EXPECT_TRUE(has(s, "\"eta_seconds\": 2,")) << s.body;
   const Reply frames = api.get("/api/frames", {{"folder", "0"}, {"shot", "s"}, {"from", "1"}, {"count", "1"}});
   EXPECT_EQ(frames.body.rfind("{\"total\": 3, \"frames\": [{\"frame\": 1, \"core_seconds\": 2, \"rays\": 8, \"finished\": ", 0), 0u)
       << frames.body;  // one frame: `count` 1 from frame 1
+  EXPECT_TRUE(has(frames, "\"next\": 2}")) << frames.body;  // where the rest goes on
+  const Reply rest = api.get("/api/frames", {{"folder", "0"}, {"shot", "s"}, {"from", "2"}, {"count", "5"}});
+  EXPECT_TRUE(has(rest, "[{\"frame\": 2, ") && has(rest, "\"next\": null}")) << rest.body;
+  // Only the frames finished since a time (what the page asks for once it has the rest).
+  const std::string later = std::to_string(std::time(nullptr) + 1000);
+  const Reply none = api.get("/api/frames", {{"folder", "0"}, {"shot", "s"}, {"since", later}});
+  EXPECT_TRUE(has(none, "{\"total\": 3, \"frames\": [], \"next\": null}")) << none.body;
   const Reply events = api.get("/api/events", {{"folder", "0"}, {"shot", "s"}});
   EXPECT_TRUE(has(events, "\"event\": \"progress\"")) << events.body;
   const Reply png = api.get("/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "2"}});
@@ -166,7 +177,36 @@ TEST(MonitorApi, ARunThatStoppedWithoutAnEndIsSaidToHaveStopped) {
   const MonitorApi api({dir});
   const Reply s = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
   EXPECT_TRUE(has(s, "\"state\": \"stopped\"")) << s.body;
-  EXPECT_TRUE(has(s, "\"to_do\": 0")) << s.body;
+  EXPECT_TRUE(has(s, "\"to_do\": 4")) << s.body;  // left for the same command to resume
+}
+
+// The ETA in wall time: the frames left at the rate the run stored its
+// latest frames; and the frames left after an interruption.
+TEST(MonitorApi, TheEtaIsInWallTimeAndFramesLeftOutliveTheRun) {
+  test::ScratchDir scratch;
+  const fs::path dir = scratch / "out";
+  fs::create_directories(dir);
+  const long t0 = static_cast<long>(std::time(nullptr)) - 40;
+  {
+    std::ofstream out(farm::EventLog::file_of(dir, "s"));
+    out << farm::with_check("lightcone-events 1") << "\n";
+    out << farm::with_check(fmt::format("t={} event=run pid=1 host=h ranks=1 threads=8 todo=5 done=0 size=4x2", t0)) << "\n";
+    for (int f = 0; f < 3; ++f)  // one every 10 s
+      out << farm::with_check(fmt::format("t={} event=frame frame={} core_seconds=80 rays=8", t0 + 10 * (f + 1), f)) << "\n";
+    out << farm::with_check(fmt::format("t={} event=progress stored=3 total=5 open=3", t0 + 39)) << "\n";
+  }
+  const MonitorApi api({dir});
+  const Reply running = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(running, "\"state\": \"running\"")) << running.body;
+  EXPECT_TRUE(has(running, "\"to_do\": 2")) << running.body;
+  // 3 frames in 30 s: 6 a minute, the 2 left in 20 s (not 2 x 80 core-seconds over 8 threads).
+  EXPECT_TRUE(has(running, "\"frames_per_minute\": 6, \"eta_seconds\": 20,")) << running.body;
+  std::ofstream(farm::EventLog::file_of(dir, "s"), std::ios::app)
+      << farm::with_check(fmt::format("t={} event=end status=interrupted stored=3", t0 + 40)) << "\n";
+  const Reply interrupted = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(interrupted, "\"state\": \"interrupted\"")) << interrupted.body;
+  EXPECT_TRUE(has(interrupted, "\"to_do\": 2")) << interrupted.body;
+  EXPECT_TRUE(has(interrupted, "\"eta_seconds\": null")) << interrupted.body;
 }
 
 // An MPI run's workers: each one's state from what the latest progress
@@ -191,6 +231,122 @@ TEST(MonitorApi, EachWorkerSaysWhatItHoldsOrThatItWasLost) {
   const Reply ended = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
   EXPECT_TRUE(has(ended, "\"rank\": 1, \"host\": \"n1\", \"threads\": 2, \"state\": \"interrupted\"")) << ended.body;
   EXPECT_TRUE(has(ended, "\"rank\": 3, \"host\": \"n3\", \"threads\": 2, \"state\": \"lost\"")) << ended.body;
+}
+
+// Journals and event logs are read only as regular files inside the
+// folder: a link is neither listed as a shot nor followed, and a file that
+// is not lightcone's is refused without a word of what it holds.
+TEST(MonitorApi, ALinkedOrForeignJournalIsNeverQuoted) {
+  test::ScratchDir scratch;
+  const fs::path dir = render_folder(scratch);
+  std::ofstream(scratch / "passwd") << "root:x:0:0:SECRET-ROOT\ndaemon:x:1:1\nbin:x:2:2\n";
+  fs::create_symlink(scratch / "passwd", dir / "leak.journal");
+  fs::create_symlink(scratch / "passwd", dir / "count.events");
+  fs::copy_file(scratch / "passwd", dir / "foreign.journal");
+  const MonitorApi api({dir}, "/bin/false");
+  const Reply folders = api.get("/api/folders", {});
+  EXPECT_TRUE(has(folders, "\"shots\": [\"foreign\", \"s\"]")) << folders.body;  // no link listed
+  for (const std::string shot : {"leak", "count"}) {
+    const Reply r = api.get("/api/status", {{"folder", "0"}, {"shot", shot}});
+    EXPECT_EQ(r.status, 404) << shot << ": " << r.body;
+    EXPECT_FALSE(has(r, "SECRET") || has(r, "bad_event_lines")) << shot << ": " << r.body;
+  }
+  const Reply foreign = api.get("/api/status", {{"folder", "0"}, {"shot", "foreign"}});
+  EXPECT_EQ(foreign.status, 422) << foreign.body;
+  EXPECT_TRUE(has(foreign, "foreign.journal is not a lightcone journal")) << foreign.body;
+  EXPECT_FALSE(has(foreign, "SECRET")) << foreign.body;
+  // A shot the folder holds, whose journal or log is then made a link.
+  fs::remove(dir / "s.journal");
+  fs::create_symlink(scratch / "passwd", dir / "s.journal");
+  for (const std::string page : {"/api/status", "/api/frames", "/api/trace"}) {
+    const Reply r = api.get(page, {{"folder", "0"}, {"shot", "s"}, {"frame", "0"}, {"x", "0"}, {"y", "0"}});
+    EXPECT_EQ(r.status, 403) << page << ": " << r.body;
+    EXPECT_TRUE(has(r, "s.journal is a link")) << page << ": " << r.body;
+    EXPECT_FALSE(has(r, "SECRET")) << page << ": " << r.body;
+  }
+  // A shot whose journal is its own and whose log links out.
+  fs::copy_file(scratch / "passwd", scratch / "e.events");
+  fs::create_symlink(scratch / "e.events", farm::EventLog::file_of(dir, "e"));
+  farm::FrameStore(dir, "e").write_frame(0, tiny(), {}, farm::FrameSettings{4, 2, 1, false, false}, "00000000000000aa", {},
+                                          {.rays = 8}, Look{});
+  for (const std::string page : {"/api/status", "/api/events"}) {
+    const Reply r = api.get(page, {{"folder", "0"}, {"shot", "e"}});
+    EXPECT_EQ(r.status, 403) << page << ": " << r.body;
+    EXPECT_TRUE(has(r, "e.events is a link")) << page << ": " << r.body;
+  }
+}
+
+// A journal that is a FIFO or a link to a device that never ends is
+// refused at once: it must not hold a request (and the server's threads)
+// for ever.
+TEST(MonitorApi, AJournalThatNeverEndsIsRefusedAtOnce) {
+  test::ScratchDir scratch;
+  const fs::path dir = render_folder(scratch);
+  const MonitorApi api({dir});
+  const auto status_within = [&](std::chrono::seconds limit) {
+    // Run where a regression may hang for good: the thread is then left
+    // behind (reading /dev/zero) and the test fails.
+    auto reply = std::make_shared<std::promise<Reply>>();
+    auto answer = reply->get_future();
+    std::thread([&api, reply] { reply->set_value(api.get("/api/status", {{"folder", "0"}, {"shot", "s"}})); }).detach();
+    if (answer.wait_for(limit) != std::future_status::ready) return Reply{0, "", "no answer"};
+    return answer.get();
+  };
+  fs::remove(dir / "s.journal");
+  {
+    const test::UnblockedFifo fifo(dir / "s.journal");
+    const auto start = std::chrono::steady_clock::now();
+    const Reply r = status_within(std::chrono::seconds(10));
+    EXPECT_EQ(r.status, 403) << r.body;
+    EXPECT_TRUE(has(r, "s.journal is not a regular file")) << r.body;
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+  }
+  fs::remove(dir / "s.journal");
+  fs::create_symlink("/dev/zero", dir / "s.journal");
+  const Reply r = status_within(std::chrono::seconds(5));
+  EXPECT_EQ(r.status, 403) << r.body;
+  EXPECT_TRUE(has(r, "s.journal is a link")) << r.body;
+}
+
+// The pixel inspector runs one trace at a time (429 to the others while
+// it runs), answers a pixel traced before from its cache, and runs the
+// trace niced.  The tracer here stands in for the lightcone binary
+// (tests/e2e/monitor.sh runs the real one): it counts its runs, takes a
+// second and reports its niceness.
+TEST(MonitorApi, ThePixelInspectorTracesOnePixelAtATime) {
+  test::ScratchDir scratch;
+  const fs::path dir = render_folder(scratch);
+  std::ofstream(scratch / "shot.lua") << "-- the shot\n";
+  {
+    farm::EventLog log(dir, "s");
+    log.run_started({.pid = 9, .host = "n0", .ranks = 1, .threads = 2, .todo = 5, .done_before = 0, .width = 4,
+                     .height = 2, .script = (scratch / "shot.lua").string()});
+  }
+  const fs::path tracer = scratch / "tracer.sh";
+  std::ofstream(tracer) << "#!/bin/sh\necho run >>'" << (scratch / "runs").string()
+                        << "'\nsleep 1\necho \"{\\\"nice\\\": $(nice)}\"\n";
+  fs::permissions(tracer, fs::perms::owner_all);
+  const MonitorApi api({dir}, tracer);
+  const auto ask = [&](const std::string& x) {
+    return api.get("/api/trace", {{"folder", "0"}, {"shot", "s"}, {"frame", "1"}, {"x", x}, {"y", "1"}});
+  };
+  Reply first;
+  std::thread tracing([&] { first = ask("1"); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const Reply busy = ask("2");
+  tracing.join();
+  ASSERT_EQ(first.status, 200) << first.body;
+  EXPECT_TRUE(has(first, "\"report\": {\"nice\": 10}")) << first.body;
+  EXPECT_EQ(busy.status, 429) << busy.body;
+  EXPECT_TRUE(has(busy, "tracing another pixel")) << busy.body;
+  const auto start = std::chrono::steady_clock::now();
+  const Reply again = ask("1");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(500));
+  EXPECT_EQ(again.body, first.body);
+  std::ifstream runs(scratch / "runs");
+  int count = 0;
+  for (std::string line; std::getline(runs, line);) ++count;
+  EXPECT_EQ(count, 1);
 }
 
 TEST(MonitorApi, OnlyDirectoriesAreServed) {

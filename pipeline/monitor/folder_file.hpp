@@ -1,0 +1,54 @@
+#pragma once
+// A file of a render folder, opened for the monitor to read (docs/monitor.md,
+// "Safe by default").  The monitor reads a folder it does not own: a name in
+// it may be a link to a file outside (/etc/passwd), to a device that never
+// ends (/dev/zero) or a FIFO that blocks its reader until a writer comes.
+// So a file is opened without following a link in its last component and
+// without blocking (O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC), and kept only if
+// the open file is a regular one; it is read by what was opened, never by
+// its name again, and never more than a bound.
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace lc::monitor {
+
+class FolderFile {
+ public:
+  // Opens `path`; never throws.  `missing()`: there is no such file;
+  // `refused()`: there is one but it is not read, `why()` says so (a link,
+  // not a regular file, or not readable).
+  explicit FolderFile(const std::filesystem::path& path);
+  ~FolderFile();
+  FolderFile(const FolderFile&) = delete;
+  FolderFile& operator=(const FolderFile&) = delete;
+
+  bool missing() const { return missing_; }
+  bool refused() const { return fd_ < 0 && !missing_; }
+  const std::string& why() const { return why_; }
+  std::uintmax_t size() const { return size_; }
+
+  // A path naming the open file itself (/proc/self/fd/N), for readers that
+  // take a path (the farm's): opening it opens this very file, whatever is
+  // at its name by then.  Only while this object lives, and only if opened.
+  std::filesystem::path self_path() const;
+
+  // The file's first `bytes` bytes (fewer if it is shorter; a file growing
+  // meanwhile is read up to the size it had when opened).  Throws
+  // std::runtime_error on a read error.
+  std::string head(std::size_t bytes) const;
+
+  // The whole file.  Throws std::runtime_error if it is longer than
+  // `max_bytes` or on a read error.
+  std::string read_all(std::size_t max_bytes) const;
+
+ private:
+  int fd_ = -1;
+  bool missing_ = false;
+  std::string why_;
+  std::uintmax_t size_ = 0;
+};
+
+}  // namespace lc::monitor

@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# `lightcone monitor`'s HTTP layer and the folders it will not read
+# (docs/monitor.md, "Safe by default"), over real sockets on 127.0.0.1:
+# hostile clients (tests/tools/monitor_abuse.py: a thousand ranges, a
+# gzip bomb and a chunked body POSTed, a header flood, slow clients
+# trickling header lines, a burst of pixel traces) are refused small and
+# fast while normal requests are answered, and the monitor's memory stays
+# bounded; journals that are links, FIFOs or someone else's are refused
+# without a word of them and hold nothing; in a real browser one shot
+# that cannot be shown says so on its card while the others are shown, and
+# a 12,000-frame film's cost chart has all its points.
+source "$(dirname "$0")/lib.sh"
+e2e_begin "$@"
+
+FALL="$SRC/shots/kerr_fall.lua"
+mkdir -p out
+"$LIGHTCONE" render "$FALL" --out out --size 32x18 --supersample 1 --progress 0 --frames 0:0 2>render.log \
+  || fail "render: $(cat render.log)"
+# Beside the render: someone else's file named as a journal, a journal that
+# is a FIFO (with a log, so the shot is listed), and links out of the folder.
+echo "root:x:0:0:SECRET-ROOT-LINE" >passwd
+cp passwd out/foreign.journal
+mkfifo out/fifo.journal
+cp out/kerr_fall.events out/fifo.events
+ln -s "$WORK/passwd" out/leak.journal
+ln -s "$WORK/passwd" out/count.events
+# A film of 12,000 frames: the render's frame line copied with each
+# frame's number and cost, each line with its check (FNV-1a, as
+# pipeline/farm/checked_line.hpp).
+"$PY" - out/kerr_fall.journal out/long.journal <<'PY'
+import re, sys
+def check(content):
+    h = 0xcbf29ce484222325
+    for b in content:
+        h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+    return b"%s #%016x\n" % (content, h)
+lines = open(sys.argv[1], "rb").read().split(b"\n")
+frame = next(l.rpartition(b" #")[0] for l in lines if l.startswith(b"frame="))
+with open(sys.argv[2], "wb") as out:
+    out.write(lines[0] + b"\n")
+    for f in range(12000):
+        line = re.sub(rb"^frame=0 ", b"frame=%d " % f, frame)
+        out.write(check(re.sub(rb"core_seconds=[0-9.]+", b"core_seconds=%d" % (1 + f % 7), line)))
+PY
+
+"$LIGHTCONE" monitor out --port 0 2>monitor.log &
+monitor=$!
+trap 'kill "$monitor" 2>/dev/null || true' EXIT
+for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
+URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log) || { fail "the monitor did not start: $(cat monitor.log)"; e2e_end; exit 1; }
+PORT=${URL##*:}
+# Its memory as it starts (mostly its libraries' pages), to measure what
+# the clients below add.
+base=$(awk '/^VmRSS:/ {print $2}' "/proc/$monitor/status")
+abuse() { timeout 60 "$PY" "$SRC/tests/tools/monitor_abuse.py" "$PORT" "$@" || fail "$1: $(tail -1 abuse.txt)"; }
+code() { curl -s --max-time 5 -o body.txt -w "%{http_code}" "$URL$1"; }
+
+# Links are not shots; a foreign journal is refused unquoted; the FIFO
+# answers at once, ten requests at a time, and holds nothing.
+shots=$(curl -s --max-time 5 "$URL/api/folders")
+grep -q '"shots": \["fifo", "foreign", "kerr_fall", "long"\]' <<<"$shots" || fail "the shots listed: $shots"
+[ "$(code "/api/status?folder=0&shot=leak")" = 404 ] || fail "a linked journal: $(cat body.txt)"
+[ "$(code "/api/status?folder=0&shot=count")" = 404 ] || fail "a linked event log: $(cat body.txt)"
+[ "$(code "/api/status?folder=0&shot=foreign")" = 422 ] || fail "a foreign journal: $(cat body.txt)"
+grep -q "SECRET" body.txt && fail "a foreign journal was quoted: $(cat body.txt)"
+start=$(date +%s%N)
+for k in $(seq 1 10); do curl -s --max-time 5 -o "fifo$k.txt" -w "%{http_code}\n" "$URL/api/status?folder=0&shot=fifo" >"fifo$k.code" & done
+wait $(jobs -p | grep -v "^$monitor$") 2>/dev/null || true
+took=$((($(date +%s%N) - start) / 1000000))
+[ "$(cat fifo*.code | sort -u)" = 403 ] || fail "a FIFO journal: $(cat fifo*.code | tr '\n' ' ') $(cat fifo1.txt)"
+[ "$took" -lt 3000 ] || fail "ten requests of a FIFO journal took $took ms"
+[ "$(code /api/folders)" = 200 ] || fail "after the FIFO: the monitor does not answer"
+
+# The HTTP layer.
+: >abuse.txt
+for check in multirange gzip-post chunked-post header-flood; do abuse "$check" >>abuse.txt; done
+abuse slow-clients 12 >>abuse.txt
+abuse trace-burst "folder=0&shot=kerr_fall&frame=0" >>abuse.txt
+cat abuse.txt
+[ "$(code /)" = 200 ] || fail "the page after the abuse"
+# HEAD is answered as GET without a body; other methods are refused.
+[ "$(curl -s --max-time 5 -I -o /dev/null -w "%{http_code}" "$URL/api/folders")" = 200 ] || fail "HEAD"
+[ "$(curl -s --max-time 5 -X DELETE -o /dev/null -w "%{http_code}" "$URL/api/folders")" = 405 ] || fail "DELETE"
+# All of it in bounded memory (the gzip bomb alone unpacks to 62 MiB, the
+# ranges asked for 1,000 copies of the page).
+hwm=$(awk '/^VmHWM:/ {print $2}' "/proc/$monitor/status")
+echo "monitor: VmRSS $base kB as it started, VmHWM $hwm kB after the clients"
+[ $((${hwm:-999999} - ${base:-0})) -lt 32768 ] || fail "the monitor's memory grew from $base to $hwm kB"
+
+# The page: the shot that cannot be shown says why on its card; the
+# others are shown (not "cannot reach the monitor").
+BROWSER=(chromium --headless=new --no-sandbox --disable-gpu --window-size=1200,800 --virtual-time-budget=6000)
+timeout 60 "${BROWSER[@]}" --dump-dom "$URL/" >page.html 2>browser.log || fail "chromium: $(tail -3 browser.log)"
+grep -q "id=\"note\">cannot reach" page.html && fail "one shot's error blanked the page"
+grep -q 'data-count="done">1<' page.html || fail "the good shot's card: $(grep -o 'data-count="done">[^<]*<' page.html)"
+grep -q 'cannot show this shot: foreign.journal is not a lightcone journal' page.html \
+  || fail "the foreign shot's card: $(grep -o 'class="card-error">[^<]*<' page.html)"
+grep -q "SECRET" page.html && fail "the page quotes a foreign file"
+# The long film's cost chart has all its 12,000 points (not 10,000).
+grep -q 'data-points="12000"' page.html || fail "the long film's chart: $(grep -o 'data-points="[0-9]*"' page.html | tr '\n' ' ')"
+
+# A kill (SIGTERM, as Ctrl-C) stops it at once.
+kill -TERM "$monitor"
+for _ in $(seq 1 40); do kill -0 "$monitor" 2>/dev/null || break; sleep 0.05; done
+kill -0 "$monitor" 2>/dev/null && fail "the monitor did not stop within 2 s of SIGTERM"
+wait "$monitor" 2>/dev/null || true
+e2e_end
