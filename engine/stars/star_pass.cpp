@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "core/cpu_time.hpp"
 #include "stars/glare_kernel.hpp"
 #include "stars/magnification.hpp"
@@ -73,8 +75,12 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
                      double* cpu_seconds) {
   const int w = width, h = height;
   const std::size_t pixels = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
-  if (w < 2 || h < 2 || sky.size() != pixels || rgb.size() != 3 * pixels)
-    throw std::invalid_argument("star pass: the frame's rays or pixels do not match its size (at least 2 x 2)");
+  if (w < star_pass_min_side || h < star_pass_min_side)
+    throw std::invalid_argument(fmt::format("star pass: a picture of {}x{} pixels; point stars are drawn on pictures of "
+                                            "at least {}x{}",
+                                            w, h, star_pass_min_side, star_pass_min_side));
+  if (sky.size() != pixels || rgb.size() != 3 * pixels)
+    throw std::invalid_argument("star pass: the frame's rays or pixels do not match its size");
   const double start = thread_cpu_seconds();
   const RayGrid grid(sky, w, h, options.wrap);
   const double cos_max = std::cos(options.max_patch_radius);

@@ -54,8 +54,16 @@ struct StarPassOptions {
   ImageWrap wrap{};
 };
 
+// The smallest picture the pass draws on, in each direction: a quad of
+// rays needs two rows and two columns of them.  The render refuses a
+// smaller frame, eye's picture or --region of a point-star sky before it
+// starts (pipeline/render_command.cpp).
+inline constexpr int star_pass_min_side = 2;
+
 // Adds the stars' light to `rgb` (linear RGB, 3 floats per pixel, row by
 // row, width x height); `sky` holds each pixel's ray (width x height).
+// Throws std::invalid_argument where the picture is smaller than
+// star_pass_min_side or `sky` and `rgb` do not match its size.
 // Pixels on the image's edge get their outer quads from rays extrapolated
 // one pixel beyond it, or where the image wraps from the rays across it.  Returns how many star images were added; adds the
 // CPU time the pass took, summed over its threads, to *cpu_seconds if
