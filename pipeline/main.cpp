@@ -138,6 +138,18 @@ CLI::Validator number(std::optional<End> lo = std::nullopt, std::optional<End> h
       range.empty() ? "a finite number" : "a number " + range);
 }
 
+// The check of --png-depth (render's and showcase's): the text must be
+// the integer 8 or 16 (CLI11's IsMember refused 16.0 with only "not in
+// {8,16}").
+CLI::Validator png_depth_bits() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (text == "8" || text == "16") return "";
+        return fmt::format("'{}' is not a PNG depth: give the bits per channel as the integer 8 or 16", text);
+      },
+      "8 or 16");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -212,7 +224,7 @@ int main(int argc, char** argv) {
   render_cmd
       ->add_option("--png-depth", render.png_bits,
                    "Bits per channel of the PNG frames: 8 (the default) or 16 (dome masters: docs/cameras.md)")
-      ->check(CLI::IsMember({8, 16}));
+      ->check(png_depth_bits());
   render_cmd
       ->add_option("--shutter", render.shutter,
                    "Motion blur: the shutter open this share of each frame interval, 0 to 1 (0.5: the film camera's "
@@ -363,7 +375,7 @@ int main(int argc, char** argv) {
                            "-blur added with --motion-blur)");
   showcase_cmd
       ->add_option("--png-depth", showcase.png_bits, "Bits per channel of the frames' PNGs: 8 (the default) or 16 (as render)")
-      ->check(CLI::IsMember({8, 16}));
+      ->check(png_depth_bits());
   showcase_cmd->add_flag("--motion-blur", showcase.motion_blur,
                          "Blur motion as a film camera does: every shot's shutter open half of each frame interval "
                          "(render --shutter 0.5; into <quality>-blur: docs/motion_blur.md)");

@@ -34,6 +34,7 @@
 #include "interrupt.hpp"
 #include "render_job.hpp"
 #include "script/shot.hpp"
+#include "stars/star_pass.hpp"
 #include "video/encode_options.hpp"
 
 namespace lc {
@@ -54,12 +55,44 @@ void warn_if_not_encodable(const RenderSettings& rs) {
     fmt::print(stderr, "render: warning: lightcone encode will make an H.264 video of these frames, but {}\n", *warning);
 }
 
+// A frame whose sky has point stars is drawn on by the star pass, which
+// needs pictures (each eye's, or the --region's) of at least
+// star_pass_min_side pixels each way: refused before the render starts
+// (std::invalid_argument naming the flag or field), not after its first
+// frame's rays.  `camera` is the frame's at the whole frame's size.
+void check_star_pictures(int frame, const Camera& camera, const RenderSettings& rs) {
+  const int least = star_pass_min_side;
+  if (rs.window.windowed()) {
+    if (rs.width < least || rs.height < least)
+      throw std::invalid_argument(fmt::format(
+          "--region: {}x{} pixels; frame {}'s sky has point stars, which are drawn on pictures of at least {}x{}: "
+          "give a region of at least {} pixels each way",
+          rs.width, rs.height, frame, least, least, least));
+    return;
+  }
+  for (const EyePicture& p : camera.pictures()) {
+    if (p.width >= least && p.height >= least) continue;
+    if (p.eye != 0)
+      throw std::invalid_argument(fmt::format(
+          "frame {}: the camera's `stereo` puts each eye's picture in {}x{} pixels of the {}x{} frame; its sky has "
+          "point stars, which are drawn on pictures of at least {}x{}: render a larger frame (--size, --scale or the "
+          "shot's width and height)",
+          frame, p.width, p.height, rs.width, rs.height, least, least));
+    throw std::invalid_argument(fmt::format(
+        "the frame is {}x{} pixels (--size, --scale or the shot's width and height); frame {}'s sky has point stars, "
+        "which are drawn on pictures of at least {}x{}",
+        rs.width, rs.height, frame, least, least));
+  }
+}
+
 // What the frames' cameras say of the image size, before anything is
 // written: a --region of a stereo frame is refused (std::invalid_argument:
-// its window would cut across both eyes' pictures); an odd size for a
-// camera (an equirect frame whose pixels are not square) is warned about,
-// once, not refused: the frame is what was asked for, a video site or
-// player may just not show it as a sphere.
+// its window would cut across both eyes' pictures), and so is a picture
+// too small for the point stars of a frame's sky (at its moment or any
+// instant of its shutter); an odd size for a camera (an equirect frame
+// whose pixels are not square) is warned about, once, not refused: the
+// frame is what was asked for, a video site or player may just not show it
+// as a sphere.
 void check_cameras(const farm::ShotSurvey& survey, const RenderSettings& rs) {
   const int width = rs.window.windowed() ? rs.window.frame_width : rs.width;
   const int height = rs.window.windowed() ? rs.window.frame_height : rs.height;
@@ -70,6 +103,9 @@ void check_cameras(const farm::ShotSurvey& survey, const RenderSettings& rs) {
       throw std::invalid_argument(fmt::format("--region: frame {}'s camera is stereo; a region of a stereo frame is "
                                               "not offered (render the shot with stereo = \"mono\" to check a part "
                                               "of it)", frame));
+    // (Shot::frame_specs refuses a change of sky or camera kind within a
+    // shutter: the frame's own stand for its instants'.)
+    if (has_point_stars(facts.sky)) check_star_pictures(frame, camera, rs);
     if (warned) continue;
     if (const auto warning = camera.size_warning()) {
       fmt::print(stderr, "render: warning: frame {}: {} (at {}x{})\n", frame, *warning, width, height);
@@ -144,6 +180,10 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   WorkerStop stop_workers(mpi);
   RenderJob job = load_render_job(cmd);
   warn_if_not_encodable(job.rs);
+  // A frame that cannot fit the master's memory is refused before the
+  // survey, not when its rays are in (a worker elsewhere holds less of it).
+  if (const auto memory = farm::memory_available())
+    if (const auto refusal = farm::frame_memory_refusal(job.rs, *memory)) throw std::invalid_argument(*refusal);
   if (job.range && job.range->last_taken() != job.range->last) {
     const std::vector<int>& taken = job.frames;
     const std::string list = taken.size() <= 3 ? fmt::format("{}", fmt::join(taken, ", "))

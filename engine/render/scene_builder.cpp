@@ -8,6 +8,7 @@
 
 #include "assets/asset_path.hpp"
 #include "core/constants.hpp"
+#include "render/ray_start.hpp"
 #include "scene/still_key.hpp"
 #include "spacetime/chart.hpp"
 
@@ -25,6 +26,45 @@ double free_radius(const SceneIn<S>& sc) {
   return 2.0 * std::max(reach, 1.0);
 }
 
+// A stereo camera's eyes stand off the observer (render/ray_start.hpp,
+// displaced_eye): each is made here once, so an eye pushed where the
+// observer cannot stand (a horizon's capture region; where its frame
+// cannot be carried, as a static observer's into the ergoregion) is
+// refused where the scene is built, by render before its first ray (the
+// callers name the file and frame) and by inspect, not mid-render.  The
+// eyes are those of a row through the middle of each eye's picture, at
+// most 64 columns of it: a pinhole's two, the widest circle of an
+// equirect's omnidirectional stereo.  Throws std::invalid_argument.
+template <class S>
+void check_eyes(const SceneIn<S>& sc, const CameraSpec& spec) {
+  for (const EyePicture& p : sc.camera.pictures()) {
+    if (p.eye == 0) continue;
+    const int step = std::max(1, p.width / 64);
+    std::optional<Vec3> last;
+    for (int i = 0; i < p.width; i += step) {
+      const auto r = sc.camera.ray({p.x0 + i + 0.5, p.y0 + 0.5 * p.height, 0.0});
+      if (!r || r->at_observer() || (last && *last == r->eye)) continue;
+      last = r->eye;
+      try {
+        (void)displaced_eye(sc, r->eye);
+      } catch (const std::invalid_argument& e) {
+        const double separation = std::visit(
+            [](const auto& c) {
+              if constexpr (requires { c.separation; })
+                return c.separation;
+              else
+                return 0.0;
+            },
+            spec);
+        throw std::invalid_argument(fmt::format(
+            "the camera's {} eye (stereo, `separation` {:g} M) cannot stand there: {}; give the camera a smaller "
+            "`separation`, or place the observer further out",
+            p.eye < 0 ? "left" : "right", separation, e.what()));
+      }
+    }
+  }
+}
+
 template <class S>
 Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResources& res, const RayOptions& rays,
             const ImageWindow& window) {
@@ -34,6 +74,7 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
   // own eye is its path at offset 0.
   sc.observer_path = ObserverPath<S>(fs.observer, st, res, sc.light.splits());
   sc.eye = sc.observer_path.at(0.0);
+  check_eyes(sc, fs.camera);
 
   for (const ObjectSpec& o : fs.objects) add_object(sc.objects, o, st, res, sc.eye.event);
   sc.rays.free_radius = free_radius(sc);

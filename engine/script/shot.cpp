@@ -141,6 +141,13 @@ FrameSpecs Shot::frame_specs(int i) {
           "{}: frame {}: the sky is lc.{} at the frame but lc.{} at {:g}, within its shutter; a shutter cannot be "
           "open across a change of sky: close it for this frame (its `shutter = 0`)",
           file_.string(), i, SkyRegistry::name(out.frame.sky), SkyRegistry::name(s.sky), at));
+    // Each sample takes one instant's camera: a cut between cameras mixes
+    // their pictures pixel by pixel.
+    if (const auto cut = camera_cut(out.frame.camera, s.camera))
+      throw std::invalid_argument(fmt::format(
+          "{}: frame {}: the camera is {} at the frame but {} at {:g}, within its shutter; a shutter cannot be open "
+          "across a change of camera kind, stereo layout or projection: close it for this frame (its `shutter = 0`)",
+          file_.string(), i, cut->at_frame, cut->at_instant, at));
     changes = changes || scene_key(s) != frame_key;
     out.times.push_back(t);
     out.instants.push_back(std::move(s));

@@ -43,8 +43,9 @@ class Shot {
   // frames [0, frames-1] (the shot holds still before its first frame and
   // after its last: a script need only make sense on its own frames).
   // Errors name the fractional frame the script failed at.  Throws
-  // std::invalid_argument where the spacetime's or the sky's kind changes
-  // within the shutter (a cut: the frame's shutter must be closed).
+  // std::invalid_argument where the spacetime's or the sky's kind, or the
+  // camera's kind, stereo layout or projection, changes within the shutter
+  // (a cut: the frame's shutter must be closed).
   FrameSpecs frame_specs(int i);
 
   // The command line's shutter over the shot's and its frames' (render

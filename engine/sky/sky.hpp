@@ -80,6 +80,19 @@ inline std::vector<std::string> sky_system_files(const SkySpec& spec) {
   return out;
 }
 
+// Whether the sky `spec` has point stars (drawn by the stage after the
+// pixels, on pictures of at least 2x2: stars/star_pass.hpp), without
+// reading them.
+inline bool has_point_stars(const SkySpec& spec) {
+  bool out = false;
+  SkyRegistry::for_each([&](auto* kind) {
+    using K = std::remove_pointer_t<decltype(kind)>;
+    if constexpr (requires(const typename K::Params& p, ShotResources& res) { K::stars(p, res); })
+      out = out || std::holds_alternative<typename K::Params>(spec);
+  });
+  return out;
+}
+
 // The point stars of the sky `spec` (without building the rest of it: the
 // stage after the pixels needs only them), if it has any.
 inline std::optional<PointStars> sky_point_stars(const SkySpec& spec, ShotResources& res) {

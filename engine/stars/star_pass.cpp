@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "core/cpu_time.hpp"
 #include "stars/glare_kernel.hpp"
 #include "stars/magnification.hpp"
@@ -80,6 +82,14 @@ void splat_along(const FoundStarImage& image, double share, const std::array<dou
   }
 }
 
+// Throws std::invalid_argument for a picture too small for quads of rays.
+void check_picture_size(int width, int height) {
+  if (width < star_pass_min_side || height < star_pass_min_side)
+    throw std::invalid_argument(fmt::format("star pass: a picture of {}x{} pixels; point stars are drawn on pictures of "
+                                            "at least {}x{}",
+                                            width, height, star_pass_min_side, star_pass_min_side));
+}
+
 }  // namespace
 
 std::vector<FoundStarImage> find_star_images(std::span<const SkyPoint> sky, int width, int height,
@@ -87,8 +97,8 @@ std::vector<FoundStarImage> find_star_images(std::span<const SkyPoint> sky, int 
                                              const StarPassOptions& options, double* cpu_seconds) {
   const int w = width, h = height;
   const std::size_t pixels = static_cast<std::size_t>(std::max(w, 0)) * static_cast<std::size_t>(std::max(h, 0));
-  if (w < 2 || h < 2 || sky.size() != pixels)
-    throw std::invalid_argument("star pass: the frame's rays do not match its size (at least 2 x 2)");
+  check_picture_size(w, h);
+  if (sky.size() != pixels) throw std::invalid_argument("star pass: the frame's rays do not match its size");
   const double start = thread_cpu_seconds();
   const RayGrid grid(sky, w, h, options.wrap);
   const double cos_max = std::cos(options.max_patch_radius);
@@ -111,8 +121,9 @@ void draw_star_images(std::span<const FoundStarImage> images, std::span<const St
                       const StarPassOptions& options, std::span<float> rgb, double* cpu_seconds) {
   const int w = width, h = height;
   const std::size_t pixels = static_cast<std::size_t>(std::max(w, 0)) * static_cast<std::size_t>(std::max(h, 0));
-  if (w < 2 || h < 2 || rgb.size() != 3 * pixels || !(paths.empty() || paths.size() == images.size()))
-    throw std::invalid_argument("star pass: the frame's pixels or the stars' paths do not match (at least 2 x 2)");
+  check_picture_size(w, h);
+  if (rgb.size() != 3 * pixels || !(paths.empty() || paths.size() == images.size()))
+    throw std::invalid_argument("star pass: the frame's pixels or the stars' paths do not match its size");
   const double start = thread_cpu_seconds();
   double cpu = 0.0;
   std::vector<Deposit> deposits;
@@ -141,8 +152,9 @@ long add_point_stars(std::span<const SkyPoint> sky, int width, int height, const
                      const CameraDirections& camera, const StarPassOptions& options, std::span<float> rgb,
                      double* cpu_seconds) {
   const std::size_t pixels = static_cast<std::size_t>(std::max(width, 0)) * static_cast<std::size_t>(std::max(height, 0));
-  if (width < 2 || height < 2 || sky.size() != pixels || rgb.size() != 3 * pixels)
-    throw std::invalid_argument("star pass: the frame's rays or pixels do not match its size (at least 2 x 2)");
+  check_picture_size(width, height);
+  if (sky.size() != pixels || rgb.size() != 3 * pixels)
+    throw std::invalid_argument("star pass: the frame's rays or pixels do not match its size");
   const std::vector<FoundStarImage> images = find_star_images(sky, width, height, field, camera, options, cpu_seconds);
   draw_star_images(images, {}, width, height, field, camera, options, rgb, cpu_seconds);
   return static_cast<long>(images.size());

@@ -58,6 +58,12 @@ struct StarPassOptions {
   ImageWrap wrap{};
 };
 
+// The smallest picture the pass draws on, in each direction: a quad of
+// rays needs two rows and two columns of them.  The render refuses a
+// smaller frame, eye's picture or --region of a point-star sky before it
+// starts (pipeline/render_command.cpp).
+inline constexpr int star_pass_min_side = 2;
+
 // A star image as stages 1-5 find it: the star (its index in the field),
 // its place (pixel units from the image's top-left corner), its
 // magnification and its light as the light model shows it there, before
@@ -81,7 +87,7 @@ struct StreakPath {
 // height), in a fixed order (rows of tiles top to bottom, as one thread
 // finds them).  Adds the CPU time taken, summed over the threads, to
 // *cpu_seconds if given.  Throws std::invalid_argument when the frame is
-// smaller than 2 x 2 or `sky` does not match its size.
+// smaller than star_pass_min_side or `sky` does not match its size.
 std::vector<FoundStarImage> find_star_images(std::span<const SkyPoint> sky, int width, int height,
                                              const StarField& field, const CameraDirections& camera,
                                              const StarPassOptions& options, double* cpu_seconds = nullptr);
@@ -95,6 +101,8 @@ void draw_star_images(std::span<const FoundStarImage> images, std::span<const St
 
 // Adds the stars' light to `rgb` (linear RGB, 3 floats per pixel, row by
 // row, width x height); `sky` holds each pixel's ray (width x height).
+// Throws std::invalid_argument where the picture is smaller than
+// star_pass_min_side or `sky` and `rgb` do not match its size.
 // Pixels on the image's edge get their outer quads from rays extrapolated
 // one pixel beyond it, or where the image wraps from the rays across it.  Returns how many star images were added; adds the
 // CPU time the pass took, summed over its threads, to *cpu_seconds if

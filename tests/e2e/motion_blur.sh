@@ -94,5 +94,20 @@ expect_error frame_shutter "frame_shutter.lua: frame 0: field 'shutter' must be 
 expect_error whole_frames "whole_frames.lua: frame 0 at 0.125: " -- \
   "$LIGHTCONE" render "$DATA/whole_frames.lua" --out bad --shutter 0.5 --shutter-position start --time-samples 2
 grep -q "frame(i) is also called at fractional i" whole_frames.err || fail "no hint: $(cat whole_frames.err)"
+# A cut between cameras within a shutter: a mono picture blended with a
+# stereo pair (frame 2's shutter reaches back to frame 1.5), or a flat
+# picture with a sphere.
+sed 's/camera = lc.camera{fov = 40},/camera = (i < 2) and lc.camera{fov = 40} or lc.camera{fov = 40, stereo = "side-by-side"},/' \
+  "$DATA/still.lua" >stereo_cut.lua
+expect_error stereo_cut "stereo_cut.lua: frame 2: the camera is lc.camera (flat, side-by-side) at the frame but lc.camera (flat, mono) at 1.75, within its shutter" -- \
+  "$LIGHTCONE" render stereo_cut.lua --out bad --shutter 1 --time-samples 2
+expect_error stereo_cut_region "close it for this frame" -- \
+  "$LIGHTCONE" render stereo_cut.lua --out bad --shutter 1 --time-samples 2 --region 0,0,8,8
+sed 's/camera = lc.camera{fov = 40},/camera = (i < 1) and lc.equirect{} or lc.equirect{longitude = 180},/' \
+  "$DATA/still.lua" >projection_cut.lua
+expect_error projection_cut "frame 1: the camera is lc.equirect (flat, mono) at the frame but lc.equirect (equirectangular, mono) at 0.75" -- \
+  "$LIGHTCONE" render projection_cut.lua --out bad --shutter 1 --time-samples 2
+# ... a closed shutter renders the cut.
+"$LIGHTCONE" render stereo_cut.lua --out cut_closed --progress 0 2>cut_closed.log || fail "a cut, shutter closed: $(cat cut_closed.log)"
 [ ! -e bad ] || fail "a refused render left files: $(ls bad)"
 e2e_end

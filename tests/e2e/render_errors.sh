@@ -213,9 +213,10 @@ expect_error bad_name "name '../evil' may only use letters, digits" -- "$LIGHTCO
 touch not_a_dir
 expect_error out_is_file "--out not_a_dir: cannot create the output directory" -- "$LIGHTCONE" render ok.lua --out not_a_dir
 # A size lightcone encode cannot take is said at the start of a render (here
-# one that then fails at once, so nothing 16384x16384 is rendered); a
-# showcase, which always encodes, refuses it.
-expect_error big_render "--out not_a_dir/sub: cannot create the output directory" -- \
+# one that then fails at once, so nothing 16384x16384 is rendered: its
+# memory, ~29 GB, or its output directory); a showcase, which always
+# encodes, refuses it.
+expect_error big_render "lightcone: error: " -- \
   "$LIGHTCONE" render ok.lua --out not_a_dir/sub --size 16384x16384
 grep -q "render: warning: these frames cannot be encoded to video by lightcone encode (16384x16384 frames are too large" \
   big_render.err || fail "no warning that 16384x16384 frames cannot be encoded: $(cat big_render.err)"
@@ -311,6 +312,36 @@ expect_error sky_passwd "sky image 'passwd.png' (./passwd.png) leads through a l
 # The shot itself must be a regular file too.
 mkfifo "$WORK/fifo_shot.lua"
 expect_error fifo_shot "fifo_shot.lua: a FIFO, not a regular file" -- timeout 60 "$LIGHTCONE" inspect fifo_shot.lua
+
+# Point stars need pictures of at least 2x2: a smaller frame, eye's picture
+# or --region is refused before the render starts, naming the flag or field.
+shot tiny_stars "$good_kerr camera = lc.camera{fov = 40}, sky = lc.starfield{},"
+expect_error tiny_frame "the frame is 1x1 pixels (--size, --scale or the shot's width and height); frame 0's sky has point stars, which are drawn on pictures of at least 2x2" -- \
+  "$LIGHTCONE" render tiny_stars.lua --out out --size 1x1
+expect_error tiny_region "--region: 1x8 pixels; frame 0's sky has point stars, which are drawn on pictures of at least 2x2" -- \
+  "$LIGHTCONE" render tiny_stars.lua --out out --region 0,0,1,8
+shot tiny_eyes "$good_kerr camera = lc.camera{fov = 40, stereo = 'side-by-side'}, sky = lc.starfield{},"
+expect_error tiny_eyes "frame 0: the camera's \`stereo\` puts each eye's picture in 1x8 pixels of the 3x8 frame" -- \
+  "$LIGHTCONE" render tiny_eyes.lua --out out --size 3x8
+# --png-depth says what it takes.
+expect_error png_depth_float "--png-depth: '16.0' is not a PNG depth: give the bits per channel as the integer 8 or 16" -- \
+  "$LIGHTCONE" render ok.lua --out out --png-depth 16.0
+# A stereo eye pushed into the ergoregion (the camera looks along phi, its
+# left eye 1 M towards the hole from a static observer at r = 2.5): named
+# with the file and frame and what to change, by render and inspect alike.
+shot ergo_eye "spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 2.5, theta = 90, phi = 0},
+    camera = lc.camera{fov = 40, stereo = 'side-by-side', separation = 2, yaw = 90},"
+expect_error ergo_eye "ergo_eye.lua: frame 0: the camera's left eye (stereo, \`separation\` 2 M) cannot stand there" -- \
+  "$LIGHTCONE" render ergo_eye.lua --out out
+grep -qF "give the camera a smaller \`separation\`, or place the observer further out" ergo_eye.err || fail "no advice: $(cat ergo_eye.err)"
+expect_error inspect_ergo_eye "ergo_eye.lua: frame 0: the camera's left eye" -- "$LIGHTCONE" inspect ergo_eye.lua
+# A frame larger than the memory is refused before the render starts, with
+# the figures (~108 bytes a pixel at its peak: 29 GB at 16384x16384), where
+# this machine has less than that.
+if [ "$(awk '/MemAvailable/ {print $2}' /proc/meminfo)" -lt 28000000 ]; then
+  expect_error frame_memory "frames of 16384x16384 need ~29.0 GB of memory at their peak" -- \
+    timeout 60 "$LIGHTCONE" render ok.lua --out out --size 16384x16384 --supersample 8
+fi
 
 [ ! -e out ] || [ -z "$(ls -A out)" ] || fail "failed renders left files in out/: $(ls out)"
 e2e_end
