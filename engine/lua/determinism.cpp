@@ -68,6 +68,7 @@ bool to_key(lua_State* L, int index, Key& out) {
   }
 }
 
+// Pushes the Lua value `k` stands for.
 void push_key(lua_State* L, const Key& k) {
   switch (k.rank) {
     case KeyRank::integer:
@@ -148,7 +149,9 @@ int walk(lua_State* L) {
     pos = 0;
     if (!lua_isnil(L, 2)) {
       Key after;
-      if (!to_key(L, 2, after)) return protect(L, [](lua_State* L) -> int { throw unordered("pairs", luaL_typename(L, 2)); });
+      if (!to_key(L, 2, after)) {
+        return protect(L, [](lua_State* L) -> int { throw unordered("pairs", luaL_typename(L, 2)); });
+      }
       int lo = 0, hi = count;  // the first position whose key sorts after `after` is in (lo, hi + 1]
       while (lo < hi) {
         const int mid = lo + (hi - lo + 1) / 2;

@@ -110,6 +110,15 @@ std::string shortened(std::string_view text) {
   return fmt::format("{}... ({} bytes)", text.substr(0, kShownNameBytes), text.size());
 }
 
+// A folder modules are read from, as the real paths of modules must lie
+// in it: canonical, or as near as can be for one that does not exist.
+std::filesystem::path module_root(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::path root = std::filesystem::canonical(dir, ec);
+  if (ec) root = std::filesystem::weakly_canonical(std::filesystem::absolute(dir, ec), ec);
+  return root;
+}
+
 // Reads a whole Lua source file into `out`. Returns "" or why it cannot:
 // the OS error ("No such file or directory", ...), or that it is no regular
 // file (a FIFO or /dev/zero would block or never end; the type is checked
@@ -381,9 +390,12 @@ struct Sandbox::Impl {
   bool timed_out = false;  // the evaluation hit its deadline; the hook fires on every instruction
   int nested_calls = 0;    // detail::NestedCall levels held
 
-  std::vector<std::filesystem::path> require_roots;  // require_dirs, canonical
+  std::vector<std::filesystem::path> require_roots;  // require_dirs and mounted folders, canonical
+  // Sandbox::mount_modules: names "<prefix>.<rest>" are read from the folder.
+  std::vector<std::pair<std::string, std::filesystem::path>> mounts;
   std::vector<std::string> loading;  // the chain of modules being required
   std::vector<std::string> loading_files;  // their paths, for locating errors
+  std::vector<int> loading_mounts;         // the mount each was read through, or -1
   std::string main_file;                   // the outermost run_file's script
 
   int handler_ref = LUA_NOREF;     // the traceback message handler
@@ -694,9 +706,33 @@ struct Sandbox::Impl {
           name.substr(0, kShownNameBytes),
           name.size() > kShownNameBytes ? fmt::format("... ({} bytes)", name.size()) : std::string()));
     }
+    // A mounted prefix is looked for in its folder alone. A name required
+    // while a mounted module loads is looked for in that folder first (a
+    // shipped shot's siblings: read through the mount, and loaded once per
+    // mount, '\n' being in no module name), then as any other.
+    std::string relative = name;
+    int mount = -1;
+    for (std::size_t m = 0; m < mounts.size() && mount < 0; ++m) {
+      const std::string& prefix = mounts[m].first;
+      if (name.size() > prefix.size() + 1 && name.starts_with(prefix) && name[prefix.size()] == '.') {
+        relative = name.substr(prefix.size() + 1);
+        mount = static_cast<int>(m);
+      }
+    }
+    std::string key = name;
+    if (mount < 0 && !loading_mounts.empty() && loading_mounts.back() >= 0) {
+      const int from = loading_mounts.back();
+      std::string sibling = name;
+      std::replace(sibling.begin(), sibling.end(), '.', '/');
+      std::error_code ec;
+      if (std::filesystem::exists(mounts[static_cast<std::size_t>(from)].second / (sibling + ".lua"), ec)) {
+        mount = from;
+        key = fmt::format("{}\n{}", from, name);
+      }
+    }
     lua_settop(L, 1);
     lua_rawgeti(L, LUA_REGISTRYINDEX, modules_ref);
-    lua_pushvalue(L, 1);
+    lua_pushlstring(L, key.data(), key.size());
     lua_rawget(L, 2);
     if (!lua_isnil(L, 3)) return 1;
     lua_settop(L, 1);
@@ -708,13 +744,18 @@ struct Sandbox::Impl {
       throw failure(fmt::format("require cycle: {}", join(chain, " -> ")));
     }
 
-    std::string relative = name;
+    std::vector<std::filesystem::path> dirs_searched;
+    if (mount >= 0) {
+      dirs_searched.push_back(mounts[static_cast<std::size_t>(mount)].second);
+    } else {
+      dirs_searched = require_dirs;
+    }
     std::replace(relative.begin(), relative.end(), '.', '/');
     relative += ".lua";
     std::vector<std::string> searched;
     std::filesystem::path found;
     std::string source;
-    for (const auto& dir : require_dirs) {
+    for (const auto& dir : dirs_searched) {
       std::filesystem::path candidate = dir / relative;
       std::error_code ec;
       const std::filesystem::path real = std::filesystem::canonical(candidate, ec);
@@ -733,6 +774,7 @@ struct Sandbox::Impl {
                        [&](const auto& root) { return is_within(real, root); })) {
         std::vector<std::string> dirs;
         for (const auto& d : require_dirs) dirs.push_back(shortened(d.string()));
+        for (const auto& m : mounts) dirs.push_back(shortened(m.second.string()));
         throw failure(fmt::format(
             "module '{}' ({}) leads through a link to {}, outside the folders modules are read from ({})", shown,
             shortened(candidate.string()), shortened(real.string()), join(dirs, ", ")));
@@ -766,9 +808,11 @@ struct Sandbox::Impl {
       lua_pushvalue(L, 1);  // like Lua 5.1, the module receives its name
       loading.push_back(name);
       loading_files.push_back(found.string());
+      loading_mounts.push_back(mount);
       status = lua_pcall(L, 1, 1, 2);
       loading.pop_back();
       loading_files.pop_back();
+      loading_mounts.pop_back();
     }
     if (status == LUA_ERRMEM) {
       lua_pushlightuserdata(L, &memory_sentinel);
@@ -780,7 +824,7 @@ struct Sandbox::Impl {
       lua_pushboolean(L, 1);
     }
     lua_rawgeti(L, LUA_REGISTRYINDEX, modules_ref);
-    lua_pushvalue(L, 1);
+    lua_pushlstring(L, key.data(), key.size());
     lua_pushvalue(L, -3);
     lua_rawset(L, -3);
     lua_pop(L, 1);
@@ -855,12 +899,7 @@ Sandbox::Sandbox(std::vector<std::filesystem::path> require_dirs, SandboxLimits 
   }
   Impl& s = *impl_;
   s.require_dirs = std::move(require_dirs);
-  for (const auto& dir : s.require_dirs) {
-    std::error_code ec;
-    std::filesystem::path root = std::filesystem::canonical(dir, ec);
-    if (ec) root = std::filesystem::weakly_canonical(std::filesystem::absolute(dir, ec), ec);
-    s.require_roots.push_back(std::move(root));
-  }
+  for (const auto& dir : s.require_dirs) s.require_roots.push_back(module_root(dir));
   s.limits = std::move(limits);
   lua_State* L = lua_newstate(&Impl::allocate, &s);
   if (L == nullptr) {
@@ -980,6 +1019,12 @@ void Sandbox::call(int nargs, int nresults) {
   }
   lua_remove(L, func);
   lua_remove(L, func);
+}
+
+void Sandbox::mount_modules(std::string prefix, std::filesystem::path dir) {
+  if (!valid_module_name(prefix)) throw std::invalid_argument("Sandbox::mount_modules: not a module name: " + prefix);
+  impl_->require_roots.push_back(module_root(dir));
+  impl_->mounts.emplace_back(std::move(prefix), std::move(dir));
 }
 
 const std::vector<std::filesystem::path>& Sandbox::loaded_files() const { return impl_->loaded; }

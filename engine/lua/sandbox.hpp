@@ -82,6 +82,13 @@ class Sandbox {
   // per frame: no allocation besides what the Lua code itself does.
   void call(int nargs, int nresults);
 
+  // Modules named "<prefix>.<rest>" are read from `dir` alone, as <rest>
+  // (dots are folders): "lightcone.shots" for the project's shots/ folder.
+  // `dir` becomes one of the folders a module's real path may lie in.
+  // Throws std::invalid_argument if `prefix` is no module name. Call before
+  // the scripts run.
+  void mount_modules(std::string prefix, std::filesystem::path dir);
+
   // Every file loaded so far (main scripts and required modules), canonical
   // paths, each once, in order of first load; what a shot's content hash
   // must cover.

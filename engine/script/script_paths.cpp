@@ -28,6 +28,8 @@ fs::path library_dir() {
       "cannot find the lightcone Lua library; looked for:{}\nset LIGHTCONE_SCRIPTS to the scripts/ folder", list));
 }
 
+fs::path shots_dir() { return library_dir().parent_path() / "shots"; }
+
 std::vector<fs::path> require_dirs_for(const fs::path& script) {
   fs::path own = script.parent_path();
   if (own.empty()) own = ".";

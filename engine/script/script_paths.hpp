@@ -13,6 +13,14 @@ namespace lc {
 // std::runtime_error naming every place looked at when none holds lightcone.lua.
 std::filesystem::path library_dir();
 
+// The project's shots/ folder (beside the library's folder): the shipped
+// shots, their textures, and the modules `require "lightcone.shots.NAME"`
+// reads.
+std::filesystem::path shots_dir();
+
+// The prefix of the module names that are the shipped shots.
+inline constexpr const char* kShotsModulePrefix = "lightcone.shots";
+
 // The directories `require` searches for a script: the library, then the
 // script's own folder.
 std::vector<std::filesystem::path> require_dirs_for(const std::filesystem::path& script);

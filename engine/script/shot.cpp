@@ -80,6 +80,7 @@ Shot::Shot(const std::filesystem::path& file, lua::SandboxLimits limits) : file_
 
 Shot::Loaded Shot::load(ShotInfo& info) {
   Loaded out{lua::Sandbox(require_dirs_for(file_), limits_)};
+  out.sandbox.mount_modules(kShotsModulePrefix, shots_dir());
   install_engine_api(out.sandbox, &memo_);
   out.sandbox.run_file(file_, 1);
   lua_State* L = out.sandbox.state();
@@ -229,7 +230,7 @@ std::vector<std::filesystem::path> Shot::loaded_files() const { return loaded_fi
 std::vector<std::filesystem::path> Shot::asset_dirs() const {
   std::filesystem::path own = file_.parent_path();
   if (own.empty()) own = ".";
-  return {own, library_dir().parent_path() / "shots"};
+  return {own, shots_dir()};
 }
 
 }  // namespace lc

@@ -1064,6 +1064,32 @@ return table.concat({tostring(b), tostring(a), tostring(b), tostring(print), tos
   }
 }
 
+// A mounted prefix (the shipped shots: require "lightcone.shots.NAME") is
+// read from its folder alone; what a mounted module requires while it
+// loads comes from that folder first (its siblings), else as usual; a
+// sibling is not the module of the same name elsewhere.
+TEST(LuaSandbox, MountedModulesAreReadFromTheirFolder) {
+  ScratchDir dir;
+  fs::create_directories(dir / "shots");
+  fs::create_directories(dir / "own");
+  write_file(dir / "shots" / "a.lua", "local b = require 'b'\nreturn 'a:' .. b .. ':' .. require 'lib'\n");
+  write_file(dir / "shots" / "b.lua", "return 'b-shots'\n");
+  write_file(dir / "own" / "b.lua", "return 'b-own'\n");
+  write_file(dir / "own" / "lib.lua", "return 'lib-own'\n");
+  const fs::path main = script(dir, "own/main.lua",
+                               "local a = require 'pkg.shots.a'\nlocal b = require 'b'\n"
+                               "return a .. ' ' .. b .. ' ' .. select(2, pcall(require, 'pkg.shots.lib'))\n");
+  Sandbox sandbox({dir / "own"});
+  sandbox.mount_modules("pkg.shots", dir / "shots");
+  sandbox.run_file(main);
+  const std::string out = top_string(sandbox.state());
+  EXPECT_EQ(out.rfind("a:b-shots:lib-own b-own ", 0), 0u) << out;
+  EXPECT_NE(out.find("module 'pkg.shots.lib' not found (searched: " + (dir / "shots" / "lib.lua").string() + ")"),
+            std::string::npos)
+      << out;
+  EXPECT_THROW(sandbox.mount_modules("../x", dir.path()), std::invalid_argument);
+}
+
 // A module name of any length: the message keeps its reason (the name is
 // cut, not the message).
 TEST(LuaSandbox, RequireOfAVeryLongNameKeepsTheReason) {

@@ -193,7 +193,8 @@ TEST(ScriptErrors, UnknownFieldsAreReportedBeforeBadValues) {
 // the value made has no metatable.
 TEST(ScriptErrors, ConstructorFieldsInheritedThroughIndexAreRefused) {
   ScratchDir dir;
-  const fs::path file = shot_running(dir, "local base = {fov = 30}\nlocal c = lc.camera(setmetatable({yaw = 5}, {__index = base}))");
+  const fs::path file =
+      shot_running(dir, "local base = {fov = 30}\nlocal c = lc.camera(setmetatable({yaw = 5}, {__index = base}))");
   const std::string msg = first_line(error_of<ScriptError>([&] { lc::Shot shot(file); }));
   EXPECT_NE(msg.find("shot.lua:3: camera: field 'fov' is inherited through a metatable's __index"), std::string::npos)
       << msg;

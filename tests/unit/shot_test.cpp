@@ -12,6 +12,7 @@
 
 #include "lua/table_reader.hpp"
 #include "scene/scene_json.hpp"
+#include "scene/still_key.hpp"
 #include "scratch_dir.hpp"
 #include "test_errors.hpp"
 
@@ -121,6 +122,28 @@ return {name = 'modules', frames = 4, width = 8, height = 8,
 
 // A misspelt frames suggested 'frame', a field of every shot. (Unknown
 // fields are reported before the missing ones they most likely stand for.)
+// A shipped shot is a module: a shot in another folder requires it as
+// "lightcone.shots.NAME" and renders its scenes (issue 43, item 15), and
+// a shipped shot that requires its sibling (the thermal sequence) works
+// from there, too.
+TEST(Shot, ShippedShotsAreModules) {
+  ScratchDir dir;
+  const fs::path file = write_shot(dir, "wrap.lua", R"(local paper = require "lightcone.shots.kerr_accrDisk"
+local shot = {}
+for k, v in pairs(paper) do shot[k] = v end
+shot.name = "wrapped"
+return shot)");
+  lc::Shot wrapped(file);
+  lc::Shot paper(fs::path(LIGHTCONE_SOURCE_DIR) / "shots" / "kerr_accrDisk.lua");
+  EXPECT_EQ(wrapped.info().name, "wrapped");
+  EXPECT_EQ(wrapped.info().frames, paper.info().frames);
+  EXPECT_EQ(lc::scene_key(wrapped.frame(450)), lc::scene_key(paper.frame(450)));
+  const fs::path thermal = write_shot(dir, "thermal.lua", "return require 'lightcone.shots.kerr_accrDisk_thermal'\n");
+  lc::Shot warm(thermal);
+  EXPECT_EQ(warm.info().name, "kerr_accrDisk_thermal");
+  EXPECT_NO_THROW(warm.frame(0));
+}
+
 TEST(Shot, MisspeltFramesSuggestsTheMissingField) {
   ScratchDir dir;
   const fs::path file = write_shot(dir, "shot.lua",
