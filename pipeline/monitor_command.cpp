@@ -113,6 +113,7 @@ class Server {
   Server(const Server&) = delete;
   Server& operator=(const Server&) = delete;
 
+  // The port it listens on (the one chosen, for --port 0).
   int port() const { return port_; }
 
  private:
@@ -179,6 +180,8 @@ class Server {
     }
   }
 
+  // Queues `reply` (with the headers every answer has, and `extra`) as the
+  // answer of the request on `c`; libmicrohttpd's verdict.
   static MHD_Result queue(MHD_Connection* c, const monitor::Reply& reply,
                           const std::map<std::string, std::string>& extra = {}) {
     // The body is copied into a buffer the response owns.
@@ -198,11 +201,14 @@ class Server {
     return queued;
   }
 
+  // One query argument (unescaped by libmicrohttpd; no value: "") into the
+  // Query `cls`.
   static MHD_Result add_argument(void* cls, MHD_ValueKind, const char* key, const char* value) {
     static_cast<monitor::Query*>(cls)->emplace(key ? key : "", value ? value : "");
     return MHD_YES;
   }
 
+  // The request header `name`, "" when absent.
   static std::string header(MHD_Connection* c, const char* name) {
     const char* v = MHD_lookup_connection_value(c, MHD_HEADER_KIND, name);
     return v ? v : "";
