@@ -334,8 +334,9 @@ int run_develop(const DevelopCommand& cmd) {
     throw std::runtime_error(*error);
   }
   if (interrupted) {
-    fmt::print(stderr, "develop: interrupted by {}: {} of {} frames developed, each whole; the rest keep their PNGs\n",
-               signal_name(*interrupted), done.load(), frames.size());
+    fmt::print(stderr, "develop: interrupted by {}: {} of {} frames developed, each whole; {}\n",
+               signal_name(*interrupted), done.load(), frames.size(),
+               cmd.out ? fmt::format("the rest are not in {} yet", cmd.out->string()) : "the rest keep their PNGs");
     return 128 + *interrupted;
   }
   // What it cost beside what rendering the frames cost: the journal's
