@@ -122,6 +122,28 @@ PY
 "$LIGHTCONE" render "$FALL" --out all --frames "$FRAMES" "${SMALL[@]}" 2>again.log || fail "again: $(cat again.log)"
 grep -q "nothing to render" again.log || fail "developed frames were rendered again: $(cat again.log)"
 
+# --- develop --out: the developed PNGs in a folder of their own, the
+# render's frames and journal untouched (two looks side by side); the same
+# PNGs a develop in place makes.  --reset starts from the render's own
+# look (the last develop's is dropped); alone, it gives the render's PNGs back.
+cp -r all all_before
+"$LIGHTCONE" develop all --out side --reset --view filmic --exposure-shift 1 2>side.log || fail "develop --out: $(cat side.log)"
+[ "$(ls side | grep -c '^kerr_fall\.[0-9]\{4\}\.png$')" = 7 ] || fail "develop --out made no 7 PNGs: $(ls side)"
+[ -z "$(ls side | grep -v '^kerr_fall\.[0-9]\{4\}\.png$')" ] || fail "develop --out left more than PNGs: $(ls side)"
+same_frames all_before all kerr_fall
+cmp -s all_before/kerr_fall.journal all/kerr_fall.journal || fail "develop --out changed the render's journal"
+"$LIGHTCONE" develop stopped --reset --view filmic --exposure-shift 1 2>in_place.log || fail "develop in place: $(cat in_place.log)"
+for f in side/*.png; do cmp -s "$f" "stopped/$(basename "$f")" || fail "develop --out's $(basename "$f") differs from develop's in place"; done
+"$LIGHTCONE" encode side -o side.mp4 2>side_encode.log || fail "encode of develop --out's folder: $(cat side_encode.log)"
+check_probe side.mp4 nb_read_frames=7
+"$LIGHTCONE" develop stopped --reset 2>reset.log || fail "develop --reset: $(cat reset.log)"
+same_frames original stopped kerr_fall
+cp -r original original_before
+expect_error out_is_dir "--out all: the render's own folder" -- "$LIGHTCONE" develop all --out all --view filmic
+expect_error out_is_render "--out original: it holds a render of 'kerr_fall'" -- "$LIGHTCONE" develop all --out original --view filmic
+same_frames all_before all kerr_fall
+same_frames original_before original kerr_fall
+
 # --- Bad input: a clear error, nothing changed.
 mkdir -p empty
 expect_error no_render "no render here" -- "$LIGHTCONE" develop empty
