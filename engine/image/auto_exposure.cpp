@@ -27,11 +27,11 @@ std::vector<double> metered_exposures(std::span<const double> readings, double l
   std::vector<bool> lit(n, false);
   for (std::size_t i = 0; i < n; ++i) {
     const double r = readings[i];
-    lit[i] = std::isfinite(r) && r > 0.0;
+    lit[i] = lit_reading(r);
     if (lit[i]) stops[i] = std::log2(level / r);
   }
   const long count = static_cast<long>(n);
-  const long reach = smoothing > 0.0 ? static_cast<long>(std::ceil(3.0 * smoothing)) : 0;
+  const long reach = smoothing_reach(smoothing);
   std::vector<double> out(n, 0.0);
   std::vector<bool> placed(n, false);  // whether a lit frame lies within reach
   for (long i = 0; i < count; ++i) {

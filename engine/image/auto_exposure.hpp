@@ -4,6 +4,7 @@
 // the light").  Pure functions of the readings, so a frame gets the same
 // exposure whichever frames a run renders, on whichever rank.
 
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,16 @@ inline constexpr double meter_percentile = 0.99;
 // ceil(fraction n)-th smallest).  NaN and negative luminance count as 0.
 // Assumes a non-empty image.
 double luminance_percentile(const FrameImage& image, double fraction = meter_percentile);
+
+// Whether a reading is of a lit frame (finite and above 0): only those
+// take part in metered_exposures' fit.
+inline bool lit_reading(double reading) { return std::isfinite(reading) && reading > 0.0; }
+
+// How many frames either side of a frame metered_exposures' fit reaches at
+// `smoothing` (3 of its standard deviations; 0 for none).
+inline long smoothing_reach(double smoothing) {
+  return smoothing > 0.0 ? static_cast<long>(std::ceil(3.0 * smoothing)) : 0;
+}
 
 // Each frame's exposure in stops from its reading, so that the reading is
 // shown at `level` (the linear light before the view: 1, the display's
