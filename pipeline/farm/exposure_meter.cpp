@@ -107,77 +107,52 @@ MeterReadings shot_readings(Shot& shot, const fs::path& dir, int frame_width, in
   const fs::path file = dir / (shot.info().name + ".meter");
   std::map<int, MeterLine> lines = read_meter(file, width, height);
   MeterReadings m{width, height, {}};
-  // The frames within the smoothing's reach of each asked for.
-  const long reach = smoothing_reach(shot.info().auto_exposure_smoothing);
-  std::set<int> wanted;
-  for (const int r : frames)
-    for (long j = std::max(0L, r - reach); j <= std::min<long>(count - 1, r + reach); ++j) wanted.insert(static_cast<int>(j));
-
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   ShotResources resources(shot.asset_dirs());
   // One sample a pixel at the frame's moment: the light, not its blur.
   const RenderSettings rs{width, height, 1, false, false};
-  std::size_t done = 0, total = wanted.size(), kept = 0, metered = 0;
-  // Reads or meters `batch`, its lines updated.
+  std::size_t done = 0, total = 0, kept = 0, metered = 0;
+  // Each frame of `batch` read back where its line matches its inputs,
+  // else metered (its line replaced).
   auto take = [&](const std::vector<int>& batch) {
+    if (total == 0)
+      fmt::print(stderr, "render: auto exposure: the readings of frames {} of the shot's {} (what the exposures of "
+                         "the frames asked for reach) at {}x{}, from and to {}\n",
+                 runs_of(std::set<int>(batch.begin(), batch.end())), count, width, height, file.string());
+    total += batch.size();
     const std::map<int, std::string> keys = reading_keys(shot, batch, width, height);
+    std::vector<double> out;
     for (const int f : batch) {
       const std::string& key = keys.at(f);
       if (const auto it = lines.find(f); it != lines.end() && it->second.key == key) {
-        m.readings[f] = it->second.reading;
+        out.push_back(it->second.reading);
         ++kept;
       } else {
         const Scene scene = build_scene(shot.frame_specs(f).frame, shot.file(), f, width, height, resources);
-        const double reading = luminance_percentile(render_frame(scene, rs, threads));
-        lines[f] = {key, reading};
-        m.readings[f] = reading;
+        out.push_back(luminance_percentile(render_frame(scene, rs, threads)));
+        lines[f] = {key, out.back()};
         ++metered;
       }
       if (each) each(++done, total);
     }
+    return out;
   };
-  // The nearest lit frame from `from` on in direction `step` (or the
-  // shot's end), each taken.
-  auto walk = [&](long from, int step) {
-    for (long j = from; j >= 0 && j < count; j += step) {
-      if (!m.readings.count(static_cast<int>(j))) {
-        ++total;
-        take({static_cast<int>(j)});
-      }
-      if (lit_reading(m.readings.at(static_cast<int>(j)))) return;
-    }
-  };
-  fmt::print(stderr, "render: auto exposure: the readings of frames {} of the shot's {} (what the exposures of the "
-                     "frames asked for reach) at {}x{}, from and to {}\n",
-             runs_of(wanted), count, width, height, file.string());
-  try {
-    take(std::vector<int>(wanted.begin(), wanted.end()));
-    // A frame with nothing lit within reach takes the fit of the nearest
-    // placed frame on either side: out to the nearest lit one.
-    for (const int r : frames) {
-      bool lit = false;
-      for (long j = std::max(0L, r - reach); j <= std::min<long>(count - 1, r + reach) && !lit; ++j)
-        lit = lit_reading(m.readings.at(static_cast<int>(j)));
-      if (lit) continue;
-      walk(r - reach - 1, -1);
-      walk(r + reach + 1, 1);
-    }
-  } catch (...) {
-    // What was metered is kept for the next run (an interrupt, a later
-    // frame's error).
-    if (metered > 0) {
-      DurableFile out(file);
-      out.write(meter_text(width, height, lines));
-      out.commit();
-    }
-    throw;
-  }
-  if (metered > 0) {
+  // What was metered is kept for the next run, also when the pass stops
+  // (an interrupt, a later frame's error).
+  auto keep = [&] {
+    if (metered == 0) return;
     DurableFile out(file);
     out.write(meter_text(width, height, lines));
     out.commit();
+  };
+  try {
+    m.readings = needed_readings(frames, count, shot.info().auto_exposure_smoothing, take);
+  } catch (...) {
+    keep();
+    throw;
   }
+  keep();
   fmt::print(stderr, "render: auto exposure: {} readings kept from {}, {} metered in {:.1f} s\n", kept, file.string(),
              metered, std::chrono::duration<double>(Clock::now() - start).count());
   return m;
@@ -185,19 +160,13 @@ MeterReadings shot_readings(Shot& shot, const fs::path& dir, int frame_width, in
 
 std::map<int, double> auto_exposures(const ShotInfo& info, const MeterReadings& meter,
                                      const std::map<int, std::optional<double>>& own) {
+  std::vector<int> frames;
+  for (const auto& [frame, exposure] : own) frames.push_back(frame);
+  const std::map<int, double> metered =
+      exposures_from(meter.readings, frames, info.auto_exposure_level, info.auto_exposure_smoothing);
   std::map<int, double> out;
-  if (meter.readings.empty()) return out;
-  // The fit over the span of frames metered: the frames between that were
-  // not metered (as unlit) lie beyond the reach of every frame asked for
-  // (shot_readings), so each gets what the whole shot's fit gives it, to
-  // the bit (the same sums in the same order).
-  const int first = meter.readings.begin()->first, last = meter.readings.rbegin()->first;
-  std::vector<double> span(static_cast<std::size_t>(last - first + 1), 0.0);
-  for (const auto& [frame, reading] : meter.readings) span[static_cast<std::size_t>(frame - first)] = reading;
-  const std::vector<double> metered = metered_exposures(span, info.auto_exposure_level, info.auto_exposure_smoothing);
   for (const auto& [frame, exposure] : own)
-    out[frame] = std::clamp(metered.at(static_cast<std::size_t>(frame - first)) + exposure.value_or(info.exposure),
-                            -64.0, 64.0);
+    out[frame] = std::clamp(metered.at(frame) + exposure.value_or(info.exposure), -64.0, 64.0);
   return out;
 }
 
