@@ -62,6 +62,7 @@ class StepProgress {
   }
 
  private:
+  // Prints the line for `done` frames.
   void say(std::size_t done);
   std::string what_;
   std::size_t total_;
