@@ -25,6 +25,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::string_view meter_header = "lightcone-meter 2";
+// Frames keyed at once (each key evaluates its frame: ~3 ms).
+constexpr std::size_t meter_key_chunk = 64;
 
 // One frame's line of the meter file: its reading and what it was made
 // from (reading_keys).
@@ -121,9 +123,16 @@ MeterReadings shot_readings(Shot& shot, const fs::path& dir, int frame_width, in
                          "the frames asked for reach) at {}x{}, from and to {}\n",
                  runs_of(std::set<int>(batch.begin(), batch.end())), count, width, height, file.string());
     total += batch.size();
-    const std::map<int, std::string> keys = reading_keys(shot, batch, width, height);
     std::vector<double> out;
-    for (const int f : batch) {
+    std::map<int, std::string> keys;
+    for (std::size_t k = 0; k < batch.size(); ++k) {
+      // Keyed a chunk at a time, so a long batch is said and stoppable
+      // (`each`) as it goes, not evaluated whole first.
+      if (k % meter_key_chunk == 0)
+        keys = reading_keys(shot, std::vector<int>(batch.begin() + static_cast<long>(k),
+                                                   batch.begin() + static_cast<long>(std::min(batch.size(), k + meter_key_chunk))),
+                            width, height);
+      const int f = batch[k];
       const std::string& key = keys.at(f);
       if (const auto it = lines.find(f); it != lines.end() && it->second.key == key) {
         out.push_back(it->second.reading);

@@ -80,4 +80,13 @@ grep -q "auto exposure: $kept readings kept from metered_out/metered.meter, $((3
 timeout -k 5 60 "$LIGHTCONE" render metered.lua --out one_go --frames 0:2 --progress 0 2>one_go.log || fail "one go: $(cat one_go.log)"
 same_frames metered_out one_go metered
 
+# --- Smoothed over 10,000 frames (30,000 either side): frame 0's meter
+# needs 30,001 readings, keyed (each frame evaluated) as they are taken, so
+# it is said and stoppable at once, not after evaluating all of them.
+long wide 200000 "auto_exposure = 1, auto_exposure_smoothing = 10000,"
+"$LIGHTCONE" render wide.lua --out wide_out --frames 0 --progress 1 2>wide.log &
+pid=$!
+wait_for wide.log "render: auto exposure: metering: [0-9]*/30001 frames" || fail "wide meter: no progress in 10 s: $(cat wide.log)"
+stop $pid wide_meter wide.log
+
 e2e_end
