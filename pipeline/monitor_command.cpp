@@ -102,6 +102,7 @@ class Server {
   ~Server() {
     {
       std::unique_lock lock(mutex_);
+      closing_ = true;  // no trace is suspended from now on
       traces_done_.wait(lock, [this] { return traces_ == 0; });
       stopping_ = true;
     }
@@ -246,12 +247,13 @@ class Server {
     if (path != "/api/trace") return queue(c, self->api_.get(path, query));
     // A trace takes up to a minute: on a thread of its own, the connection
     // suspended meanwhile (its polling thread serves the others).
-    auto* pending = new Pending;
-    *req_cls = pending;
     {
       const std::lock_guard lock(self->mutex_);
+      if (self->closing_) return queue(c, monitor::error_reply(503, "the monitor is stopping"));
       ++self->traces_;
     }
+    auto* pending = new Pending;
+    *req_cls = pending;
     MHD_suspend_connection(c);
     pending->worker = std::thread([self, c, pending, query = std::move(query)] {
       pending->reply = self->api_.get("/api/trace", query);
@@ -271,6 +273,7 @@ class Server {
   std::map<HeadWait*, std::unique_ptr<HeadWait>> waits_;
   int traces_ = 0;
   bool stopping_ = false;
+  bool closing_ = false;  // stopping: traces refused (a suspended connection must not outlive the daemon)
   std::condition_variable traces_done_, watch_;
   std::thread watchman_;
 };
