@@ -222,6 +222,14 @@ EventSummary read_events(const fs::path& file, std::size_t keep) {
   if (own.fd < 0) return s;
   __gnu_cxx::stdio_filebuf<char> buffer(own.fd, std::ios::in | std::ios::binary);  // closes the descriptor
   std::istream in(&buffer);
+  return read_events(in, keep);
+}
+
+EventSummary read_events(std::istream& in, std::size_t keep) {
+  // Input: the log's lines from its start, or from any line's start (the
+  // monitor reads what was appended since it last read: its first line is
+  // then an event, read as one).
+  EventSummary s;
   LineReader lines(in, max_event_line);
   bool first = true;
   while (const auto line = lines.next()) {
@@ -256,9 +264,9 @@ EventSummary read_events(const fs::path& file, std::size_t keep) {
       r.script = e->fields.count("script") ? e->fields.at("script") : "";
       s.run = r;
     } else if (e->kind == "rank") {
-      if (s.ranks.size() < 4096) s.ranks.push_back(*e);
+      if (s.ranks.size() < max_summary_ranks) s.ranks.push_back(*e);
     } else if (e->kind == "lost") {
-      if (s.lost.size() < 4096) s.lost.push_back(static_cast<int>(field_long(*e, "rank")));
+      if (s.lost.size() < max_summary_ranks) s.lost.push_back(static_cast<int>(field_long(*e, "rank")));
     } else if (e->kind == "progress") {
       s.progress = *e;
     } else if (e->kind == "frame") {

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <istream>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -116,6 +117,9 @@ struct Event {
   std::map<std::string, std::string> fields;  // the rest, decoded
 };
 
+// The most workers (rank lines) and lost workers a summary holds.
+inline constexpr std::size_t max_summary_ranks = 4096;
+
 // What a monitor needs of an event log: the latest run and what happened
 // in it.  Read a line at a time in bounded memory (a 100,000-frame film's
 // log is read whole, but only the latest run's ranks, last progress and the
@@ -134,6 +138,8 @@ struct EventSummary {
 // A log that is missing, or no regular file (a link, a FIFO), reads as
 // an empty summary.
 EventSummary read_events(const std::filesystem::path& file, std::size_t keep = 200);
+// The same of a log's text (or of the lines appended to it since a read).
+EventSummary read_events(std::istream& in, std::size_t keep = 200);
 
 // Text as an event field's value: bytes other than letters, digits and
 // "-._~/:,+" as %XX; and back (a malformed escape is kept as it is).

@@ -14,9 +14,12 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "monitor/parsed_cache.hpp"
 
 namespace lc::monitor {
 
@@ -59,6 +62,10 @@ class MonitorApi {
   Reply get(const std::string& path, const Query& query) const;
 
   const std::vector<std::filesystem::path>& folders() const { return dirs_; }
+  // The journals and event logs parsed so far, kept between requests (for
+  // the tests).
+  const JournalCache& journals() const { return journals_; }
+  const EventCache& event_logs() const { return events_; }
 
  private:
   Reply folders_reply() const;
@@ -84,9 +91,25 @@ class MonitorApi {
   std::filesystem::path tracer_;
   std::filesystem::path chart_script_;
   mutable TraceCache traces_;
+  mutable JournalCache journals_;
+  mutable EventCache events_;
 };
 
 // The JSON error reply.
 Reply error_reply(int status, const std::string& message);
+
+// `reply` as an answer to a request whose Range header is `range` ("":
+// none).  Inputs: any reply; only a 200 is cut.  Output: `reply` itself
+// when there is no range, its unit is not bytes or it does not parse (the
+// header is then ignored, as RFC 9110 allows); a 206 holding the one range
+// asked for (bytes=A-B, A- or -N, B past the end cut to it) with its
+// Content-Range; a 416 with "bytes */<size>" when the range starts past
+// the end or several ranges are asked for (never served: a list of many
+// small ranges would make one request answer with the body many times).
+struct RangedReply {
+  Reply reply;
+  std::string content_range;  // its Content-Range header ("" none)
+};
+RangedReply with_range(Reply reply, const std::string& range);
 
 }  // namespace lc::monitor

@@ -4,7 +4,8 @@
 # hostile clients (tests/tools/monitor_abuse.py: a thousand ranges, a
 # gzip bomb and a chunked body POSTed, a header flood, slow clients
 # trickling header lines, a burst of pixel traces) are refused small and
-# fast while normal requests are answered, and the monitor's memory stays
+# fast while normal requests are answered, one byte range is answered 206
+# with its Content-Range (curl), and the monitor's memory stays
 # bounded; journals that are links, FIFOs or someone else's are refused
 # without a word of them and hold nothing; in a real browser one shot
 # that cannot be shown says so on its card while the others are shown, and
@@ -81,6 +82,18 @@ cat abuse.txt
 # HEAD is answered as GET without a body; other methods are refused.
 [ "$(curl -s --max-time 5 -I -o /dev/null -w "%{http_code}" "$URL/api/folders")" = 200 ] || fail "HEAD"
 [ "$(curl -s --max-time 5 -X DELETE -o /dev/null -w "%{http_code}" "$URL/api/folders")" = 405 ] || fail "DELETE"
+# One range: 206 with that part; past the end: 416 with the size; several: 416.
+curl -s --max-time 5 -D head.txt -H "Range: bytes=0-14" -o part.txt "$URL/"
+grep -q "^HTTP/1.1 206" head.txt || fail "one range: $(head -1 head.txt)"
+whole=$(curl -s --max-time 5 "$URL/" | wc -c)
+grep -qi "^Content-Range: bytes 0-14/$whole" head.txt || fail "one range's Content-Range: $(grep -i content-range head.txt)"
+[ "$(cat part.txt)" = "$(curl -s --max-time 5 "$URL/" | head -c 15)" ] || fail "one range's part: $(cat part.txt)"
+[ "$(curl -s --max-time 5 -H "Range: bytes=-5" "$URL/" | wc -c)" = 5 ] || fail "the last 5 bytes"
+curl -s --max-time 5 -D head.txt -H "Range: bytes=$whole-" -o /dev/null "$URL/"
+grep -q "^HTTP/1.1 416" head.txt && grep -qi "^Content-Range: bytes \*/$whole" head.txt \
+  || fail "a range past the end: $(head -1 head.txt) $(grep -i content-range head.txt)"
+[ "$(curl -s --max-time 5 -H "Range: bytes=0-1,4-5" -o /dev/null -w "%{http_code}" "$URL/")" = 416 ] || fail "two ranges"
+[ "$(curl -s --max-time 5 -H "Range: bytes=x-" -o /dev/null -w "%{http_code}" "$URL/")" = 200 ] || fail "a bad range"
 # All of it in bounded memory (the gzip bomb alone unpacks to 62 MiB, the
 # ranges asked for 1,000 copies of the page).
 hwm=$(awk '/^VmHWM:/ {print $2}' "/proc/$monitor/status")

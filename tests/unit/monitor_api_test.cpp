@@ -359,3 +359,37 @@ TEST(MonitorApi, OnlyDirectoriesAreServed) {
 
 }  // namespace
 }  // namespace lc::monitor
+
+namespace lc::monitor {
+namespace {
+
+// One byte range is served 206 with its Content-Range; several, or one
+// past the end, 416 with the size; a range that does not parse, or of
+// another unit, is ignored (200, the whole answer); only a 200 is cut.
+TEST(MonitorApi, OneRangeIsAnsweredWithItsPart) {
+  const Reply whole{200, "text/plain", "0123456789"};
+  const auto part = [&](const std::string& range) { return with_range(whole, range); };
+  EXPECT_EQ(part("bytes=2-4").reply.status, 206);
+  EXPECT_EQ(part("bytes=2-4").reply.body, "234");
+  EXPECT_EQ(part("bytes=2-4").content_range, "bytes 2-4/10");
+  EXPECT_EQ(part("bytes=7-").reply.body, "789");
+  EXPECT_EQ(part(" bytes=8-99999999999999999999999").content_range, "bytes 8-9/10");
+  EXPECT_EQ(part("bytes=-3").reply.body, "789");
+  EXPECT_EQ(part("bytes=-30").content_range, "bytes 0-9/10");
+  EXPECT_EQ(part("bytes=10-").reply.status, 416);
+  EXPECT_EQ(part("bytes=10-").content_range, "bytes */10");
+  EXPECT_EQ(part("bytes=99999999999999999999999-").reply.status, 416);
+  EXPECT_EQ(part("bytes=-0").reply.status, 416);
+  EXPECT_EQ(part("bytes=0-1,3-4").reply.status, 416);
+  for (const std::string ignored : {"", "items=0-1", "bytes=4-2", "bytes=x-2", "bytes=1", "bytes=--1"}) {
+    EXPECT_EQ(part(ignored).reply.status, 200) << ignored;
+    EXPECT_EQ(part(ignored).reply.body, "0123456789") << ignored;
+    EXPECT_EQ(part(ignored).content_range, "") << ignored;
+  }
+  const RangedReply missing = with_range(error_reply(404, "no such page"), "bytes=0-1");
+  EXPECT_EQ(missing.reply.status, 404);
+  EXPECT_EQ(missing.content_range, "");
+}
+
+}  // namespace
+}  // namespace lc::monitor
