@@ -9,6 +9,7 @@
 // written while a monitor reads, is skipped.  Lines:
 //   lightcone-events 1
 //   t=<unix s> event=run pid=<n> host=<name> ranks=<n> threads=<n> todo=<n> done=<n> size=<W>x<H> script=<path>
+//              [cwd=<path> command=<argv joined by NUL>]            (what resumes the run)
 //   t=<unix s> event=rank rank=<n> host=<name> threads=<n>          (an MPI worker joined)
 //   t=<unix s> event=progress stored=<n> total=<n> rows=<done>/<all> rays=<n> core_seconds=<s> open=<f>,<f>,...
 //              [held=<rank>:<sets>:<f>+<f>...,... [held_all=0]]      (an MPI farm: the workers holding sets;
@@ -47,7 +48,15 @@ struct RunStart {
   int todo = 0, done_before = 0;
   int width = 0, height = 0;
   std::string script;  // the shot script, absolute (the monitor's pixel inspector traces with it)
+  // The render's command line (its argv) and the folder it ran in: what
+  // resumes it, shown by the monitor to copy.  Empty in older logs.
+  std::vector<std::string> command;
+  std::string cwd;
 };
+
+// This process's command line, as Linux keeps it (/proc/self/cmdline);
+// empty where it cannot be read.
+std::vector<std::string> own_command_line();
 
 class EventLog {
  public:

@@ -1,6 +1,7 @@
 #include "monitor/monitor_api.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -75,9 +76,21 @@ std::string json_list(const std::vector<int>& v) {
   return out + "]";
 }
 
+std::string shell_word(const std::string& word);
+
+// An event as JSON; a run's command (its arguments joined by NUL) as the
+// shell line of its words, as the page shows it.
 std::string event_json(const farm::Event& e) {
   std::string out = fmt::format("{{\"t\": {}, \"event\": {}", json_number(e.time), json_text(e.kind));
-  for (const auto& [k, v] : e.fields) out += fmt::format(", {}: {}", json_text(k), json_text(v));
+  for (const auto& [k, v] : e.fields) {
+    std::string text = v;
+    if (e.kind == "run" && k == "command") {
+      text.clear();
+      std::istringstream args(v);
+      for (std::string arg; std::getline(args, arg, '\0');) text += (text.empty() ? "" : " ") + shell_word(arg);
+    }
+    out += fmt::format(", {}: {}", json_text(k), json_text(text));
+  }
   return out + "}";
 }
 
@@ -129,6 +142,30 @@ std::shared_ptr<const farm::EventSummary> events_of(EventCache& cache, const fs:
   } catch (const std::exception&) {
     throw std::runtime_error(fmt::format("cannot read {}", path.filename().string()));
   }
+}
+
+// `word` as one word of a POSIX shell's command line: as it is when it
+// holds nothing the shell reads specially, else in single quotes.
+std::string shell_word(const std::string& word) {
+  const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](unsigned char ch) {
+    return std::isalnum(ch) || std::string_view("_./=:,+-@%").find(static_cast<char>(ch)) != std::string_view::npos;
+  });
+  if (plain) return word;
+  std::string out = "'";
+  for (char ch : word) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return out + "'";
+}
+
+// The command that resumes the run `r` (the same command in the same
+// folder: docs/monitor.md), as JSON; null when its log does not say (an
+// older lightcone).  An MPI run's launcher is not in its command line:
+// `mpirun -n <ranks>` stands for it.
+std::string resume_json(const farm::RunStart& r) {
+  if (r.command.empty()) return "null";
+  std::string line = "cd " + shell_word(r.cwd.empty() ? "." : r.cwd) + " &&";
+  if (r.ranks > 1) line += fmt::format(" mpirun -n {}", r.ranks);
+  for (const std::string& arg : r.command) line += " " + shell_word(arg);
+  return json_text(line);
 }
 
 }  // namespace
@@ -198,16 +235,28 @@ std::vector<std::string> shots_in(const fs::path& dir) {
   return shots;
 }
 
-MonitorApi::MonitorApi(const std::vector<fs::path>& dirs, fs::path tracer, fs::path chart_script)
-    : tracer_(std::move(tracer)), chart_script_(std::move(chart_script)) {
+namespace {
+
+// The canonical folders of `dirs`; throws std::invalid_argument naming one
+// that is not a directory, or when there are none.
+std::vector<fs::path> canonical_folders(const std::vector<fs::path>& dirs) {
+  std::vector<fs::path> out;
   for (const fs::path& d : dirs) {
     std::error_code ec;
     if (!fs::is_directory(d, ec))
-      throw std::invalid_argument(fmt::format("{}: not a directory (give the folders renders write to: render --out)", d.string()));
-    dirs_.push_back(fs::canonical(d));
+      throw std::invalid_argument(fmt::format("{}: not a directory (give the folders renders write to: render --out, "
+                                              "or a folder they are in)",
+                                              d.string()));
+    out.push_back(fs::canonical(d));
   }
-  if (dirs_.empty()) throw std::invalid_argument("give at least one render folder");
+  if (out.empty()) throw std::invalid_argument("give at least one render folder");
+  return out;
 }
+
+}  // namespace
+
+MonitorApi::MonitorApi(const std::vector<fs::path>& dirs, fs::path tracer, fs::path chart_script)
+    : folders_(canonical_folders(dirs)), tracer_(std::move(tracer)), chart_script_(std::move(chart_script)) {}
 
 Reply MonitorApi::get(const std::string& path, const Query& query) const {
   try {
@@ -236,11 +285,12 @@ Reply MonitorApi::get(const std::string& path, const Query& query) const {
 }
 
 Reply MonitorApi::folders_reply() const {
+  const std::vector<fs::path> dirs = folders_.search();
   std::string out = "{\"folders\": [";
-  for (std::size_t i = 0; i < dirs_.size(); ++i) {
+  for (std::size_t i = 0; i < dirs.size(); ++i) {
     std::string shots;
-    for (const std::string& s : shots_in(dirs_[i])) shots += (shots.empty() ? "" : ", ") + json_text(s);
-    out += fmt::format("{}{{\"id\": {}, \"path\": {}, \"shots\": [{}]}}", i ? ", " : "", i, json_text(dirs_[i].string()),
+    for (const std::string& s : shots_in(dirs[i])) shots += (shots.empty() ? "" : ", ") + json_text(s);
+    out += fmt::format("{}{{\"id\": {}, \"path\": {}, \"shots\": [{}]}}", i ? ", " : "", i, json_text(dirs[i].string()),
                        shots);
   }
   std::string names;
@@ -326,7 +376,7 @@ std::optional<double> frames_per_second(const farm::EventSummary& ev) {
 }  // namespace
 
 Reply MonitorApi::status_reply(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const auto journal_ptr = journal_of(journals_, dir, shot);
   const farm::JournalContents& journal = *journal_ptr;
   std::map<int, std::uintmax_t> png_sizes;
@@ -400,12 +450,29 @@ Reply MonitorApi::status_reply(const Query& q) const {
     const std::optional<double> rate = frames_per_second(ev);
     const std::string per_minute = rate ? json_number(*rate * 60.0) : "null";
     const std::string eta = state == "running" && rate ? json_number(to_do / *rate) : "null";
+    // What ended the run, named: the ranks it lost (a killed worker, a node
+    // gone: the launcher then ends the job), else its error, else a signal.
+    std::string ended_by = "null";
+    if (ev.end && state != "done") {
+      std::string lost;
+      for (const int rank : ev.lost) {
+        std::string host;
+        for (const farm::Event& w : ev.ranks)
+          if (w.fields.count("rank") && std::atoi(w.fields.at("rank").c_str()) == rank && w.fields.count("host"))
+            host = w.fields.at("host");
+        lost += fmt::format("{}rank {}{}", lost.empty() ? "" : ", ", rank, host.empty() ? "" : " on " + host);
+      }
+      ended_by = json_text(!lost.empty()         ? lost + " stopped answering (lost)"
+                           : !ev.errors.empty()  ? ev.errors.back().fields.count("message") ? ev.errors.back().fields.at("message") : "an error"
+                           : state == "interrupted" ? "a signal: Ctrl-C, a kill, or the launcher ending the job"
+                                                    : state);
+    }
     run = fmt::format(
         "{{\"state\": {}, \"started\": {}, \"last_event\": {}, \"pid\": {}, \"host\": {}, \"ranks\": {}, \"threads\": {}, "
         "\"todo\": {}, \"stored\": {}, \"frames_per_minute\": {}, \"eta_seconds\": {}, \"workers\": [{}], "
-        "\"size\": [{}, {}]}}",
+        "\"size\": [{}, {}], \"resume\": {}, \"ended_by\": {}}}",
         json_text(state), json_number(r.time), json_number(last), r.pid, json_text(r.host), r.ranks, threads, r.todo,
-        ev.frames_stored, per_minute, eta, workers, r.width, r.height);
+        ev.frames_stored, per_minute, eta, workers, r.width, r.height, resume_json(r), ended_by);
   }
   std::string errors;
   for (const farm::Event& e : ev.errors)
@@ -420,7 +487,7 @@ Reply MonitorApi::status_reply(const Query& q) const {
 }
 
 Reply MonitorApi::frames_reply(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const long from = number_param(q, "from", 0, 10'000'000, 0);
   const long count = number_param(q, "count", 1, max_frames_per_reply, 1000);
   const long since = number_param(q, "since", 0, 1L << 40, 0);
@@ -446,7 +513,7 @@ Reply MonitorApi::frames_reply(const Query& q) const {
 }
 
 Reply MonitorApi::events_reply(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const auto events = events_of(events_, dir, shot);
   const farm::EventSummary& ev = *events;
   std::string out;
@@ -455,7 +522,7 @@ Reply MonitorApi::events_reply(const Query& q) const {
 }
 
 Reply MonitorApi::frame_png(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const long frame = number_param(q, "frame", 0, 99'999'999);
   const bool preview = number_param(q, "preview", 0, 1, 0) == 1;
   const fs::path real =
@@ -464,7 +531,7 @@ Reply MonitorApi::frame_png(const Query& q) const {
 }
 
 Reply MonitorApi::trace_reply(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const long frame = number_param(q, "frame", 0, 99'999'999);
   if (tracer_.empty()) throw BadRequest(501, "this monitor was started without the pixel inspector");
   const auto journal_ptr = journal_of(journals_, dir, shot);
@@ -512,7 +579,7 @@ Reply MonitorApi::trace_reply(const Query& q) const {
 }
 
 Reply MonitorApi::layer_png(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const long frame = number_param(q, "frame", 0, 99'999'999);
   const auto wanted = q.find("layer");
   if (wanted == q.end()) throw BadRequest(400, "missing parameter 'layer'");

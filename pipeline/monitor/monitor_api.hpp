@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "monitor/folder_list.hpp"
 #include "monitor/parsed_cache.hpp"
 
 namespace lc::monitor {
@@ -37,8 +38,8 @@ std::vector<std::string> shots_in(const std::filesystem::path& dir);
 
 class MonitorApi {
  public:
-  // `dirs`: the render folders to show.  Throws std::invalid_argument naming
-  // one that is not a directory.  `tracer`: the lightcone binary, run for
+  // `dirs`: the render folders to show, or folders to find them under.
+  // Throws std::invalid_argument naming one that is not a directory.  `tracer`: the lightcone binary, run for
   // the pixel inspector (monitor/pixel_trace.hpp); empty: no inspector.
   // `chart_script`: Chart.js's file (Debian's libjs-chart.js), served as
   // /chart.js when it exists.
@@ -50,7 +51,7 @@ class MonitorApi {
   // read a 500.
   //   /                      the page
   //   /chart.js              the chart library
-  //   /api/folders           the folders and their shots
+  //   /api/folders           the folders and their shots (render folders that appeared under them added)
   //   /api/status            ?folder=N&shot=S: counts, the run, its workers, errors, ETA
   //   /api/frames            ?folder=N&shot=S[&from=F][&count=C]: each finished frame's cost
   //   /api/events            ?folder=N&shot=S: the latest run's last events
@@ -61,7 +62,9 @@ class MonitorApi {
   // Safe to call from several threads at once.
   Reply get(const std::string& path, const Query& query) const;
 
-  const std::vector<std::filesystem::path>& folders() const { return dirs_; }
+  // The folders shown so far: those given, then those found under them
+  // (monitor/folder_list.hpp).
+  std::vector<std::filesystem::path> folders() const { return folders_.current(); }
   // The journals and event logs parsed so far, kept between requests (for
   // the tests).
   const JournalCache& journals() const { return journals_; }
@@ -87,7 +90,7 @@ class MonitorApi {
     void keep(const std::string& key, const std::string& reply);
   };
 
-  std::vector<std::filesystem::path> dirs_;  // canonical
+  FolderList folders_;  // canonical
   std::filesystem::path tracer_;
   std::filesystem::path chart_script_;
   mutable TraceCache traces_;
