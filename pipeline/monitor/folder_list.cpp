@@ -24,7 +24,8 @@ std::vector<fs::path> FolderList::search() const {
   const std::lock_guard lock(mutex_);
   std::size_t budget = max_entries_per_search;
   std::deque<std::pair<fs::path, int>> queue;
-  for (const fs::path& r : roots_) queue.emplace_back(r, 0);
+  for (const fs::path& r : roots_)
+    if (!render_roots_.count(r)) queue.emplace_back(r, 0);
   while (!queue.empty() && budget > 0 && listed_.size() < max_listed_folders) {
     const auto [dir, depth] = queue.front();
     queue.pop_front();
@@ -49,7 +50,10 @@ std::vector<fs::path> FolderList::search() const {
       known_.insert(dir);
       continue;
     }
-    if (renders) continue;  // a render folder given: its sub-folders are its own
+    if (renders) {  // a render folder given: its sub-folders are its own, and it is not read again
+      render_roots_.insert(dir);
+      continue;
+    }
     for (fs::path& b : below) queue.emplace_back(std::move(b), depth + 1);
   }
   return listed_;

@@ -35,6 +35,9 @@ class FolderList {
   mutable std::mutex mutex_;
   mutable std::vector<std::filesystem::path> listed_;
   mutable std::set<std::filesystem::path> known_;
+  // Folders given found to hold renders: not searched again (a film's
+  // folder holds a file per frame).
+  mutable std::set<std::filesystem::path> render_roots_;
 };
 
 }  // namespace lc::monitor
