@@ -129,7 +129,8 @@ FrameSpecs Shot::frame_specs(int i) {
   bool changes = false;
   for (const double t : out.shutter.instants()) {
     const double at = std::clamp(i + t, 0.0, static_cast<double>(info_.frames - 1));
-    SceneSpec s = at == i ? out.frame : evaluate_instant(i, at, frame_fields);
+    std::optional<lua::FieldError> lost;
+    SceneSpec s = at == i ? out.frame : evaluate_instant(i, at, frame_fields, &lost);
     if (s.spacetime.index() != out.frame.spacetime.index())
       throw std::invalid_argument(fmt::format(
           "{}: frame {}: the spacetime is {} at the frame but {} at {:g}, within its shutter; a shutter cannot be "
@@ -149,6 +150,7 @@ FrameSpecs Shot::frame_specs(int i) {
           "{}: frame {}: the camera is {} at the frame but {} at {:g}, within its shutter; a shutter cannot be open "
           "across a change of camera kind, stereo layout or projection: close it for this frame (its `shutter = 0`)",
           file_.string(), i, cut->at_frame, cut->at_instant, at));
+    if (lost) throw *lost;
     changes = changes || scene_key(s) != frame_key;
     out.times.push_back(t);
     out.instants.push_back(std::move(s));
@@ -160,7 +162,8 @@ FrameSpecs Shot::frame_specs(int i) {
   return out;
 }
 
-SceneSpec Shot::evaluate_instant(int i, double at, const FieldPaths& frame_fields) {
+SceneSpec Shot::evaluate_instant(int i, double at, const FieldPaths& frame_fields,
+                                 std::optional<lua::FieldError>* lost) {
   const std::string ctx = fmt::format("{}: frame {} at {:g}", file_.string(), i, at);
   const std::string hint = fmt::format(
       " (frame {}'s shutter is open: frame(i) is also called at fractional i, the instants of its shutter; a script "
@@ -172,18 +175,18 @@ SceneSpec Shot::evaluate_instant(int i, double at, const FieldPaths& frame_field
     // A field set at the frame and absent at an instant would take its
     // default there without a word: most often a table indexed by i.
     if (frame_fields && fields) {
-      std::vector<std::string> lost;
+      std::vector<std::string> missing;
       std::set_difference(frame_fields->begin(), frame_fields->end(), fields->begin(), fields->end(),
-                          std::back_inserter(lost));
-      std::erase_if(lost, [](const std::string& f) {
+                          std::back_inserter(missing));
+      std::erase_if(missing, [](const std::string& f) {
         return std::find(std::begin(kFrameOnlyFields), std::end(kFrameOnlyFields), f) != std::end(kFrameOnlyFields);
       });
-      if (!lost.empty())
-        throw lua::FieldError(fmt::format(
+      if (!missing.empty())
+        *lost = lua::FieldError(fmt::format(
             "{}: field '{}' is set at frame {} but not at {:g}: a table indexed by a fractional i gives nil (index "
             "by whole frames, math.floor(i), or interpolate between them), or the field appears or disappears "
-            "within the shutter, a cut",
-            ctx, lost.front(), i, at));
+            "within the shutter, a cut{}",
+            ctx, missing.front(), i, at, hint));
     }
     return s;
   } catch (const lua::FieldError& e) {

@@ -18,6 +18,7 @@
 
 #include "camera/delivery.hpp"
 #include "lua/sandbox.hpp"
+#include "lua/table_reader.hpp"
 #include "scene/frame_specs.hpp"
 #include "scene/scene_spec.hpp"
 #include "script/engine_api.hpp"
@@ -84,9 +85,10 @@ class Shot {
   // fields into `fields` if given.
   SceneSpec evaluate(double at, const std::string& ctx, FieldPaths* fields = nullptr);
   // evaluate at `at`, an instant of frame i's shutter, its errors saying
-  // so. Throws lua::FieldError where a field of the frame's scene
-  // (`frame_fields`) is absent at the instant.
-  SceneSpec evaluate_instant(int i, double at, const FieldPaths& frame_fields);
+  // so. Where a field of the frame's scene (`frame_fields`) is absent at
+  // the instant, `*lost` is the lua::FieldError to throw once the caller
+  // has looked for a cut between the two scenes, whose message says more.
+  SceneSpec evaluate_instant(int i, double at, const FieldPaths& frame_fields, std::optional<lua::FieldError>* lost);
   void note_loaded_files(const lua::Sandbox& sandbox);
 
   std::filesystem::path file_;
