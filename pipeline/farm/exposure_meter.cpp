@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "assets/shot_resources.hpp"
+#include "farm/journal.hpp"
 #include "durable_file.hpp"
 #include "farm/content_hash.hpp"
 #include "farm/shot_inputs.hpp"
@@ -34,7 +35,8 @@ std::string meter_key(Shot& shot, int width, int height) {
   std::iota(all.begin(), all.end(), 0);
   const ShotSurvey survey = survey_shot(shot, all);
   ContentHash h;
-  h.add(meter_header).add(std::uint64_t(width)).add(std::uint64_t(height)).add(std::uint64_t(shot.delivery()));
+  h.add(meter_header).add(std::uint64_t(width)).add(std::uint64_t(height)).add(std::uint64_t(shot.delivery().camera));
+  if (const Delivery& d = shot.delivery(); d.beyond_camera()) h.add(delivery_fields(d));  // (older keys stand)
   for (const auto& [path, hash] : survey.files) h.add(hash);
   return h.hex();
 }

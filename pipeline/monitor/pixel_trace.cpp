@@ -1,5 +1,7 @@
 #include "monitor/pixel_trace.hpp"
 
+#include "delivery_flags.hpp"
+
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -93,8 +95,8 @@ std::string trace_pixel_json(const fs::path& tracer, const PixelRequest& r, doub
                                    tracer.string(), "trace", r.script.string(),
                                    "--frame", std::to_string(r.frame), "--pixel",
                                    fmt::format("{},{}", r.x, r.y), "--size", fmt::format("{}x{}", r.width, r.height),
-                                   "--camera", r.camera, "--json",
-                                   "-o", csv.string()};
+                                   "--json", "-o", csv.string()};
+  for (std::string& word : delivery_flag_words(r.delivery)) args.push_back(std::move(word));
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

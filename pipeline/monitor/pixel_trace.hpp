@@ -9,13 +9,15 @@
 #include <filesystem>
 #include <string>
 
+#include "camera/delivery_camera.hpp"
+
 namespace lc::monitor {
 
 struct PixelRequest {
   std::filesystem::path script;  // the shot, as the render's event log names it
   int frame = 0, x = 0, y = 0;   // the pixel: column x, row y of the frame
   int width = 0, height = 0;     // the frame's size as rendered
-  std::string camera = "shot";   // as render --camera
+  Delivery delivery{};           // as render --camera ... --sky made the frame
 };
 
 // {"report": <trace --json's object>, "chart": "<the path's chart line>",
