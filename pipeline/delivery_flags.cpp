@@ -68,15 +68,4 @@ Delivery delivery_from_flags(const DeliveryFlags& flags) {
   return out;
 }
 
-std::vector<std::string> delivery_flag_words(const Delivery& d) {
-  std::vector<std::string> out = {"--camera", std::string(name_of(d.camera))};
-  // fmt's shortest text of a double reads back to the same double.
-  if (d.dome_tilt != default_dome_tilt) out.insert(out.end(), {"--dome-tilt", fmt::format("{}", d.dome_tilt)});
-  if (d.dome_elevation != default_dome_elevation)
-    out.insert(out.end(), {"--dome-elevation", fmt::format("{}", d.dome_elevation)});
-  if (d.separation != default_ods_separation) out.insert(out.end(), {"--separation", fmt::format("{}", d.separation)});
-  if (d.sky != DeliverySky::shot) out.insert(out.end(), {"--sky", std::string(name_of(d.sky))});
-  return out;
-}
-
 }  // namespace lc

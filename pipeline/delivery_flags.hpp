@@ -5,7 +5,6 @@
 
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "camera/delivery_camera.hpp"
 
@@ -25,10 +24,5 @@ struct DeliveryFlags {
 // --separation without --camera ods, or --sky kstars where the catalogue
 // is not installed (saying which package to install).
 Delivery delivery_from_flags(const DeliveryFlags& flags);
-
-// The flags that ask for `d` ("--camera", "dome", "--dome-tilt", "15"),
-// the defaults left out: the monitor's pixel inspector passes them to
-// `lightcone trace` for a frame as the journal recorded it.
-std::vector<std::string> delivery_flag_words(const Delivery& d);
 
 }  // namespace lc

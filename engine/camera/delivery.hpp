@@ -3,7 +3,7 @@
 // showcase --camera; docs/cameras.md, "A shot through a dome or a 360
 // camera"): its frames through a dome master, a 360-degree camera or
 // omnidirectional stereo in place of its own, framed from its own camera's
-// orientation, and under the real sky in place of its own (--sky kstars).
+// orientation (the sky it is delivered under: scene/delivered_sky.hpp).
 //   dome: the 180-degree fisheye, its axis pitched 90 - E above the shot's
 //         aim, so what the shot looked at sits E degrees (dome_elevation,
 //         35 by default) above the dome's front horizon, the sweet spot a
@@ -19,14 +19,11 @@
 // height (ODS: each eye's 2:1 picture of it) unless a size is given.
 
 #include <array>
-#include <stdexcept>
-#include <string>
 #include <utility>
 #include <variant>
 
 #include "camera/camera.hpp"
 #include "camera/delivery_camera.hpp"
-#include "sky/sky.hpp"
 
 namespace lc {
 
@@ -67,38 +64,6 @@ inline std::pair<int, int> delivery_size(DeliveryCamera to, int width, int heigh
     case DeliveryCamera::ods: return {2 * height, 2 * height};
   }
   return {width, height};
-}
-
-// The sky `shot_sky` is delivered under.  With kstars: a starfield keeps
-// all but its catalogue (its generated glow, the fake band's, gives way to
-// the real sky's black); the generated stars and the checker, lightcone's
-// stand-ins for a sky, give way to the real stars at their rotation and
-// brightness.  An image is the shot's own picture, perhaps of stars (the
-// real ones would be doubled) or of a Milky Way (which belongs behind
-// them): only the shot can say, so it throws std::invalid_argument saying
-// how.
-inline SkySpec delivered_sky(const SkySpec& shot_sky, DeliverySky to) {
-  if (to == DeliverySky::shot) return shot_sky;
-  PointStarSky::Params real;
-  real.catalogue = StarCatalogue::kstars;
-  if (const auto* p = std::get_if<PointStarSky::Params>(&shot_sky)) {
-    real = *p;
-    real.catalogue = StarCatalogue::kstars;
-    if (real.background == "generated") real.background = "none";
-  } else if (const auto* p = std::get_if<StarSky::Params>(&shot_sky)) {
-    real.rotate = p->rotate;
-    real.brightness = p->brightness;
-  } else if (const auto* p = std::get_if<CheckerSky::Params>(&shot_sky)) {
-    real.rotate = p->rotate;
-    real.brightness = p->brightness;
-  } else if (const auto* p = std::get_if<ImageSky::Params>(&shot_sky)) {
-    throw std::invalid_argument(
-        "--sky kstars: the sky is lc.sky_image{file = \"" + p->file +
-        "\"}, a picture of the shot's own that the real stars would be drawn over (stars in it would be doubled): "
-        "to keep it behind them give the shot lc.starfield{catalogue = \"kstars\", background = \"" + p->file +
-        "\"}, else leave out --sky (docs/cameras.md)");
-  }
-  return real;
 }
 
 }  // namespace lc

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "camera/delivery.hpp"
+#include "scene/delivered_sky.hpp"
 #include "lua/sandbox.hpp"
 #include "scene/frame_specs.hpp"
 #include "scene/scene_spec.hpp"

@@ -1,7 +1,5 @@
 #include "monitor/pixel_trace.hpp"
 
-#include "delivery_flags.hpp"
-
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -87,6 +85,17 @@ std::string path_json(const std::string& csv, std::string& chart) {
 }
 
 }  // namespace
+
+std::vector<std::string> delivery_flag_words(const Delivery& d) {
+  std::vector<std::string> out = {"--camera", std::string(name_of(d.camera))};
+  // fmt's shortest text of a double reads back to the same double.
+  if (d.dome_tilt != default_dome_tilt) out.insert(out.end(), {"--dome-tilt", fmt::format("{}", d.dome_tilt)});
+  if (d.dome_elevation != default_dome_elevation)
+    out.insert(out.end(), {"--dome-elevation", fmt::format("{}", d.dome_elevation)});
+  if (d.separation != default_ods_separation) out.insert(out.end(), {"--separation", fmt::format("{}", d.separation)});
+  if (d.sky != DeliverySky::shot) out.insert(out.end(), {"--sky", std::string(name_of(d.sky))});
+  return out;
+}
 
 std::string trace_pixel_json(const fs::path& tracer, const PixelRequest& r, double seconds) {
   const Scratch scratch;

@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "camera/delivery_camera.hpp"
 
@@ -19,6 +20,12 @@ struct PixelRequest {
   int width = 0, height = 0;     // the frame's size as rendered
   Delivery delivery{};           // as render --camera ... --sky made the frame
 };
+
+// The flags that ask `lightcone trace` for the delivery `d` ("--camera",
+// "dome", "--dome-tilt", "15"; the defaults left out), as render's
+// (pipeline/delivery_flags.hpp) read them: a frame traced as the journal
+// recorded it was made.
+std::vector<std::string> delivery_flag_words(const Delivery& d);
 
 // {"report": <trace --json's object>, "chart": "<the path's chart line>",
 //  "path": [[x, y, z], ...]} with the path in Cartesian coordinates (a

@@ -20,7 +20,9 @@
 #include "delivery_flags.hpp"
 #include "farm/checked_line.hpp"
 #include "farm/journal.hpp"
+#include "monitor/pixel_trace.hpp"
 #include "render_job.hpp"
+#include "scene/delivered_sky.hpp"
 #include "scratch_dir.hpp"
 
 namespace lc {
@@ -255,17 +257,34 @@ TEST(Delivery, TheJournalSpellsTheDeliveryAndOlderLinesReadAsBefore) {
   }
 }
 
+// The flags the words say, as main.cpp hands them over.
+DeliveryFlags flags_of(const std::vector<std::string>& words) {
+  DeliveryFlags out;
+  for (std::size_t k = 0; k + 1 < words.size(); k += 2) {
+    const std::string &flag = words[k], &value = words[k + 1];
+    if (flag == "--camera") out.camera = value;
+    else if (flag == "--dome-tilt") out.dome_tilt = std::stod(value);
+    else if (flag == "--dome-elevation") out.dome_elevation = std::stod(value);
+    else if (flag == "--separation") out.separation = std::stod(value);
+    else if (flag == "--sky") out.sky = value;
+    else ADD_FAILURE() << "unknown flag " << flag;
+  }
+  return out;
+}
+
+// The monitor's pixel inspector asks trace for the delivery the journal
+// recorded: the words read back to the same delivery, to the bit.
 TEST(Delivery, TheFlagWordsAskForTheSameDelivery) {
   Delivery d{DeliveryCamera::dome};
-  EXPECT_EQ(delivery_flag_words(d), (std::vector<std::string>{"--camera", "dome"}));
+  EXPECT_EQ(monitor::delivery_flag_words(d), (std::vector<std::string>{"--camera", "dome"}));
   d.dome_tilt = 15;
-  d.dome_elevation = 0.1;
-  d.sky = DeliverySky::kstars;
-  EXPECT_EQ(delivery_flag_words(d), (std::vector<std::string>{"--camera", "dome", "--dome-tilt", "15",
-                                                              "--dome-elevation", "0.1", "--sky", "kstars"}));
+  d.dome_elevation = 0.1 + 0.2;  // (no short decimal)
+  EXPECT_EQ(delivery_from_flags(flags_of(monitor::delivery_flag_words(d))), d);
   Delivery ods{DeliveryCamera::ods};
   ods.separation = 0.5;
-  EXPECT_EQ(delivery_flag_words(ods), (std::vector<std::string>{"--camera", "ods", "--separation", "0.5"}));
+  EXPECT_EQ(monitor::delivery_flag_words(ods), (std::vector<std::string>{"--camera", "ods", "--separation", "0.5"}));
+  EXPECT_EQ(delivery_from_flags(flags_of(monitor::delivery_flag_words(ods))), ods);
+  EXPECT_EQ(delivery_from_flags(flags_of(monitor::delivery_flag_words(Delivery{}))), Delivery{});
 }
 
 // The job's digest (what an MPI master and its workers compare) and its
