@@ -5,6 +5,7 @@
 
 #include <malloc.h>
 #include <charconv>
+#include <memory>
 #include <chrono>
 #include <cmath>
 #include <mutex>
@@ -15,6 +16,7 @@
 #include <fmt/ranges.h>
 
 #include "core/cpu_time.hpp"
+#include "farm/dir_lock.hpp"
 #include "farm/frame_files.hpp"
 #include "farm/frame_store.hpp"
 #include "farm/threads.hpp"
@@ -179,6 +181,37 @@ double decimal_sum(double a, double b) {
   return rounded;
 }
 
+// Refuses `out` (develop --out) where its PNGs would land on a render's
+// frames: the render's own folder, or a folder holding a render of `shot`.
+void check_out_folder(const fs::path& out, const fs::path& dir, const std::string& shot) {
+  std::error_code ec;
+  if (fs::exists(out, ec) && fs::equivalent(out, dir, ec))
+    throw std::runtime_error(fmt::format("--out {}: the render's own folder; develop without --out makes its PNGs there",
+                                         out.string()));
+  const fs::path journal = out / (shot + ".journal");
+  if (fs::exists(fs::symlink_status(journal, ec)))
+    throw std::runtime_error(fmt::format("--out {}: it holds a render of '{}' ({}); develop --out writes developed PNGs "
+                                         "into a folder of their own, never over a render's frames",
+                                         out.string(), shot, journal.string()));
+}
+
+// Makes develop --out's folder ready: checked (check_out_folder), created,
+// locked (a render or another develop kept out meanwhile) and checked again
+// under the lock, and cleared of temporaries a killed develop left.
+// Output: the lock, held until the develop ends.
+std::unique_ptr<farm::DirLock> take_out_folder(const fs::path& out, const fs::path& dir, const std::string& shot) {
+  check_out_folder(out, dir, shot);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec || !fs::is_directory(out))
+    throw std::runtime_error(fmt::format("--out {}: cannot create the folder: {}", out.string(),
+                                         ec ? ec.message() : "a file of that name exists"));
+  auto lock = std::make_unique<farm::DirLock>(out, "--out");
+  check_out_folder(out, dir, shot);
+  farm::remove_frame_temporaries(out, shot);
+  return lock;
+}
+
 }  // namespace
 
 std::vector<LookFlag> look_flags() {
@@ -242,8 +275,12 @@ int run_develop(const DevelopCommand& cmd) {
 
   const auto& journal = store.journal().frames;
   std::vector<Look> looks;
-  for (int f : frames)
-    looks.push_back(developed_look(journal.at(f).look, journal.at(f).rendered_look(), cmd.look, cmd.exposure_shift));
+  for (int f : frames) {
+    const farm::JournalFrame& line = journal.at(f);
+    looks.push_back(
+        developed_look(cmd.reset ? line.rendered_look() : line.look, line.rendered_look(), cmd.look, cmd.exposure_shift));
+  }
+  const std::unique_ptr<farm::DirLock> out_lock = cmd.out ? take_out_folder(*cmd.out, cmd.dir, shot) : nullptr;
   double render_seconds = 0.0;
   bool render_recorded = true;
   for (int f : frames) {
@@ -251,8 +288,8 @@ int run_develop(const DevelopCommand& cmd) {
     render_recorded = render_recorded && journal.at(f).cost.recorded();
   }
   const int threads = std::clamp(cmd.threads > 0 ? cmd.threads : farm::usable_cpus(), 1, static_cast<int>(frames.size()));
-  fmt::print(stderr, "develop: {} frame{} of '{}' in {} on {} thread{}{}\n", frames.size(), frames.size() == 1 ? "" : "s",
-             shot, cmd.dir.string(), threads, threads == 1 ? "" : "s",
+  fmt::print(stderr, "develop: {} frame{} of '{}' in {}{} on {} thread{}{}\n", frames.size(), frames.size() == 1 ? "" : "s",
+             shot, cmd.dir.string(), cmd.out ? " into " + cmd.out->string() : "", threads, threads == 1 ? "" : "s",
              looks.front() == looks.back() ? fmt::format(", look: {}", look_text(looks.front()).empty()
                                                                             ? "the paper's (the light as traced)"
                                                                             : look_text(looks.front()))
@@ -267,7 +304,7 @@ int run_develop(const DevelopCommand& cmd) {
   auto work = [&] {
     for (std::size_t k; !stop && (k = next++) < frames.size();) {
       try {
-        store.develop_frame(frames[k], looks[k]);
+        store.develop_frame(frames[k], looks[k], cmd.out);
         ++done;
       } catch (const std::exception& e) {
         std::lock_guard lock(error_mutex);
@@ -297,8 +334,9 @@ int run_develop(const DevelopCommand& cmd) {
     throw std::runtime_error(*error);
   }
   if (interrupted) {
-    fmt::print(stderr, "develop: interrupted by {}: {} of {} frames developed, each whole; the rest keep their PNGs\n",
-               signal_name(*interrupted), done.load(), frames.size());
+    fmt::print(stderr, "develop: interrupted by {}: {} of {} frames developed, each whole; {}\n",
+               signal_name(*interrupted), done.load(), frames.size(),
+               cmd.out ? fmt::format("the rest are not in {} yet", cmd.out->string()) : "the rest keep their PNGs");
     return 128 + *interrupted;
   }
   // What it cost beside what rendering the frames cost: the journal's

@@ -1,7 +1,7 @@
 #pragma once
 // `lightcone develop DIR [--shot NAME] [--frames A:B:S] [--exposure S]
 // [--exposure-shift S] [--view V] [--white-balance K] [--saturation S]
-// [--bloom B] [--bloom-radius R] [--threads N]`: a rendered shot's PNGs
+// [--bloom B] [--bloom-radius R] [--reset] [--out DIR2] [--threads N]`: a rendered shot's PNGs
 // made again from its EXRs through another look, without tracing a ray
 // (docs/light.md, "Develop without re-tracing").  Each frame starts from
 // the look its journal line records (the one its PNG was made with); the
@@ -10,7 +10,9 @@
 // develop run again, after a stop part way or not, gives the same frames);
 // the PNG is replaced atomically and a journal line records the new look,
 // so `encode` and the contact sheet take the developed frames as the
-// render's own.
+// render's own.  --reset starts each frame from the render's own look
+// instead; --out writes the PNGs into another folder and changes nothing
+// of DIR's, so two looks can sit side by side.
 
 #include <filesystem>
 #include <map>
@@ -28,6 +30,8 @@ struct DevelopCommand {
   std::optional<std::string> frames;          // A, A:B or A:B:STEP; default every finished frame
   std::map<std::string, std::string> look;    // a look field of the shot's (look_flags) -> its flag's text
   std::optional<double> exposure_shift;       // stops added to the exposure each frame was rendered with
+  bool reset = false;                         // start from the render's own look, not the last develop's
+  std::optional<std::filesystem::path> out;   // write the PNGs here instead of into `dir`
   int threads = 0;                            // 0: every core
 };
 

@@ -140,10 +140,11 @@ void DurableFile::clear_temporary_name() const {
   // leads to; a name that cannot be removed (another user's in /tmp, a
   // directory) stops the write before anything is written through it.
   if (::unlink(temp_.c_str()) == 0 || errno == ENOENT || errno == ENOTDIR) return;
+  const int err = errno;
   struct stat st {};
   if (::lstat(temp_.c_str(), &st) != 0) return;
   throw std::runtime_error(fmt::format("cannot write {}: its temporary {} is already there and cannot be removed ({})",
-                                       final_.string(), temp_.string(), std::strerror(errno)));
+                                       final_.string(), temp_.string(), std::strerror(err)));
 }
 
 DurableFile::~DurableFile() {

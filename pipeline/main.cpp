@@ -337,6 +337,12 @@ int main(int argc, char** argv) {
                           "Stops added to the exposure each frame was rendered with (its own, its shot's or the "
                           "metered one), never to the last develop's: running it again shifts nothing more")
       ->check(number());
+  develop_cmd->add_flag("--reset", develop.reset,
+                        "Start each frame from the look the render made it with, not the last develop's (with no look "
+                        "flag: the render's PNGs back)");
+  develop_cmd->add_option("--out", develop.out,
+                          "Write the developed PNGs into this folder instead (created if missing), leaving DIR's frames "
+                          "and journal as they are, so two looks sit side by side");
   develop_cmd->add_option("--threads", develop.threads, "Frames developed at once (default: every core)")
       ->check(number(End{1}, End{1024}));
 

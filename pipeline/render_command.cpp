@@ -157,15 +157,17 @@ class WorkerStop {
   bool done_ = false;
 };
 
-// A shot with auto_exposure: each surveyed frame's exposure becomes the
-// metered one plus its own (farm/exposure_meter.hpp), for its PNG and
-// journal line.  The meter sees the whole frame, whatever --region renders.
-void meter_exposures(farm::ShotSurvey& survey, Shot& shot, const RenderSettings& rs, const std::filesystem::path& dir, int threads) {
+// A shot with auto_exposure: each frame to render gets the metered
+// exposure plus its own (farm/exposure_meter.hpp), for its PNG and journal
+// line; only the frames its smoothing reaches are metered.  The meter sees
+// the whole frame, whatever --region renders.
+void meter_exposures(farm::ShotSurvey& survey, Shot& shot, const RenderSettings& rs, const std::filesystem::path& dir,
+                     int threads, const std::vector<int>& todo, const farm::MeterProgress& each) {
   const ImageWindow& w = rs.window;
   const farm::MeterReadings meter = farm::shot_readings(shot, dir, w.windowed() ? w.frame_width : rs.width,
-                                                        w.windowed() ? w.frame_height : rs.height, threads);
+                                                        w.windowed() ? w.frame_height : rs.height, threads, todo, each);
   std::map<int, std::optional<double>> own;
-  for (const auto& [frame, facts] : survey.frames) own[frame] = facts.exposure;
+  for (const int frame : todo) own[frame] = survey.frames.at(frame).exposure;
   for (const auto& [frame, exposure] : farm::auto_exposures(shot.info(), meter, own))
     survey.frames.at(frame).exposure = exposure;
 }
@@ -194,7 +196,19 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
                *cmd.frames, list, job.range->last, job.range->last);
   }
   const ShotInfo& info = job.shot->info();
-  farm::ShotSurvey survey = farm::survey_shot(*job.shot, job.frames);
+  // Every frame asked for is evaluated first (a script error anywhere stops
+  // the render before it starts): ~3 ms a frame, minutes on a long shot, so
+  // said as it goes and stopped by a signal (nothing is written yet).
+  farm::ShotSurvey survey;
+  const auto signalled = [&interrupts] { return interrupts.signal(); };
+  try {
+    farm::StepProgress step("evaluating the frames", job.frames.size(), cmd.progress, signalled);
+    survey = farm::survey_shot(*job.shot, job.frames, [&step](std::size_t done) { step(done); });
+  } catch (const Interrupted& e) {
+    fmt::print(stderr, "render: interrupted by {} while evaluating the frames; nothing was rendered\n",
+               signal_name(e.signal));
+    return 128 + e.signal;
+  }
   check_cameras(survey, job.rs);
   farm::FrameStore store(cmd.out, info.name);
   farm::FrameSettings settings = farm::frame_settings(job.rs);
@@ -221,19 +235,37 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     return 0;
   }
   store.note_inputs(survey.files);
-  if (info.auto_exposure) meter_exposures(survey, *job.shot, job.rs, cmd.out, mpi ? farm::usable_cpus() : threads);
+  // What `lightcone monitor` shows of this run (farm/event_log.hpp), from
+  // before the exposure is metered: a monitor sees the run at once.
+  farm::EventLog events(cmd.out, info.name);
+  events.run_started({.pid = static_cast<long>(::getpid()), .host = farm::host_name(), .ranks = mpi ? mpi->size() : 1,
+                      .threads = threads, .todo = static_cast<int>(plan.todo.size()),
+                      .done_before = static_cast<int>(plan.done.size()), .width = job.rs.width, .height = job.rs.height,
+                      .script = std::filesystem::absolute(cmd.shot).string()});
+  if (info.auto_exposure) {
+    try {
+      farm::StepProgress step("auto exposure: metering", 0, cmd.progress, signalled);
+      meter_exposures(survey, *job.shot, job.rs, cmd.out, mpi ? farm::usable_cpus() : threads, plan.todo,
+                      [&step](std::size_t done, std::size_t total) { step(done, total); });
+    } catch (const Interrupted& e) {
+      events.run_ended("interrupted", 0);
+      fmt::print(stderr,
+                 "render: interrupted by {} while metering the exposure; nothing was rendered (the readings made are "
+                 "kept for the next run)\n",
+                 signal_name(e.signal));
+      return 128 + e.signal;
+    } catch (const std::exception& e) {
+      events.error(e.what());
+      events.run_ended("error", 0);
+      throw;
+    }
+  }
 
   farm::WorkQueue queue(job.rs, job.layout, plan.todo,
                         {.preview_every = job.preview, .max_open_frames = farm::open_frames_for(std::max(threads, 1), job.layout.stripes())});
   // A frame's point stars on as many threads as render it (the MPI
   // master's writers draw four frames at once on a worker's node: one each).
   const int star_threads = mpi ? 1 : threads;
-  // What `lightcone monitor` shows of this run (farm/event_log.hpp).
-  farm::EventLog events(cmd.out, info.name);
-  events.run_started({.pid = static_cast<long>(::getpid()), .host = farm::host_name(), .ranks = mpi ? mpi->size() : 1,
-                      .threads = threads, .todo = static_cast<int>(plan.todo.size()),
-                      .done_before = static_cast<int>(plan.done.size()), .width = job.rs.width, .height = job.rs.height,
-                      .script = std::filesystem::absolute(cmd.shot).string()});
   farm::StoreSink sink(store, survey, info, job.rs, settings, preview_rows(queue), job.shot->asset_dirs(), star_threads,
                        &events);
   farm::Progress progress(farm::progress_style_for(stderr, cmd.progress), cmd.progress);

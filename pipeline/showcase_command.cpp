@@ -132,6 +132,9 @@ std::string size_text(const fs::path& p) {
 void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const InterruptGuard& guard) {
   EncodeOptions o;
   o.fps = frame_rate_near(plan.fps);
+  // The videos, sheets and cards are the showcase folder's own files: a link
+  // planted under one of their names is replaced, never written through.
+  o.output_name = FinalName::own;
   // At least 4 frames: H.264's B-frames make a clip's decode times start up
   // to 2 frames before 0, and they must not reach back into the previous clip.
   const int card_frames = std::max(4, static_cast<int>(std::lround(title_seconds * plan.fps)));
@@ -168,7 +171,7 @@ void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const In
       encode_sequence(seq.files, marked, video, progress_printer(guard, "showcase", "frames"));
     }
     // Thumbnails no larger than the frames.
-    const ContactSheetOptions sheet{4, 4 * std::min(plan.width, 320), 16};
+    const ContactSheetOptions sheet{4, 4 * std::min(plan.width, 320), 16, FinalName::own};
     if (!up_to_date(layout.sheet(s.name), seq.files)) write_contact_sheet(seq, sheet, layout.sheet(s.name));
     card(s.name, s.title);
     film.push_back(video);
@@ -179,7 +182,7 @@ void encode_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const In
   VideoLayout film_layout;
   if (plan.camera == DeliveryCamera::sphere) film_layout.projection = VideoProjection::equirectangular;
   const ConcatResult r =
-      concat_videos(film, layout.film(), progress_printer(guard, "showcase", "clips"), film_layout);
+      concat_videos(film, layout.film(), progress_printer(guard, "showcase", "clips"), film_layout, FinalName::own);
   fmt::print(stderr, "showcase: {}: {} frames {}x{}, {:.1f} s at {:g} fps ({})\n", layout.film().string(), r.frames,
              r.width, r.height, r.seconds, plan.fps, size_text(layout.film()));
 }

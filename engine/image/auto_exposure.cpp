@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "image/grade.hpp"
 
@@ -27,11 +28,11 @@ std::vector<double> metered_exposures(std::span<const double> readings, double l
   std::vector<bool> lit(n, false);
   for (std::size_t i = 0; i < n; ++i) {
     const double r = readings[i];
-    lit[i] = std::isfinite(r) && r > 0.0;
+    lit[i] = lit_reading(r);
     if (lit[i]) stops[i] = std::log2(level / r);
   }
   const long count = static_cast<long>(n);
-  const long reach = smoothing > 0.0 ? static_cast<long>(std::ceil(3.0 * smoothing)) : 0;
+  const long reach = smoothing_reach(smoothing);
   std::vector<double> out(n, 0.0);
   std::vector<bool> placed(n, false);  // whether a lit frame lies within reach
   for (long i = 0; i < count; ++i) {
@@ -72,6 +73,49 @@ std::vector<double> metered_exposures(std::span<const double> readings, double l
     out[k] = smoothed[static_cast<std::size_t>(a < 0 || (b >= 0 && i - b <= a - i) ? b : a)];
   }
   for (double& e : out) e = std::clamp(e, -64.0, 64.0);
+  return out;
+}
+
+std::map<int, double> needed_readings(std::span<const int> frames, int count, double smoothing,
+                                      const std::function<std::vector<double>(const std::vector<int>&)>& take) {
+  const long reach = smoothing_reach(smoothing);
+  std::set<int> wanted;
+  for (const int r : frames)
+    for (long j = std::max(0L, r - reach); j <= std::min<long>(count - 1L, r + reach); ++j) wanted.insert(static_cast<int>(j));
+  std::map<int, double> got;
+  auto take_batch = [&](const std::vector<int>& batch) {
+    const std::vector<double> readings = take(batch);
+    for (std::size_t k = 0; k < batch.size(); ++k) got[batch[k]] = readings.at(k);
+  };
+  take_batch(std::vector<int>(wanted.begin(), wanted.end()));
+  // Out from `from` in direction `step` to the nearest lit frame (or the
+  // shot's end).
+  auto walk = [&](long from, int step) {
+    for (long j = from; j >= 0 && j < count; j += step) {
+      if (!got.count(static_cast<int>(j))) take_batch({static_cast<int>(j)});
+      if (lit_reading(got.at(static_cast<int>(j)))) return;
+    }
+  };
+  for (const int r : frames) {
+    bool lit = false;
+    for (long j = std::max(0L, r - reach); j <= std::min<long>(count - 1L, r + reach) && !lit; ++j)
+      lit = lit_reading(got.at(static_cast<int>(j)));
+    if (lit) continue;
+    walk(r - reach - 1, -1);
+    walk(r + reach + 1, 1);
+  }
+  return got;
+}
+
+std::map<int, double> exposures_from(const std::map<int, double>& readings, std::span<const int> frames, double level,
+                                     double smoothing) {
+  std::map<int, double> out;
+  if (readings.empty()) return out;
+  const int first = readings.begin()->first, last = readings.rbegin()->first;
+  std::vector<double> span(static_cast<std::size_t>(last - first + 1), 0.0);
+  for (const auto& [frame, reading] : readings) span[static_cast<std::size_t>(frame - first)] = reading;
+  const std::vector<double> exposures = metered_exposures(span, level, smoothing);
+  for (const int f : frames) out[f] = exposures.at(static_cast<std::size_t>(f - first));
   return out;
 }
 

@@ -25,16 +25,6 @@ bool is_frame_temporary(const std::string& name, const std::string& shot) {
   return name.rfind(shot + ".", 0) == 0 && is_temporary_name(name);
 }
 
-// Removes temporaries left by a killed render (we hold the lock: nobody
-// else is writing them); a link of such a name is removed itself.
-void remove_temporaries(const fs::path& dir, const std::string& shot) {
-  std::error_code ec;
-  if (!fs::is_directory(fs::symlink_status(dir, ec))) return;  // (a link to a folder elsewhere is not looked into)
-  for (const auto& e : fs::directory_iterator(dir, ec))
-    if ((e.is_symlink(ec) || e.is_regular_file(ec)) && is_frame_temporary(e.path().filename().string(), shot))
-      fs::remove(e.path(), ec);
-}
-
 // Makes the previews' folder `dir` if missing, refusing a link under its
 // name: the previews are the render's own files and go nowhere else.
 void make_preview_dir(const fs::path& dir) {
@@ -83,6 +73,14 @@ std::optional<std::uintmax_t> size_of(const fs::path& p) {
 
 }  // namespace
 
+void remove_frame_temporaries(const fs::path& dir, const std::string& shot) {
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(dir, ec))) return;  // (a link to a folder elsewhere is not looked into)
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if ((e.is_symlink(ec) || e.is_regular_file(ec)) && is_frame_temporary(e.path().filename().string(), shot))
+      fs::remove(e.path(), ec);
+}
+
 FrameStore::FrameStore(fs::path dir, std::string shot, const char* flag) : dir_(std::move(dir)), shot_(std::move(shot)) {
   std::error_code ec;
   const bool made = !fs::exists(fs::symlink_status(dir_, ec));
@@ -92,8 +90,8 @@ FrameStore::FrameStore(fs::path dir, std::string shot, const char* flag) : dir_(
                                          ec ? ec.message() : "a file of that name exists"));
   try {
     lock_ = std::make_unique<DirLock>(dir_, flag);
-    remove_temporaries(dir_, shot_);
-    remove_temporaries(preview_dir(), shot_);
+    remove_frame_temporaries(dir_, shot_);
+    remove_frame_temporaries(preview_dir(), shot_);
     const fs::path file = dir_ / (shot_ + ".journal");
     journal_ = read_journal(file);
     writer_ = std::make_unique<JournalWriter>(file, journal_.valid_bytes);
@@ -163,7 +161,7 @@ void FrameStore::append_frame_line(const JournalFrame& jf) {
   journal_.frames[jf.frame] = jf;
 }
 
-void FrameStore::develop_frame(int frame, const Look& look) {
+void FrameStore::develop_frame(int frame, const Look& look, const std::optional<fs::path>& into) {
   JournalFrame jf;
   {
     std::lock_guard lock(journal_mutex_);
@@ -182,8 +180,9 @@ void FrameStore::develop_frame(int frame, const Look& look) {
                                          "(cut short or replaced)",
                                          exr.string(), *exr_bytes, jf.exr_bytes));
   const FrameImage image = read_exr(exr);
-  const fs::path png = frame_path(dir_, shot_, frame, "png");
-  with_space_hint(dir_, [&] { write_png_file(png, image, look, jf.settings.png_depth); });
+  const fs::path png = frame_path(into ? *into : dir_, shot_, frame, "png");
+  with_space_hint(png.parent_path(), [&] { write_png_file(png, image, look, jf.settings.png_depth); });
+  if (into) return;  // another folder's frame: this folder's journal does not record it
   const auto png_bytes = size_of(png);
   if (!png_bytes) throw std::runtime_error(fmt::format("{} vanished right after it was written", png.string()));
   jf.png_bytes = *png_bytes;

@@ -72,8 +72,10 @@ class FrameStore {
   // made from).  Throws std::runtime_error naming the file when the frame
   // has no journal line, its EXR is missing or not of the size recorded
   // (a half-written or replaced file), or unreadable; nothing is changed
-  // then.  Thread-safe for different frames.
-  void develop_frame(int frame, const Look& look);
+  // then.  Thread-safe for different frames.  With `into` (develop --out)
+  // the PNG goes into that folder instead, under the same name, and nothing
+  // of this folder changes (no PNG, no journal line).
+  void develop_frame(int frame, const Look& look, const std::optional<std::filesystem::path>& into = std::nullopt);
 
   // Writes DIR/preview/<shot>.<NNNN>.png atomically from a frame of which
   // only `rendered` rows are filled: every other row is copied from the
@@ -94,6 +96,12 @@ class FrameStore {
   // Appends `jf` (after any pending input lines) and records it.
   void append_frame_line(const JournalFrame& jf);
 };
+
+// Removes the temporaries of `shot`'s frame files that a killed process
+// left in `dir` (the caller holds the folder's lock: nobody else writes
+// them); a link of such a name is removed itself, and a `dir` that is a
+// link is not looked into.
+void remove_frame_temporaries(const std::filesystem::path& dir, const std::string& shot);
 
 // Rows j of `image` not in `rendered` (sorted, non-empty) copied from the
 // nearest rendered row; the upper one on a tie.  Alpha and layers are

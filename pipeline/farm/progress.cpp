@@ -1,9 +1,13 @@
 #include "farm/progress.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 #include <unistd.h>
+
+#include "interrupt.hpp"
 
 namespace lc::farm {
 
@@ -64,6 +68,31 @@ void Progress::finish() {
   if (drawn_) fmt::print(out_, "\r\x1b[K");
   drawn_ = false;
   std::fflush(out_);
+}
+
+StepProgress::StepProgress(std::string what, std::size_t total, double interval, std::function<int()> signal,
+                           double first, std::FILE* out)
+    : what_(std::move(what)), total_(total), interval_(interval), first_(std::min(first, interval)),
+      signal_(std::move(signal)), out_(out), start_(std::chrono::steady_clock::now()),
+      last_(start_) {}
+
+void StepProgress::operator()(std::size_t done) {
+  if (signal_)
+    if (const int sig = signal_()) throw Interrupted(sig);
+  if (interval_ <= 0) return;
+  const auto now = std::chrono::steady_clock::now();
+  const double due = said_ ? interval_ : first_;
+  if (std::chrono::duration<double>(now - last_).count() < due) return;
+  last_ = now;
+  say(done);
+}
+
+void StepProgress::say(std::size_t done) {
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  fmt::print(out_, "render: {}: {}/{} frames, {:.0f}%, {:.1f} s\n", what_, done, total_,
+             total_ > 0 ? 100.0 * static_cast<double>(done) / static_cast<double>(total_) : 100.0, seconds);
+  std::fflush(out_);
+  said_ = true;
 }
 
 ProgressStyle progress_style_for(std::FILE* out, double interval) {

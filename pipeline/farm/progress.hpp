@@ -4,7 +4,9 @@
 // plain line every few seconds, for logs.  The master alone reports.
 
 #include <chrono>
+#include <cstddef>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 #include "farm/work_queue.hpp"
@@ -37,6 +39,38 @@ class Progress {
   std::FILE* out_;
   std::chrono::steady_clock::time_point start_, last_;
   bool drawn_ = false;
+};
+
+// The progress of a step before the frames render (evaluating the shot's
+// frames, metering its exposure), which takes minutes on a long shot: a
+// plain line "render: <what>: <done>/<total> frames, <p>%, <s> s" on
+// stderr, the first once `first` seconds have passed and then every
+// `interval` seconds (0: none); and a stop at a signal, checked at each
+// step: `signal` (InterruptGuard's) non-zero throws Interrupted
+// (interrupt.hpp).  Not thread-safe.
+class StepProgress {
+ public:
+  StepProgress(std::string what, std::size_t total, double interval, std::function<int()> signal, double first = 2.0,
+               std::FILE* out = stderr);
+  // `done` of the total are done: says so if due; throws Interrupted after
+  // a signal.
+  void operator()(std::size_t done);
+  // The same where the total has grown to `total`.
+  void operator()(std::size_t done, std::size_t total) {
+    total_ = total;
+    (*this)(done);
+  }
+
+ private:
+  // Prints the line for `done` frames.
+  void say(std::size_t done);
+  std::string what_;
+  std::size_t total_;
+  double interval_, first_;
+  std::function<int()> signal_;
+  std::FILE* out_;
+  std::chrono::steady_clock::time_point start_, last_;
+  bool said_ = false;
 };
 
 // Live on a terminal, else plain (quiet when the interval is 0).

@@ -12,7 +12,7 @@ namespace lc::farm {
 
 namespace fs = std::filesystem;
 
-ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
+ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames, const std::function<void(std::size_t)>& each) {
   ShotSurvey out;
   const auto dirs = shot.asset_dirs();
   std::map<int, std::vector<std::string>> sky_files_of;  // frame -> the files its sky reads
@@ -36,6 +36,7 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames) {
     }
     // (A catalogue's own checks are the sky's, made when the scene was read.)
     for (const std::string& file : sky_system_files(fs.sky)) sky_files_of[f].push_back(file);
+    if (each) each(out.frames.size());
   }
   // Script and modules: after evaluating, so modules required inside
   // frame() are included.

@@ -9,6 +9,7 @@
 // rebuilt lightcone resumes an old render as it stands.
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -45,10 +46,13 @@ struct ShotSurvey {
 
 // Evaluates the scene of every listed frame (script only: no worldlines are
 // integrated, no textures decoded), so a script error anywhere stops the
-// render before it starts.  Throws the script's error, or
-// std::invalid_argument for a sky image that cannot be used (naming the
-// shot, frame and why: see resolve_sky_image).
-ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames);
+// render before it starts.  `each(done)`, where given, is called after
+// each frame (progress; it may throw to stop the survey: a signal).
+// Throws the script's error, or std::invalid_argument for a sky image
+// that cannot be used (naming the shot, frame and why: see
+// resolve_sky_image).
+ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames,
+                       const std::function<void(std::size_t done)>& each = {});
 
 // What every MPI rank must agree on before working together: the shot's
 // settings, the render settings, the stripe layout and the content of the

@@ -95,7 +95,7 @@ unsigned int output_tag(const AVOutputFormat* ofmt, const AVCodecParameters& par
 struct Output {
   DurableFile file;
   AVFormatContext* ctx = nullptr;
-  explicit Output(const fs::path& p) : file(p) {}
+  Output(const fs::path& p, FinalName name) : file(p, StaleTemporaries::remove, name) {}
   ~Output() {
     if (ctx) {
       if (ctx->pb) avio_closep(&ctx->pb);
@@ -107,7 +107,7 @@ struct Output {
 }  // namespace
 
 ConcatResult concat_videos(const std::vector<fs::path>& inputs, const fs::path& out, const ProgressFn& progress,
-                           const VideoLayout& layout) {
+                           const VideoLayout& layout, FinalName name) {
   // Inputs: video files in order; output: one file at `out`.  Every input is
   // opened and compared before anything is written.
   if (inputs.empty()) throw std::runtime_error(fmt::format("cannot write {}: no videos to join", out.string()));
@@ -119,7 +119,7 @@ ConcatResult concat_videos(const std::vector<fs::path>& inputs, const fs::path& 
   const Container container = container_for(out, codec);
 
   const std::string where = out.string();
-  Output o(out);
+  Output o(out, name);
   libav::check(avformat_alloc_output_context2(&o.ctx, nullptr, libav::muxer_name(container), o.file.temp_path().c_str()),
                fmt::format("cannot write {}", where));
   AVStream* st = avformat_new_stream(o.ctx, nullptr);

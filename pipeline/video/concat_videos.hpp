@@ -25,8 +25,10 @@ struct ConcatResult {
 // cannot be read, has not exactly one video stream, or differs from the
 // first input (saying in what), or naming `out`; on failure nothing is left
 // under `out`.  `layout` (a 360-degree film's) is written into `out` for
-// players, whatever the inputs carry (title cards carry none).
+// players, whatever the inputs carry (title cards carry none).  `name`:
+// whose name `out` is (DurableFile's FinalName).
 ConcatResult concat_videos(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& out,
-                           const ProgressFn& progress = {}, const VideoLayout& layout = {});
+                           const ProgressFn& progress = {}, const VideoLayout& layout = {},
+                           FinalName name = FinalName::users);
 
 }  // namespace lc

@@ -183,7 +183,7 @@ void write_contact_sheet(const FrameSequence& sequence, const ContactSheetOption
                          const std::filesystem::path& out) {
   // Builds the sheet first (reading every pick), then writes it atomically.
   const FrameImage sheet = make_contact_sheet(sequence, options);
-  DurableFile file(out);
+  DurableFile file(out, StaleTemporaries::remove, options.output_name);
   write_png(file.temp_path(), sheet, file.final_path());
   file.commit();
 }

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "durable_file.hpp"
 #include "image/frame_image.hpp"
 #include "video/frame_sequence.hpp"
 
@@ -18,6 +19,7 @@ struct ContactSheetOptions {
   int columns = 4;    // frames per row
   int width = 1280;   // the sheet's width in pixels; the height follows
   int count = 16;     // frames shown at most (all of them when there are fewer)
+  FinalName output_name = FinalName::users;  // whose name the sheet's file is (DurableFile's FinalName)
 };
 
 // `count` indices spread evenly over 0 .. available-1, the first and the

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "durable_file.hpp"
 #include "image/video_layout.hpp"
 
 namespace lc {
@@ -63,6 +64,9 @@ struct EncodeOptions {
   std::optional<int> crf;        // constant-quality level; unset: default_crf(codec)
   std::string preset;            // speed/quality knob; empty: default_preset(codec)
   VideoLayout layout;            // a 360-degree or stereo video's, written into the container for players
+  // Whose name the output is: the user's (-o), or one lightcone gives it in
+  // a folder it keeps (the showcase's videos), never written through a link.
+  FinalName output_name = FinalName::users;
 };
 
 // Called after each frame is encoded with (frames done, frames in all).  May

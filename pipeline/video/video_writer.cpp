@@ -75,7 +75,8 @@ struct VideoWriter::Impl {
   int frames = 0;
   bool finished = false;
 
-  explicit Impl(const std::filesystem::path& out, int w, int h) : output(out), width(w), height(h) {}
+  Impl(const std::filesystem::path& out, int w, int h, FinalName name)
+      : output(out, StaleTemporaries::remove, name), width(w), height(h) {}
 
   ~Impl() {
     // Frees in reverse order of creation; the temporary file goes with
@@ -116,7 +117,7 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
   if (const auto why = size_refusal(options.codec, width, height))
     throw std::invalid_argument(fmt::format("cannot write {}: {}", out.string(), *why));
   libav::quiet_logs();
-  impl_ = std::make_unique<Impl>(out, width, height);
+  impl_ = std::make_unique<Impl>(out, width, height, options.output_name);
   Impl& m = *impl_;
   const std::string where = m.where();
 

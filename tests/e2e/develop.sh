@@ -19,7 +19,9 @@ FRAMES=0:179:30
 "$LIGHTCONE" render "$FALL" --out all --frames "$FRAMES" "${SMALL[@]}" 2>all.log || fail "render: $(cat all.log)"
 "$LIGHTCONE" render "$FALL" --out alone --frames 120 "${SMALL[@]}" 2>alone.log || fail "alone: $(cat alone.log)"
 cmp -s alone/kerr_fall.0120.png all/kerr_fall.0120.png || fail "frame 120 rendered alone has another PNG"
-cmp -s alone/kerr_fall.meter all/kerr_fall.meter || fail "the meter of a run of one frame differs"
+# ... and metered only what its smoothing (12 frames: 36 either side) reaches.
+grep -q "auto exposure: the readings of frames 84-156 of the shot's 180" alone.log || fail "frame 120's meter: $(cat alone.log)"
+grep -q "auto exposure: 0 readings kept from alone/kerr_fall.meter, 73 metered" alone.log || fail "frame 120's meter: $(cat alone.log)"
 mpi 3 "$LIGHTCONE" render "$FALL" --out mpi --frames "$FRAMES" "${SMALL[@]}" 2>mpi.log || fail "mpirun -n 3: $(cat mpi.log)"
 same_frames all mpi kerr_fall
 # The event log (for `lightcone monitor`) names the run's two workers, their node and threads.
@@ -39,8 +41,8 @@ grep -q "3 more were finished before" resume.log || fail "the resume did not res
 same_frames all resumed kerr_fall
 # The last frame of the fall, from the readings the first run kept.
 "$LIGHTCONE" render "$FALL" --out all --frames 179 "${SMALL[@]}" 2>last.log || fail "render 179: $(cat last.log)"
-grep -q "auto exposure: metering every frame of the shot (180) at 64x36" all.log || fail "no meter pass: $(cat all.log)"
-grep -q "auto exposure: the readings of 180 frames from all/kerr_fall.meter" last.log \
+grep -q "auto exposure: 0 readings kept from all/kerr_fall.meter, 180 metered" all.log || fail "no meter pass: $(cat all.log)"
+grep -q "auto exposure: 37 readings kept from all/kerr_fall.meter, 0 metered" last.log \
   || fail "the second run metered again: $(cat last.log)"
 # The light climbs ~3 stops over the fall (the EXR's 99th percentile); the
 # PNG's stays within 0.70 to 0.90 of the display's white (linear), where a
@@ -62,7 +64,7 @@ PY
 mkdir -p cut
 head -c 100 all/kerr_fall.meter >cut/kerr_fall.meter
 "$LIGHTCONE" render "$FALL" --out cut --frames 120 "${SMALL[@]}" 2>cut.log || fail "cut meter: $(cat cut.log)"
-grep -q "metering every frame" cut.log || fail "a cut meter file was trusted: $(cat cut.log)"
+grep -q "0 readings kept from cut/kerr_fall.meter, 73 metered" cut.log || fail "a cut meter file was trusted: $(cat cut.log)"
 cmp -s cut/kerr_fall.0120.png all/kerr_fall.0120.png || fail "after a cut meter file, frame 120 differs"
 # The journal records each frame's look, with its metered exposure.
 grep -q ' look=exposure:-3[0-9.]*,view:gamut_safe,white_balance:5000' all/kerr_fall.journal \
@@ -121,6 +123,28 @@ PY
 # A render resumed after develop keeps the developed frames (done, not damaged).
 "$LIGHTCONE" render "$FALL" --out all --frames "$FRAMES" "${SMALL[@]}" 2>again.log || fail "again: $(cat again.log)"
 grep -q "nothing to render" again.log || fail "developed frames were rendered again: $(cat again.log)"
+
+# --- develop --out: the developed PNGs in a folder of their own, the
+# render's frames and journal untouched (two looks side by side); the same
+# PNGs a develop in place makes.  --reset starts from the render's own
+# look (the last develop's is dropped); alone, it gives the render's PNGs back.
+cp -r all all_before
+"$LIGHTCONE" develop all --out side --reset --view filmic --exposure-shift 1 2>side.log || fail "develop --out: $(cat side.log)"
+[ "$(ls side | grep -c '^kerr_fall\.[0-9]\{4\}\.png$')" = 7 ] || fail "develop --out made no 7 PNGs: $(ls side)"
+[ -z "$(ls side | grep -v '^kerr_fall\.[0-9]\{4\}\.png$')" ] || fail "develop --out left more than PNGs: $(ls side)"
+same_frames all_before all kerr_fall
+cmp -s all_before/kerr_fall.journal all/kerr_fall.journal || fail "develop --out changed the render's journal"
+"$LIGHTCONE" develop stopped --reset --view filmic --exposure-shift 1 2>in_place.log || fail "develop in place: $(cat in_place.log)"
+for f in side/*.png; do cmp -s "$f" "stopped/$(basename "$f")" || fail "develop --out's $(basename "$f") differs from develop's in place"; done
+"$LIGHTCONE" encode side -o side.mp4 2>side_encode.log || fail "encode of develop --out's folder: $(cat side_encode.log)"
+check_probe side.mp4 nb_read_frames=7
+"$LIGHTCONE" develop stopped --reset 2>reset.log || fail "develop --reset: $(cat reset.log)"
+same_frames original stopped kerr_fall
+cp -r original original_before
+expect_error out_is_dir "--out all: the render's own folder" -- "$LIGHTCONE" develop all --out all --view filmic
+expect_error out_is_render "--out original: it holds a render of 'kerr_fall'" -- "$LIGHTCONE" develop all --out original --view filmic
+same_frames all_before all kerr_fall
+same_frames original_before original kerr_fall
 
 # --- Bad input: a clear error, nothing changed.
 mkdir -p empty

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <map>
 
 #include "image/auto_exposure.hpp"
 
@@ -71,6 +73,51 @@ TEST(AutoExposure, FramesWithNothingLitTakeTheirNeighboursExposure) {
   EXPECT_EQ(metered_exposures(std::vector<double>{0.0, 0.0}, 1.0, 3.0), (std::vector<double>{0.0, 0.0}));
   // The shot's range bounds it.
   EXPECT_EQ(metered_exposures(std::vector<double>{1e-30}, 1.0, 0.0)[0], 64.0);
+}
+
+// Metering only the frames the exposures of a few need (issue 43, item 17)
+// gives each exactly what metering the whole shot gives it: over shots with
+// light that climbs and flickers, dark stretches longer than the
+// smoothing's reach (where a frame takes a placed neighbour's fit, however
+// far), NaN, a shot dark throughout, every smoothing from none to wider
+// than the shot, and single frames, runs, steps and scattered sets.  Each
+// frame is taken once, and a lit shot's few frames take a few dozen.
+TEST(AutoExposure, TheNeededReadingsGiveTheWholeShotsExposuresToTheBit) {
+  const int count = 300;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::vector<double>> shots;
+  std::vector<double> lit(count), dark_gaps(count), dark(count, 0.0), scarce(count, 0.0);
+  for (int i = 0; i < count; ++i) {
+    lit[i] = std::exp(0.01 * i) * (1.0 + 0.2 * std::sin(1.7 * i));
+    dark_gaps[i] = (i % 100 < 55) ? 0.0 : (i % 7 == 0 ? nan : lit[i]);
+  }
+  scarce[40] = 2.0, scarce[250] = 0.5;
+  shots = {lit, dark_gaps, dark, scarce};
+  const std::vector<std::vector<int>> asks = {
+      {0}, {120}, {299}, {10, 11, 12}, {0, 60, 120, 180, 240}, {3, 77, 150, 151, 298}, {45, 260}, {0, 299}};
+  for (std::size_t s = 0; s < shots.size(); ++s)
+    for (const double smoothing : {0.0, 1.0, 2.5, 12.0, 150.0}) {
+      const std::vector<double> whole = metered_exposures(shots[s], 1.0, smoothing);
+      for (const auto& frames : asks) {
+        std::map<int, int> taken;
+        const auto readings = needed_readings(frames, count, smoothing, [&](const std::vector<int>& batch) {
+          std::vector<double> out;
+          for (int f : batch) {
+            ++taken[f];
+            out.push_back(shots[s][static_cast<std::size_t>(f)]);
+          }
+          return out;
+        });
+        for (const auto& [f, n] : taken) EXPECT_EQ(n, 1) << "frame " << f << " taken twice";
+        const auto got = exposures_from(readings, frames, 1.0, smoothing);
+        for (int f : frames) {
+          const double want = whole[static_cast<std::size_t>(f)];
+          EXPECT_EQ(std::memcmp(&got.at(f), &want, sizeof want), 0)
+              << "shot " << s << ", smoothing " << smoothing << ", frame " << f << ": " << got.at(f) << " vs " << want;
+        }
+        if (s == 0 && smoothing == 12.0 && frames.size() == 1) EXPECT_LE(readings.size(), 73u);
+      }
+    }
 }
 
 }  // namespace

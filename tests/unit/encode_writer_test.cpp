@@ -7,12 +7,18 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "scratch_dir.hpp"
+#include "tiny_frame.hpp"
 #include "test_errors.hpp"
+#include "image/image_io.hpp"
+#include "video/concat_videos.hpp"
+#include "video/contact_sheet.hpp"
 #include "video/encode_options.hpp"
 #include "video/encode_sequence.hpp"
 #include "video/video_writer.hpp"
@@ -195,6 +201,40 @@ TEST(encode_writer, StillHoldsForTheFramesAsked) {
   EXPECT_DOUBLE_EQ(r.seconds, 5.0 / 30.0);
   EXPECT_EQ(calls, 5);
   EXPECT_EQ(last_total, 5);
+}
+
+// The showcase's videos and sheets are its folder's own files (issue 43):
+// a link planted under one of their names is replaced, never written
+// through; a user's -o still writes through a link, as a shell's `>`.
+TEST(encode_writer, AnOwnNameIsReplacedNotWrittenThroughALink) {
+  ScratchDir d;
+  std::ofstream(d / "outside.txt") << "not lightcone's";
+  const auto outside_unchanged = [&] {
+    std::ifstream in(d / "outside.txt");
+    return std::string(std::istreambuf_iterator<char>(in), {}) == "not lightcone's";
+  };
+  fs::create_symlink(d / "outside.txt", d / "clip.mp4");
+  lc::EncodeOptions own;
+  own.output_name = lc::FinalName::own;
+  lc::encode_still(lc::Rgb8Image::filled(16, 8, 200, 0, 0), 4, own, d / "clip.mp4");
+  EXPECT_TRUE(outside_unchanged());
+  EXPECT_FALSE(fs::is_symlink(d / "clip.mp4"));
+  EXPECT_GT(fs::file_size(d / "clip.mp4"), 100u);
+  fs::create_symlink(d / "outside.txt", d / "film.mp4");
+  lc::concat_videos({d / "clip.mp4", d / "clip.mp4"}, d / "film.mp4", {}, {}, lc::FinalName::own);
+  EXPECT_TRUE(outside_unchanged());
+  EXPECT_FALSE(fs::is_symlink(d / "film.mp4"));
+  lc::FrameSequence seq;
+  seq.shot = "s";
+  for (int f = 0; f < 2; ++f) {
+    seq.frames.push_back(f);
+    seq.files.push_back(d / ("s.000" + std::to_string(f) + ".png"));
+    lc::write_png(seq.files.back(), lc::test::tiny_frame());
+  }
+  fs::create_symlink(d / "outside.txt", d / "s.sheet.png");
+  lc::write_contact_sheet(seq, {2, 64, 16, lc::FinalName::own}, d / "s.sheet.png");
+  EXPECT_TRUE(outside_unchanged());
+  EXPECT_FALSE(fs::is_symlink(d / "s.sheet.png"));
 }
 
 TEST(encode_writer, ProgressMayAbandonTheEncoding) {
