@@ -60,6 +60,7 @@ struct HeadWait {
 struct Pending {
   std::thread worker;
   monitor::Reply reply;
+  std::string range;  // the request's Range header
   std::atomic<bool> done{false};
 };
 
@@ -67,7 +68,8 @@ struct Pending {
 // is a GET or HEAD without a body (anything else is refused before a byte
 // of it is read), each connection's memory and time are bounded, and slow
 // clients hold no thread (an internal epoll thread pool).  Range requests:
-// one range is ignored (the whole answer, 200); several are refused (416).
+// one range is answered 206 with that part, several are refused (416)
+// (monitor::with_range).
 class Server {
  public:
   // Inputs: the API (outliving the server), the address and port (0: any
@@ -102,6 +104,7 @@ class Server {
   ~Server() {
     {
       std::unique_lock lock(mutex_);
+      closing_ = true;  // no trace is suspended from now on
       traces_done_.wait(lock, [this] { return traces_ == 0; });
       stopping_ = true;
     }
@@ -184,6 +187,11 @@ class Server {
   // answer of the request on `c`; libmicrohttpd's verdict.
   static MHD_Result queue(MHD_Connection* c, const monitor::Reply& reply,
                           const std::map<std::string, std::string>& extra = {}) {
+    return queue(c, monitor::RangedReply{reply, ""}, extra);
+  }
+  static MHD_Result queue(MHD_Connection* c, const monitor::RangedReply& ranged,
+                          const std::map<std::string, std::string>& extra = {}) {
+    const monitor::Reply& reply = ranged.reply;
     // The body is copied into a buffer the response owns.
     auto* body = new std::string(reply.body);
     MHD_Response* response = MHD_create_response_from_buffer_with_free_callback_cls(
@@ -195,6 +203,9 @@ class Server {
     MHD_add_response_header(response, MHD_HTTP_HEADER_CONTENT_TYPE, reply.content_type.c_str());
     MHD_add_response_header(response, MHD_HTTP_HEADER_CACHE_CONTROL, "no-store");
     MHD_add_response_header(response, "X-Content-Type-Options", "nosniff");
+    MHD_add_response_header(response, MHD_HTTP_HEADER_ACCEPT_RANGES, "bytes");
+    if (!ranged.content_range.empty())
+      MHD_add_response_header(response, MHD_HTTP_HEADER_CONTENT_RANGE, ranged.content_range.c_str());
     for (const auto& [name, value] : extra) MHD_add_response_header(response, name.c_str(), value.c_str());
     const MHD_Result queued = MHD_queue_response(c, static_cast<unsigned>(reply.status), response);
     MHD_destroy_response(response);
@@ -227,8 +238,9 @@ class Server {
         return MHD_YES;
       }
       pending->worker.join();
-      return queue(c, pending->reply, pending->reply.status == 429 ? std::map<std::string, std::string>{{"Retry-After", "1"}}
-                                                                  : std::map<std::string, std::string>{});
+      const bool busy = pending->reply.status == 429;
+      return queue(c, monitor::with_range(pending->reply, pending->range),
+                   busy ? std::map<std::string, std::string>{{"Retry-After", "1"}} : std::map<std::string, std::string>{});
     }
     self->set_waiting(c, false);
     const std::string verb = method;
@@ -238,20 +250,23 @@ class Server {
         (!header(c, MHD_HTTP_HEADER_CONTENT_LENGTH).empty() && header(c, MHD_HTTP_HEADER_CONTENT_LENGTH) != "0") ||
         *upload_size != 0)
       return queue(c, monitor::error_reply(413, "the monitor takes no request body"));
-    if (header(c, MHD_HTTP_HEADER_RANGE).find(',') != std::string::npos)
+    const std::string range = header(c, MHD_HTTP_HEADER_RANGE);
+    if (range.find(',') != std::string::npos)  // refused before any work is done for it
       return queue(c, monitor::error_reply(416, "several ranges in one request are not served"));
     monitor::Query query;
     MHD_get_connection_values(c, MHD_GET_ARGUMENT_KIND, &Server::add_argument, &query);
     const std::string path = url ? url : "";
-    if (path != "/api/trace") return queue(c, self->api_.get(path, query));
+    if (path != "/api/trace") return queue(c, monitor::with_range(self->api_.get(path, query), range));
     // A trace takes up to a minute: on a thread of its own, the connection
     // suspended meanwhile (its polling thread serves the others).
-    auto* pending = new Pending;
-    *req_cls = pending;
     {
       const std::lock_guard lock(self->mutex_);
+      if (self->closing_) return queue(c, monitor::error_reply(503, "the monitor is stopping"));
       ++self->traces_;
     }
+    auto* pending = new Pending;
+    pending->range = range;
+    *req_cls = pending;
     MHD_suspend_connection(c);
     pending->worker = std::thread([self, c, pending, query = std::move(query)] {
       pending->reply = self->api_.get("/api/trace", query);
@@ -271,6 +286,7 @@ class Server {
   std::map<HeadWait*, std::unique_ptr<HeadWait>> waits_;
   int traces_ = 0;
   bool stopping_ = false;
+  bool closing_ = false;  // stopping: traces refused (a suspended connection must not outlive the daemon)
   std::condition_variable traces_done_, watch_;
   std::thread watchman_;
 };

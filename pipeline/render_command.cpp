@@ -241,7 +241,8 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   events.run_started({.pid = static_cast<long>(::getpid()), .host = farm::host_name(), .ranks = mpi ? mpi->size() : 1,
                       .threads = threads, .todo = static_cast<int>(plan.todo.size()),
                       .done_before = static_cast<int>(plan.done.size()), .width = job.rs.width, .height = job.rs.height,
-                      .script = std::filesystem::absolute(cmd.shot).string()});
+                      .script = std::filesystem::absolute(cmd.shot).string(), .command = farm::own_command_line(),
+                      .cwd = std::filesystem::current_path().string()});
   if (info.auto_exposure) {
     try {
       farm::StepProgress step("auto exposure: metering", 0, cmd.progress, signalled);

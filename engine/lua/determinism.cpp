@@ -319,6 +319,17 @@ int format_args(lua_State* L) {
 constexpr const char* kPrelude = R"lua(
 local tostring_builtin, identity_name, format_builtin, format_args, pairs = ...
 local type, error = type, error
+local setmetatable_builtin, rawget = setmetatable, rawget
+-- What a weak table keeps depends on when the collector runs, and that on
+-- how the state's tables grew (its hash seed): refused, like address order.
+function setmetatable(t, mt)
+  if type(mt) == "table" and rawget(mt, "__mode") ~= nil then
+    error("setmetatable: weak tables (a metatable with __mode) are refused: what they keep depends on when the "
+          .. "garbage collector runs, which differs between runs; the sandbox keeps every frame the same "
+          .. "(docs/shots.md): keep the values in an ordinary table", 2)
+  end
+  return setmetatable_builtin(t, mt)
+end
 function tostring(...)
   local name = identity_name(...)
   if name ~= nil then return name end

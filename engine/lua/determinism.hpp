@@ -22,6 +22,11 @@
 //   string.format's %s does the same, and %p gives "#N" (for a string
 //   too; NULL for a number, boolean or nil, as LuaJIT's).
 //
+// - setmetatable refuses a metatable with __mode: what a weak table keeps
+//   depends on when the collector runs, which follows the state's seed.
+// Left as Lua leaves it: `#` of a table with holes (nil inside its array)
+// is any border, and which one can follow the seed; docs/shots.md says so.
+//
 // tostring stays a Lua function for the reason library_guards.hpp gives
 // (`__tostring = tostring` must run instructions, so the time limit sees
 // it).

@@ -54,6 +54,9 @@ DirLock::DirLock(const std::filesystem::path& dir, const char* flag) : file_(dir
       const int err = errno;
       const std::string who = holder(fd);
       ::close(fd);
+      // A lock file this call made and cannot use goes (NFS without lockd:
+      // ENOLCK); one that is held is another render's.
+      if (err != EWOULDBLOCK && own.created) ::unlink(file_.c_str());
       if (err == EWOULDBLOCK)
         throw refuse(fmt::format("another lightcone render is writing there ({}); wait for it to finish or stop it — "
                                  "a stopped render resumes where it left off",

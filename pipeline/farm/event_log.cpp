@@ -3,7 +3,9 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <fstream>
 #include <istream>
+#include <sstream>
 
 #include <ext/stdio_filebuf.h>
 
@@ -138,10 +140,38 @@ void EventLog::append(const std::string& content) {
   }
 }
 
+namespace {
+
+// The run line's cwd and command fields (" cwd=... command=..."), "" when
+// the command line is unknown or too long.
+std::string resume_fields(const RunStart& r) {
+  if (r.command.empty()) return "";
+  std::string joined;
+  for (std::size_t k = 0; k < r.command.size(); ++k) joined += (k ? std::string(1, '\0') : "") + r.command[k];
+  std::string fields = fmt::format(" cwd={} command={}", percent_encode(r.cwd), percent_encode(joined));
+  // A command line so long that the run line would pass what a reader
+  // takes is left out: the run line matters more.
+  return fields.size() > max_event_line / 2 ? "" : fields;
+}
+
+}  // namespace
+
+std::vector<std::string> own_command_line() {
+  // NUL-terminated arguments; bounded, as Linux bounds a command line.
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::vector<std::string> out;
+  std::size_t bytes = 0;
+  for (std::string arg; std::getline(in, arg, '\0') && bytes < (1u << 20);) {
+    bytes += arg.size() + 1;
+    out.push_back(std::move(arg));
+  }
+  return out;
+}
+
 void EventLog::run_started(const RunStart& r) {
-  append(fmt::format("t={:.3f} event=run pid={} host={} ranks={} threads={} todo={} done={} size={}x{} script={}",
+  append(fmt::format("t={:.3f} event=run pid={} host={} ranks={} threads={} todo={} done={} size={}x{} script={}{}",
                      now_seconds(), r.pid, percent_encode(r.host), r.ranks, r.threads, r.todo, r.done_before, r.width,
-                     r.height, percent_encode(r.script)));
+                     r.height, percent_encode(r.script), resume_fields(r)));
 }
 
 void EventLog::rank_joined(int rank, const std::string& host, int threads) {
@@ -222,6 +252,14 @@ EventSummary read_events(const fs::path& file, std::size_t keep) {
   if (own.fd < 0) return s;
   __gnu_cxx::stdio_filebuf<char> buffer(own.fd, std::ios::in | std::ios::binary);  // closes the descriptor
   std::istream in(&buffer);
+  return read_events(in, keep);
+}
+
+EventSummary read_events(std::istream& in, std::size_t keep) {
+  // Input: the log's lines from its start, or from any line's start (the
+  // monitor reads what was appended since it last read: its first line is
+  // then an event, read as one).
+  EventSummary s;
   LineReader lines(in, max_event_line);
   bool first = true;
   while (const auto line = lines.next()) {
@@ -254,11 +292,16 @@ EventSummary read_events(const fs::path& file, std::size_t keep) {
       const std::string size = e->fields.count("size") ? e->fields.at("size") : "";
       std::sscanf(size.c_str(), "%dx%d", &r.width, &r.height);
       r.script = e->fields.count("script") ? e->fields.at("script") : "";
+      r.cwd = e->fields.count("cwd") ? e->fields.at("cwd") : "";
+      if (e->fields.count("command")) {
+        std::istringstream args(e->fields.at("command"));
+        for (std::string arg; std::getline(args, arg, '\0');) r.command.push_back(std::move(arg));
+      }
       s.run = r;
     } else if (e->kind == "rank") {
-      if (s.ranks.size() < 4096) s.ranks.push_back(*e);
+      if (s.ranks.size() < max_summary_ranks) s.ranks.push_back(*e);
     } else if (e->kind == "lost") {
-      if (s.lost.size() < 4096) s.lost.push_back(static_cast<int>(field_long(*e, "rank")));
+      if (s.lost.size() < max_summary_ranks) s.lost.push_back(static_cast<int>(field_long(*e, "rank")));
     } else if (e->kind == "progress") {
       s.progress = *e;
     } else if (e->kind == "frame") {

@@ -9,6 +9,7 @@
 // written while a monitor reads, is skipped.  Lines:
 //   lightcone-events 1
 //   t=<unix s> event=run pid=<n> host=<name> ranks=<n> threads=<n> todo=<n> done=<n> size=<W>x<H> script=<path>
+//              [cwd=<path> command=<argv joined by NUL>]            (what resumes the run)
 //   t=<unix s> event=rank rank=<n> host=<name> threads=<n>          (an MPI worker joined)
 //   t=<unix s> event=progress stored=<n> total=<n> rows=<done>/<all> rays=<n> core_seconds=<s> open=<f>,<f>,...
 //              [held=<rank>:<sets>:<f>+<f>...,... [held_all=0]]      (an MPI farm: the workers holding sets;
@@ -25,6 +26,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <istream>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -46,7 +48,15 @@ struct RunStart {
   int todo = 0, done_before = 0;
   int width = 0, height = 0;
   std::string script;  // the shot script, absolute (the monitor's pixel inspector traces with it)
+  // The render's command line (its argv) and the folder it ran in: what
+  // resumes it, shown by the monitor to copy.  Empty in older logs.
+  std::vector<std::string> command;
+  std::string cwd;
 };
+
+// This process's command line, as Linux keeps it (/proc/self/cmdline);
+// empty where it cannot be read.
+std::vector<std::string> own_command_line();
 
 class EventLog {
  public:
@@ -116,6 +126,9 @@ struct Event {
   std::map<std::string, std::string> fields;  // the rest, decoded
 };
 
+// The most workers (rank lines) and lost workers a summary holds.
+inline constexpr std::size_t max_summary_ranks = 4096;
+
 // What a monitor needs of an event log: the latest run and what happened
 // in it.  Read a line at a time in bounded memory (a 100,000-frame film's
 // log is read whole, but only the latest run's ranks, last progress and the
@@ -134,6 +147,8 @@ struct EventSummary {
 // A log that is missing, or no regular file (a link, a FIFO), reads as
 // an empty summary.
 EventSummary read_events(const std::filesystem::path& file, std::size_t keep = 200);
+// The same of a log's text (or of the lines appended to it since a read).
+EventSummary read_events(std::istream& in, std::size_t keep = 200);
 
 // Text as an event field's value: bytes other than letters, digits and
 // "-._~/:,+" as %XX; and back (a malformed escape is kept as it is).

@@ -172,7 +172,13 @@ MeterReadings shot_readings(Shot& shot, const fs::path& dir, int frame_width, in
   try {
     m.readings = needed_readings(frames, count, shot.info().auto_exposure_smoothing, take);
   } catch (...) {
-    keep();
+    // The readings so far are kept if they can be; a failure to keep them
+    // (a full disk) must not hide why the pass stopped (an interrupt).
+    try {
+      keep();
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "render: auto exposure: the readings so far could not be kept: {}\n", e.what());
+    }
     throw;
   }
   keep();

@@ -31,24 +31,28 @@ FolderFile::FolderFile(const std::filesystem::path& path) {
     return;
   }
   size_ = static_cast<std::uintmax_t>(st.st_size);
+  device_ = static_cast<std::uint64_t>(st.st_dev);
+  inode_ = static_cast<std::uint64_t>(st.st_ino);
+  modified_ns_ = static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1'000'000'000 + st.st_mtim.tv_nsec;
 }
 
 FolderFile::~FolderFile() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-std::filesystem::path FolderFile::self_path() const { return fmt::format("/proc/self/fd/{}", fd_); }
+std::string FolderFile::head(std::size_t bytes) const { return read_at(0, bytes); }
 
-std::string FolderFile::head(std::size_t bytes) const {
+std::string FolderFile::read_at(std::uintmax_t offset, std::size_t bytes) const {
   // Input: an opened file; pread, so that the offset of the descriptor
-  // (which self_path's readers do not share anyway) stays at 0.  No more
+  // stays at 0.  No more
   // than the size fstat gave is read: a file growing meanwhile is read as
   // it was then.
-  if (bytes > size_) bytes = static_cast<std::size_t>(size_);
+  if (offset >= size_) return {};
+  if (bytes > size_ - offset) bytes = static_cast<std::size_t>(size_ - offset);
   std::string out(bytes, '\0');
   std::size_t got = 0;
   while (got < bytes) {
-    const ssize_t n = ::pread(fd_, out.data() + got, bytes - got, static_cast<off_t>(got));
+    const ssize_t n = ::pread(fd_, out.data() + got, bytes - got, static_cast<off_t>(offset + got));
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw std::runtime_error(fmt::format("read error: {}", std::strerror(errno)));
     if (n == 0) break;

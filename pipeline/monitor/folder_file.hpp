@@ -29,16 +29,20 @@ class FolderFile {
   bool refused() const { return fd_ < 0 && !missing_; }
   const std::string& why() const { return why_; }
   std::uintmax_t size() const { return size_; }
-
-  // A path naming the open file itself (/proc/self/fd/N), for readers that
-  // take a path (the farm's): opening it opens this very file, whatever is
-  // at its name by then.  Only while this object lives, and only if opened.
-  std::filesystem::path self_path() const;
+  // What the open file is, and when it last changed (as fstat said when it
+  // was opened): the journal cache's key (monitor/journal_cache.hpp).
+  std::uint64_t device() const { return device_; }
+  std::uint64_t inode() const { return inode_; }
+  std::int64_t modified_ns() const { return modified_ns_; }
 
   // The file's first `bytes` bytes (fewer if it is shorter; a file growing
   // meanwhile is read up to the size it had when opened).  Throws
   // std::runtime_error on a read error.
   std::string head(std::size_t bytes) const;
+
+  // Up to `bytes` bytes from `offset` (fewer past the size it had when
+  // opened).  Throws std::runtime_error on a read error.
+  std::string read_at(std::uintmax_t offset, std::size_t bytes) const;
 
   // The whole file.  Throws std::runtime_error if it is longer than
   // `max_bytes` or on a read error.
@@ -49,6 +53,8 @@ class FolderFile {
   bool missing_ = false;
   std::string why_;
   std::uintmax_t size_ = 0;
+  std::uint64_t device_ = 0, inode_ = 0;
+  std::int64_t modified_ns_ = 0;
 };
 
 }  // namespace lc::monitor

@@ -1,12 +1,15 @@
 #include "monitor/monitor_api.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
 
 #include <unistd.h>
 
@@ -73,9 +76,21 @@ std::string json_list(const std::vector<int>& v) {
   return out + "]";
 }
 
+std::string shell_word(const std::string& word);
+
+// An event as JSON; a run's command (its arguments joined by NUL) as the
+// shell line of its words, as the page shows it.
 std::string event_json(const farm::Event& e) {
   std::string out = fmt::format("{{\"t\": {}, \"event\": {}", json_number(e.time), json_text(e.kind));
-  for (const auto& [k, v] : e.fields) out += fmt::format(", {}: {}", json_text(k), json_text(v));
+  for (const auto& [k, v] : e.fields) {
+    std::string text = v;
+    if (e.kind == "run" && k == "command") {
+      text.clear();
+      std::istringstream args(v);
+      for (std::string arg; std::getline(args, arg, '\0');) text += (text.empty() ? "" : " ") + shell_word(arg);
+    }
+    out += fmt::format(", {}: {}", json_text(k), json_text(text));
+  }
   return out + "}";
 }
 
@@ -94,11 +109,12 @@ std::string read_file(const fs::path& p) {
 // The journal of `shot` in `dir` (canonical), read only if it is a regular
 // file of the folder that begins as lightcone's journals do: a link, a FIFO,
 // a device or someone else's file is refused without a word of what it
-// holds.  No journal: an empty one.
-farm::JournalContents journal_of(const fs::path& dir, const std::string& shot) {
+// holds.  No journal: an empty one.  Parsed through `cache`: only what was
+// appended since the last request is read.
+std::shared_ptr<const farm::JournalContents> journal_of(JournalCache& cache, const fs::path& dir, const std::string& shot) {
   const std::string name = shot + ".journal";
   const FolderFile file(dir / name);
-  if (file.missing()) return {};
+  if (file.missing()) return std::make_shared<const farm::JournalContents>();
   if (file.refused()) throw BadRequest(403, fmt::format("{} {}", name, file.why()));
   // A journal cut short in its first line (a crash as it was created) is a
   // prefix of the header; anything else is not lightcone's.
@@ -107,26 +123,102 @@ farm::JournalContents journal_of(const fs::path& dir, const std::string& shot) {
   if (header.compare(0, head.size(), head) != 0)
     throw BadRequest(422, fmt::format("{} is not a lightcone journal: not read", name));
   try {
-    return farm::read_journal(file.self_path());
+    return cache.read(file, (dir / name).string());
   } catch (const std::exception&) {
     throw std::runtime_error(fmt::format("cannot read {}", name));
   }
 }
 
 // The event log of `shot` in `dir`, on the same terms as journal_of (its
-// lines that fail their check are only counted, never shown).
-farm::EventSummary events_of(const fs::path& dir, const std::string& shot, std::size_t keep) {
+// lines that fail their check are only counted, never shown): the latest
+// run and its last EventFormat::keep events.
+std::shared_ptr<const farm::EventSummary> events_of(EventCache& cache, const fs::path& dir, const std::string& shot) {
   const fs::path path = farm::EventLog::file_of(dir, shot);
   const FolderFile file(path);
-  if (file.missing()) return {};
+  if (file.missing()) return std::make_shared<const farm::EventSummary>();
   if (file.refused()) throw BadRequest(403, fmt::format("{} {}", path.filename().string(), file.why()));
-  return farm::read_events(file.self_path(), keep);
+  try {
+    return cache.read(file, path.string());
+  } catch (const std::exception&) {
+    throw std::runtime_error(fmt::format("cannot read {}", path.filename().string()));
+  }
+}
+
+// `word` as one word of a POSIX shell's command line: as it is when it
+// holds nothing the shell reads specially, else in single quotes.
+std::string shell_word(const std::string& word) {
+  const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](unsigned char ch) {
+    return std::isalnum(ch) || std::string_view("_./=:,+-@%").find(static_cast<char>(ch)) != std::string_view::npos;
+  });
+  if (plain) return word;
+  std::string out = "'";
+  for (char ch : word) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return out + "'";
+}
+
+// The command that resumes the run `r` (the same command in the same
+// folder: docs/monitor.md), as JSON; null when its log does not say (an
+// older lightcone).  An MPI run's launcher is not in its command line:
+// `mpirun -n <ranks>` stands for it.
+std::string resume_json(const farm::RunStart& r) {
+  if (r.command.empty()) return "null";
+  std::string line = "cd " + shell_word(r.cwd.empty() ? "." : r.cwd) + " &&";
+  if (r.ranks > 1) line += fmt::format(" mpirun -n {}", r.ranks);
+  for (const std::string& arg : r.command) line += " " + shell_word(arg);
+  return json_text(line);
 }
 
 }  // namespace
 
 Reply error_reply(int status, const std::string& message) {
   return {status, "application/json", fmt::format("{{\"error\": {}}}\n", json_text(message))};
+}
+
+RangedReply with_range(Reply reply, const std::string& range) {
+  const auto trim = [](std::string_view v) {
+    while (!v.empty() && (v.front() == ' ' || v.front() == '\t')) v.remove_prefix(1);
+    while (!v.empty() && (v.back() == ' ' || v.back() == '\t')) v.remove_suffix(1);
+    return v;
+  };
+  std::string_view r = trim(range);
+  if (reply.status != 200 || r.substr(0, 6) != "bytes=") return {std::move(reply), ""};
+  r = trim(r.substr(6));
+  const std::uint64_t size = reply.body.size();
+  const auto refuse = [&](const std::string& why) {
+    return RangedReply{error_reply(416, why), fmt::format("bytes */{}", size)};
+  };
+  if (r.find(',') != std::string_view::npos) return refuse("several ranges in one request are not served");
+  const std::size_t dash = r.find('-');
+  if (dash == std::string_view::npos) return {std::move(reply), ""};
+  // A number of the header; past 2^64: the largest (a range that far starts
+  // past any body, or ends at its end).  nullopt: not a number.
+  const auto number = [&](std::string_view v) -> std::optional<std::uint64_t> {
+    v = trim(v);
+    std::uint64_t n = 0;
+    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+    if (v.empty() || end != v.data() + v.size()) return std::nullopt;
+    return ec == std::errc::result_out_of_range ? UINT64_MAX : n;
+  };
+  std::uint64_t first = 0, last = 0;
+  if (trim(r.substr(0, dash)).empty()) {  // the last N bytes
+    const auto n = number(r.substr(dash + 1));
+    if (!n) return {std::move(reply), ""};
+    if (*n == 0 || size == 0) return refuse("the range asks for no bytes");
+    first = size - std::min(*n, size);
+    last = size - 1;
+  } else {
+    const auto a = number(r.substr(0, dash));
+    if (!a) return {std::move(reply), ""};
+    std::optional<std::uint64_t> b = UINT64_MAX;
+    if (!trim(r.substr(dash + 1)).empty()) b = number(r.substr(dash + 1));
+    if (!b || *b < *a) return {std::move(reply), ""};
+    if (*a >= size) return refuse(fmt::format("the range starts past the answer's {} bytes", size));
+    first = *a;
+    last = std::min(*b, size - 1);
+  }
+  reply.status = 206;
+  reply.body = reply.body.substr(first, last - first + 1);
+  return {std::move(reply), fmt::format("bytes {}-{}/{}", first, last, size)};
 }
 
 std::vector<std::string> shots_in(const fs::path& dir) {
@@ -143,16 +235,28 @@ std::vector<std::string> shots_in(const fs::path& dir) {
   return shots;
 }
 
-MonitorApi::MonitorApi(const std::vector<fs::path>& dirs, fs::path tracer, fs::path chart_script)
-    : tracer_(std::move(tracer)), chart_script_(std::move(chart_script)) {
+namespace {
+
+// The canonical folders of `dirs`; throws std::invalid_argument naming one
+// that is not a directory, or when there are none.
+std::vector<fs::path> canonical_folders(const std::vector<fs::path>& dirs) {
+  std::vector<fs::path> out;
   for (const fs::path& d : dirs) {
     std::error_code ec;
     if (!fs::is_directory(d, ec))
-      throw std::invalid_argument(fmt::format("{}: not a directory (give the folders renders write to: render --out)", d.string()));
-    dirs_.push_back(fs::canonical(d));
+      throw std::invalid_argument(fmt::format("{}: not a directory (give the folders renders write to: render --out, "
+                                              "or a folder they are in)",
+                                              d.string()));
+    out.push_back(fs::canonical(d));
   }
-  if (dirs_.empty()) throw std::invalid_argument("give at least one render folder");
+  if (out.empty()) throw std::invalid_argument("give at least one render folder");
+  return out;
 }
+
+}  // namespace
+
+MonitorApi::MonitorApi(const std::vector<fs::path>& dirs, fs::path tracer, fs::path chart_script)
+    : folders_(canonical_folders(dirs)), tracer_(std::move(tracer)), chart_script_(std::move(chart_script)) {}
 
 Reply MonitorApi::get(const std::string& path, const Query& query) const {
   try {
@@ -181,11 +285,12 @@ Reply MonitorApi::get(const std::string& path, const Query& query) const {
 }
 
 Reply MonitorApi::folders_reply() const {
+  const std::vector<fs::path> dirs = folders_.search();
   std::string out = "{\"folders\": [";
-  for (std::size_t i = 0; i < dirs_.size(); ++i) {
+  for (std::size_t i = 0; i < dirs.size(); ++i) {
     std::string shots;
-    for (const std::string& s : shots_in(dirs_[i])) shots += (shots.empty() ? "" : ", ") + json_text(s);
-    out += fmt::format("{}{{\"id\": {}, \"path\": {}, \"shots\": [{}]}}", i ? ", " : "", i, json_text(dirs_[i].string()),
+    for (const std::string& s : shots_in(dirs[i])) shots += (shots.empty() ? "" : ", ") + json_text(s);
+    out += fmt::format("{}{{\"id\": {}, \"path\": {}, \"shots\": [{}]}}", i ? ", " : "", i, json_text(dirs[i].string()),
                        shots);
   }
   std::string names;
@@ -271,8 +376,9 @@ std::optional<double> frames_per_second(const farm::EventSummary& ev) {
 }  // namespace
 
 Reply MonitorApi::status_reply(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
-  const farm::JournalContents journal = journal_of(dir, shot);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
+  const auto journal_ptr = journal_of(journals_, dir, shot);
+  const farm::JournalContents& journal = *journal_ptr;
   std::map<int, std::uintmax_t> png_sizes;
   const auto sequences = find_frame_sequences(dir);
   if (const auto seq = sequences.find(shot); seq != sequences.end())
@@ -297,7 +403,8 @@ Reply MonitorApi::status_reply(const Query& q) const {
   const std::size_t stale_count = stale.other_settings.size() + stale.earlier_script.size() + stale.earlier_sky.size() +
                                   stale.unrecorded.size();
 
-  const farm::EventSummary ev = events_of(dir, shot, 200);
+  const auto events = events_of(events_, dir, shot);
+  const farm::EventSummary& ev = *events;
   std::string run = "null";
   std::vector<int> in_flight;
   int to_do = 0;
@@ -343,12 +450,29 @@ Reply MonitorApi::status_reply(const Query& q) const {
     const std::optional<double> rate = frames_per_second(ev);
     const std::string per_minute = rate ? json_number(*rate * 60.0) : "null";
     const std::string eta = state == "running" && rate ? json_number(to_do / *rate) : "null";
+    // What ended the run, named: the ranks it lost (a killed worker, a node
+    // gone: the launcher then ends the job), else its error, else a signal.
+    std::string ended_by = "null";
+    if (ev.end && state != "done") {
+      std::string lost;
+      for (const int rank : ev.lost) {
+        std::string host;
+        for (const farm::Event& w : ev.ranks)
+          if (w.fields.count("rank") && std::atoi(w.fields.at("rank").c_str()) == rank && w.fields.count("host"))
+            host = w.fields.at("host");
+        lost += fmt::format("{}rank {}{}", lost.empty() ? "" : ", ", rank, host.empty() ? "" : " on " + host);
+      }
+      ended_by = json_text(!lost.empty()         ? lost + " stopped answering (lost)"
+                           : !ev.errors.empty()  ? ev.errors.back().fields.count("message") ? ev.errors.back().fields.at("message") : "an error"
+                           : state == "interrupted" ? "a signal: Ctrl-C, a kill, or the launcher ending the job"
+                                                    : state);
+    }
     run = fmt::format(
         "{{\"state\": {}, \"started\": {}, \"last_event\": {}, \"pid\": {}, \"host\": {}, \"ranks\": {}, \"threads\": {}, "
         "\"todo\": {}, \"stored\": {}, \"frames_per_minute\": {}, \"eta_seconds\": {}, \"workers\": [{}], "
-        "\"size\": [{}, {}]}}",
+        "\"size\": [{}, {}], \"resume\": {}, \"ended_by\": {}}}",
         json_text(state), json_number(r.time), json_number(last), r.pid, json_text(r.host), r.ranks, threads, r.todo,
-        ev.frames_stored, per_minute, eta, workers, r.width, r.height);
+        ev.frames_stored, per_minute, eta, workers, r.width, r.height, resume_json(r), ended_by);
   }
   std::string errors;
   for (const farm::Event& e : ev.errors)
@@ -363,11 +487,12 @@ Reply MonitorApi::status_reply(const Query& q) const {
 }
 
 Reply MonitorApi::frames_reply(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const long from = number_param(q, "from", 0, 10'000'000, 0);
   const long count = number_param(q, "count", 1, max_frames_per_reply, 1000);
   const long since = number_param(q, "since", 0, 1L << 40, 0);
-  const farm::JournalContents journal = journal_of(dir, shot);
+  const auto journal_ptr = journal_of(journals_, dir, shot);
+  const farm::JournalContents& journal = *journal_ptr;
   std::string out;
   long n = 0;
   std::string next = "null";  // where to go on from when `count` cut the answer short
@@ -388,15 +513,16 @@ Reply MonitorApi::frames_reply(const Query& q) const {
 }
 
 Reply MonitorApi::events_reply(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
-  const farm::EventSummary ev = events_of(dir, shot, 200);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
+  const auto events = events_of(events_, dir, shot);
+  const farm::EventSummary& ev = *events;
   std::string out;
   for (const farm::Event& e : ev.recent) out += (out.empty() ? "" : ", ") + event_json(e);
   return {200, "application/json", fmt::format("{{\"events\": [{}]}}\n", out)};
 }
 
 Reply MonitorApi::frame_png(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const long frame = number_param(q, "frame", 0, 99'999'999);
   const bool preview = number_param(q, "preview", 0, 1, 0) == 1;
   const fs::path real =
@@ -405,10 +531,11 @@ Reply MonitorApi::frame_png(const Query& q) const {
 }
 
 Reply MonitorApi::trace_reply(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const long frame = number_param(q, "frame", 0, 99'999'999);
   if (tracer_.empty()) throw BadRequest(501, "this monitor was started without the pixel inspector");
-  const farm::JournalContents journal = journal_of(dir, shot);
+  const auto journal_ptr = journal_of(journals_, dir, shot);
+  const farm::JournalContents& journal = *journal_ptr;
   const auto line = journal.frames.find(static_cast<int>(frame));
   if (line == journal.frames.end()) throw BadRequest(404, fmt::format("frame {} of '{}' is not finished", frame, shot));
   const farm::FrameSettings& st = line->second.settings;
@@ -417,7 +544,8 @@ Reply MonitorApi::trace_reply(const Query& q) const {
                                       "`lightcone trace` instead",
                                       frame));
   const long x = number_param(q, "x", 0, st.width - 1), y = number_param(q, "y", 0, st.height - 1);
-  const farm::EventSummary ev = events_of(dir, shot, 1);
+  const auto events = events_of(events_, dir, shot);
+  const farm::EventSummary& ev = *events;
   if (!ev.run || ev.run->script.empty())
     throw BadRequest(409, "the render's event log does not name its shot script (rendered by an older lightcone?)");
   std::error_code ec;
@@ -451,7 +579,7 @@ Reply MonitorApi::trace_reply(const Query& q) const {
 }
 
 Reply MonitorApi::layer_png(const Query& q) const {
-  const auto [dir, shot] = folder_and_shot(dirs_, q);
+  const auto [dir, shot] = folder_and_shot(folders_.current(), q);
   const long frame = number_param(q, "frame", 0, 99'999'999);
   const auto wanted = q.find("layer");
   if (wanted == q.end()) throw BadRequest(400, "missing parameter 'layer'");

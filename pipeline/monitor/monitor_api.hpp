@@ -14,9 +14,13 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "monitor/folder_list.hpp"
+#include "monitor/parsed_cache.hpp"
 
 namespace lc::monitor {
 
@@ -34,8 +38,8 @@ std::vector<std::string> shots_in(const std::filesystem::path& dir);
 
 class MonitorApi {
  public:
-  // `dirs`: the render folders to show.  Throws std::invalid_argument naming
-  // one that is not a directory.  `tracer`: the lightcone binary, run for
+  // `dirs`: the render folders to show, or folders to find them under.
+  // Throws std::invalid_argument naming one that is not a directory.  `tracer`: the lightcone binary, run for
   // the pixel inspector (monitor/pixel_trace.hpp); empty: no inspector.
   // `chart_script`: Chart.js's file (Debian's libjs-chart.js), served as
   // /chart.js when it exists.
@@ -47,7 +51,7 @@ class MonitorApi {
   // read a 500.
   //   /                      the page
   //   /chart.js              the chart library
-  //   /api/folders           the folders and their shots
+  //   /api/folders           the folders and their shots (render folders that appeared under them added)
   //   /api/status            ?folder=N&shot=S: counts, the run, its workers, errors, ETA
   //   /api/frames            ?folder=N&shot=S[&from=F][&count=C]: each finished frame's cost
   //   /api/events            ?folder=N&shot=S: the latest run's last events
@@ -58,7 +62,13 @@ class MonitorApi {
   // Safe to call from several threads at once.
   Reply get(const std::string& path, const Query& query) const;
 
-  const std::vector<std::filesystem::path>& folders() const { return dirs_; }
+  // The folders shown so far: those given, then those found under them
+  // (monitor/folder_list.hpp).
+  std::vector<std::filesystem::path> folders() const { return folders_.current(); }
+  // The journals and event logs parsed so far, kept between requests (for
+  // the tests).
+  const JournalCache& journals() const { return journals_; }
+  const EventCache& event_logs() const { return events_; }
 
  private:
   Reply folders_reply() const;
@@ -80,13 +90,29 @@ class MonitorApi {
     void keep(const std::string& key, const std::string& reply);
   };
 
-  std::vector<std::filesystem::path> dirs_;  // canonical
+  FolderList folders_;  // canonical
   std::filesystem::path tracer_;
   std::filesystem::path chart_script_;
   mutable TraceCache traces_;
+  mutable JournalCache journals_;
+  mutable EventCache events_;
 };
 
 // The JSON error reply.
 Reply error_reply(int status, const std::string& message);
+
+// `reply` as an answer to a request whose Range header is `range` ("":
+// none).  Inputs: any reply; only a 200 is cut.  Output: `reply` itself
+// when there is no range, its unit is not bytes or it does not parse (the
+// header is then ignored, as RFC 9110 allows); a 206 holding the one range
+// asked for (bytes=A-B, A- or -N, B past the end cut to it) with its
+// Content-Range; a 416 with "bytes */<size>" when the range starts past
+// the end or several ranges are asked for (never served: a list of many
+// small ranges would make one request answer with the body many times).
+struct RangedReply {
+  Reply reply;
+  std::string content_range;  // its Content-Range header ("" none)
+};
+RangedReply with_range(Reply reply, const std::string& range);
 
 }  // namespace lc::monitor

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # `lightcone monitor` (docs/monitor.md) on a real render: the API's counts
 # follow the journal while the render is held mid-run, after it is
-# interrupted and after it resumes; a real headless browser (Debian's
+# interrupted and after it resumes (by the command the monitor gives to
+# copy, run as given); a real headless browser (Debian's
 # chromium) draws the page from it: the counts, a thumbnail per latest
 # frame, a point of the cost chart per finished frame (the screenshot is
 # kept as monitor.png); clicking a frame's pixel (Selenium) shows what
 # `lightcone trace` says of it, with its path drawn (monitor_pixel.png);
 # hostile requests get 4xx and nothing outside the folder; an MPI run's
-# workers and what each holds, and one of them lost when it is killed
+# workers and what each holds, and one of them lost when it is killed,
+# named as what ended the run, with the event log's last lines
 # (docs/monitor.md); the monitor stops on a kill.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
@@ -68,7 +70,12 @@ status=$(api "/api/status?$Q")
 # The frames left are still left (the same command resumes them).
 left=$((9 - $(grep -c '^frame=' out/kerr_fall.journal || true)))
 [ "$(field 'd["frames"]["to_do"]' <<<"$status")" = "$left" ] || fail "after Ctrl-C: to do is not $left: $status"
-"$LIGHTCONE" render "$FALL" --out out "${SMALL[@]}" 2>resume.log || fail "resume: $(cat resume.log)"
+# The command the status gives to resume it is the render's own, in its
+# folder; run as the page shows it (in a shell), it resumes.
+resume=$(field 'd["run"]["resume"]' <<<"$status")
+[ "$resume" = "cd $WORK && $LIGHTCONE render $FALL --out out --threads 2 ${SMALL[*]}" ] || fail "the resume command: $resume"
+(cd / && bash -c "$resume") 2>resume.log || fail "resume: $(cat resume.log)"
+grep -q "resuming: $((9 - left)) of 9 frames already finished" resume.log || fail "resume: $(cat resume.log)"
 status=$(api "/api/status?$Q")
 [ "$(field 'd["frames"]["done"]' <<<"$status")" = 9 ] || fail "resumed: done: $status"
 [ "$(field 'd["run"]["state"]' <<<"$status")" = done ] || fail "resumed: state: $status"
@@ -162,6 +169,14 @@ status=$(api "/api/status?$MQ")
   || fail "after the kill: $status"
 timeout 60 "${BROWSER[@]}" --dump-dom "$URL/" >page_lost.html 2>>browser.log || fail "chromium (lost rank)"
 grep -q '<tr class="rank lost" data-rank="2"' page_lost.html || fail "the page does not show rank 2 lost: $(grep -o '<tr class="rank[^>]*>' page_lost.html)"
+# The card names the rank that ended the run, and shows the event log's last lines.
+grep -q "<div class=\"ended\">interrupted: rank 2 on $(hostname) stopped answering (lost)</div>" page_lost.html \
+  || fail "the page does not name the rank that ended the run: $(grep -o '<div class="ended">[^<]*<' page_lost.html)"
+grep -q '<pre data-lines="[1-9][0-9]*">' page_lost.html && grep -q " end status=interrupted stored=" page_lost.html \
+  || fail "the page's event log: $(grep -o '<pre data-lines.*' page_lost.html | head -c 600)"
+# The interrupted run's card offers the command that resumes it, launcher first.
+grep -q "<code>cd $WORK &amp;&amp; mpirun -n 3 $LIGHTCONE render $FALL --out mpi_out ${MPI_ARGS[*]}</code>" page_lost.html \
+  || fail "the page's resume command: $(grep -o '<div class="resume">.*</div>' page_lost.html | head -c 400)"
 before=$(grep -c '^frame=' mpi_out/kerr_fall.journal || true)
 [ "$before" -ge 1 ] && [ "$before" -lt 6 ] || fail "$before frames journalled when rank 2 was killed"
 mpi 3 "$LIGHTCONE" render "$FALL" --out mpi_out "${MPI_ARGS[@]}" 2>mpi_resume.log || fail "the MPI resume: $(cat mpi_resume.log)"

@@ -4,11 +4,13 @@
 # hostile clients (tests/tools/monitor_abuse.py: a thousand ranges, a
 # gzip bomb and a chunked body POSTed, a header flood, slow clients
 # trickling header lines, a burst of pixel traces) are refused small and
-# fast while normal requests are answered, and the monitor's memory stays
+# fast while normal requests are answered, one byte range is answered 206
+# with its Content-Range (curl), and the monitor's memory stays
 # bounded; journals that are links, FIFOs or someone else's are refused
 # without a word of them and hold nothing; in a real browser one shot
 # that cannot be shown says so on its card while the others are shown, and
-# a 12,000-frame film's cost chart has all its points.
+# a 12,000-frame film's cost chart has all its points; a render started
+# under a parent folder being watched is listed as it appears.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
@@ -81,6 +83,18 @@ cat abuse.txt
 # HEAD is answered as GET without a body; other methods are refused.
 [ "$(curl -s --max-time 5 -I -o /dev/null -w "%{http_code}" "$URL/api/folders")" = 200 ] || fail "HEAD"
 [ "$(curl -s --max-time 5 -X DELETE -o /dev/null -w "%{http_code}" "$URL/api/folders")" = 405 ] || fail "DELETE"
+# One range: 206 with that part; past the end: 416 with the size; several: 416.
+curl -s --max-time 5 -D head.txt -H "Range: bytes=0-14" -o part.txt "$URL/"
+grep -q "^HTTP/1.1 206" head.txt || fail "one range: $(head -1 head.txt)"
+whole=$(curl -s --max-time 5 "$URL/" | wc -c)
+grep -qi "^Content-Range: bytes 0-14/$whole" head.txt || fail "one range's Content-Range: $(grep -i content-range head.txt)"
+[ "$(cat part.txt)" = "$(curl -s --max-time 5 "$URL/" | head -c 15)" ] || fail "one range's part: $(cat part.txt)"
+[ "$(curl -s --max-time 5 -H "Range: bytes=-5" "$URL/" | wc -c)" = 5 ] || fail "the last 5 bytes"
+curl -s --max-time 5 -D head.txt -H "Range: bytes=$whole-" -o /dev/null "$URL/"
+grep -q "^HTTP/1.1 416" head.txt && grep -qi "^Content-Range: bytes \*/$whole" head.txt \
+  || fail "a range past the end: $(head -1 head.txt) $(grep -i content-range head.txt)"
+[ "$(curl -s --max-time 5 -H "Range: bytes=0-1,4-5" -o /dev/null -w "%{http_code}" "$URL/")" = 416 ] || fail "two ranges"
+[ "$(curl -s --max-time 5 -H "Range: bytes=x-" -o /dev/null -w "%{http_code}" "$URL/")" = 200 ] || fail "a bad range"
 # All of it in bounded memory (the gzip bomb alone unpacks to 62 MiB, the
 # ranges asked for 1,000 copies of the page).
 hwm=$(awk '/^VmHWM:/ {print $2}' "/proc/$monitor/status")
@@ -98,6 +112,25 @@ grep -q 'cannot show this shot: foreign.journal is not a lightcone journal' page
 grep -q "SECRET" page.html && fail "the page quotes a foreign file"
 # The long film's cost chart has all its 12,000 points (not 10,000).
 grep -q 'data-points="12000"' page.html || fail "the long film's chart: $(grep -o 'data-points="[0-9]*"' page.html | tr '\n' ' ')"
+
+# A parent folder: a render that starts under it after the monitor is
+# listed at the next poll; a link to a render folder is not followed.
+mkdir -p films
+ln -s "$WORK/out" films/leak
+"$LIGHTCONE" monitor films --port 0 2>parent.log &
+parent=$!
+for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" parent.log && break; sleep 0.05; done
+PURL=$(grep -o "http://127.0.0.1:[0-9]*" parent.log) || fail "the parent's monitor did not start: $(cat parent.log)"
+[ "$(curl -s --max-time 5 "$PURL/api/folders" | grep -o '"path"' | wc -l)" = 1 ] || fail "an empty parent: $(curl -s "$PURL/api/folders")"
+"$LIGHTCONE" render "$FALL" --out films/take1 --size 32x18 --supersample 1 --progress 0 --frames 0:0 2>render2.log \
+  || fail "render: $(cat render2.log)"
+folders=$(curl -s --max-time 5 "$PURL/api/folders")
+grep -q "{\"id\": 1, \"path\": \"$(cd films && pwd -P)/take1\", \"shots\": \[\"kerr_fall\"\]}" <<<"$folders" \
+  || fail "the render under the parent: $folders"
+grep -q "leak" <<<"$folders" && fail "a link under the parent was followed: $folders"
+[ "$(curl -s --max-time 5 -o /dev/null -w "%{http_code}" "$PURL/api/status?folder=1&shot=kerr_fall")" = 200 ] || fail "its status"
+kill -TERM "$parent"
+wait "$parent" 2>/dev/null || true
 
 # A kill (SIGTERM, as Ctrl-C) stops it at once.
 kill -TERM "$monitor"

@@ -1064,6 +1064,23 @@ return table.concat({tostring(b), tostring(a), tostring(b), tostring(print), tos
   }
 }
 
+// A weak table's contents follow the collector's timing, which follows the
+// state's hash seed: setmetatable refuses a metatable with __mode at the
+// script's line; other metatables are set as before.
+TEST(LuaSandbox, WeakTablesAreRefused) {
+  ScratchDir dir;
+  Sandbox sandbox({});
+  const fs::path weak = script(dir, "weak.lua", "local cache = {}\nsetmetatable(cache, {__mode = 'v'})\n");
+  const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(weak); });
+  EXPECT_NE(msg.find("weak.lua:2: setmetatable: weak tables (a metatable with __mode) are refused"), std::string::npos)
+      << msg;
+  const fs::path plain =
+      script(dir, "plain.lua", "local t = setmetatable({}, {__index = {x = 3}})\nreturn getmetatable(t) ~= nil and t.x\n");
+  Sandbox again({});
+  again.run_file(plain);
+  EXPECT_EQ(lua_tonumber(again.state(), -1), 3);
+}
+
 // A mounted prefix (the shipped shots: require "lightcone.shots.NAME") is
 // read from its folder alone; what a mounted module requires while it
 // loads comes from that folder first (its siblings), else as usual; a

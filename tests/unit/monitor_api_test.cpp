@@ -359,3 +359,164 @@ TEST(MonitorApi, OnlyDirectoriesAreServed) {
 
 }  // namespace
 }  // namespace lc::monitor
+
+namespace lc::monitor {
+namespace {
+
+// One byte range is served 206 with its Content-Range; several, or one
+// past the end, 416 with the size; a range that does not parse, or of
+// another unit, is ignored (200, the whole answer); only a 200 is cut.
+TEST(MonitorApi, OneRangeIsAnsweredWithItsPart) {
+  const Reply whole{200, "text/plain", "0123456789"};
+  const auto part = [&](const std::string& range) { return with_range(whole, range); };
+  EXPECT_EQ(part("bytes=2-4").reply.status, 206);
+  EXPECT_EQ(part("bytes=2-4").reply.body, "234");
+  EXPECT_EQ(part("bytes=2-4").content_range, "bytes 2-4/10");
+  EXPECT_EQ(part("bytes=7-").reply.body, "789");
+  EXPECT_EQ(part(" bytes=8-99999999999999999999999").content_range, "bytes 8-9/10");
+  EXPECT_EQ(part("bytes=-3").reply.body, "789");
+  EXPECT_EQ(part("bytes=-30").content_range, "bytes 0-9/10");
+  EXPECT_EQ(part("bytes=10-").reply.status, 416);
+  EXPECT_EQ(part("bytes=10-").content_range, "bytes */10");
+  EXPECT_EQ(part("bytes=99999999999999999999999-").reply.status, 416);
+  EXPECT_EQ(part("bytes=-0").reply.status, 416);
+  EXPECT_EQ(part("bytes=0-1,3-4").reply.status, 416);
+  for (const std::string ignored : {"", "items=0-1", "bytes=4-2", "bytes=x-2", "bytes=1", "bytes=--1"}) {
+    EXPECT_EQ(part(ignored).reply.status, 200) << ignored;
+    EXPECT_EQ(part(ignored).reply.body, "0123456789") << ignored;
+    EXPECT_EQ(part(ignored).content_range, "") << ignored;
+  }
+  const RangedReply missing = with_range(error_reply(404, "no such page"), "bytes=0-1");
+  EXPECT_EQ(missing.reply.status, 404);
+  EXPECT_EQ(missing.content_range, "");
+}
+
+}  // namespace
+}  // namespace lc::monitor
+
+namespace lc::monitor {
+namespace {
+
+// The run's command line and folder, as its log records them, come back as
+// one shell line that resumes it: words the shell would read otherwise
+// quoted; an MPI run's launcher put first; none from an older log.
+TEST(MonitorApi, TheStatusGivesTheCommandThatResumesTheRun) {
+  test::ScratchDir scratch;
+  const fs::path dir = scratch / "out";
+  fs::create_directories(dir);
+  {
+    farm::EventLog log(dir, "s");
+    log.run_started({.pid = 9, .host = "n0", .todo = 5, .width = 4, .height = 2, .script = "/shots/s.lua",
+                     .command = {"lightcone", "render", "my shot's.lua", "--out", "o", "--frames", "0:9"},
+                     .cwd = "/home/me/films"});
+    log.frame_stored(0, 1.0, 8);
+  }
+  const MonitorApi api({dir});
+  const Reply status = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(status, R"("resume": "cd /home/me/films && lightcone render 'my shot'\\''s.lua' --out o --frames 0:9")"))
+      << status.body;
+  // The event log's run line shows the same words, without the NULs that
+  // separate them in the log.
+  const Reply events = api.get("/api/events", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(events, R"("command": "lightcone render 'my shot'\\''s.lua' --out o --frames 0:9")")) << events.body;
+  EXPECT_FALSE(has(events, "\\u0000"));
+  {
+    farm::EventLog log(dir, "s");
+    log.run_started({.pid = 10, .host = "n0", .ranks = 3, .todo = 5, .command = {"lightcone", "render", "s.lua"}, .cwd = "/w"});
+  }
+  EXPECT_TRUE(has(api.get("/api/status", {{"folder", "0"}, {"shot", "s"}}), R"("resume": "cd /w && mpirun -n 3 lightcone render s.lua")"));
+  {
+    farm::EventLog log(dir, "s");
+    log.run_started({.pid = 11, .host = "n0", .todo = 5});
+  }
+  EXPECT_TRUE(has(api.get("/api/status", {{"folder", "0"}, {"shot", "s"}}), R"("resume": null)"));
+}
+
+}  // namespace
+}  // namespace lc::monitor
+
+namespace lc::monitor {
+namespace {
+
+// A parent folder's render folders are listed as they appear: down to
+// max_folder_depth, not through links, not in hidden folders, not inside a
+// render folder; each keeps its number.
+TEST(MonitorApi, RenderFoldersUnderAParentAreFoundAsTheyAppear) {
+  test::ScratchDir scratch;
+  const fs::path parent = scratch / "films";
+  const auto render = [](const fs::path& dir) {
+    fs::create_directories(dir);
+    farm::EventLog log(dir, "s");
+    log.run_started({.pid = 9, .host = "n0", .todo = 5});
+    log.frame_stored(0, 1.0, 8);
+  };
+  render(parent / "a");
+  render(parent / "b" / "take1");
+  render(parent / "a" / "inner");                    // inside a render folder: its own
+  render(parent / ".trash" / "old");                 // hidden
+  render(parent / "d1" / "d2" / "d3" / "d4");        // too deep
+  render(scratch / "elsewhere");
+  fs::create_directory_symlink(scratch / "elsewhere", parent / "link");  // a link: not followed
+  fs::create_directories(parent / "empty");
+  const MonitorApi api({parent});
+  const std::string root = fs::canonical(parent).string();
+  const Reply first = api.get("/api/folders", {});
+  EXPECT_TRUE(has(first, fmt::format(R"({{"id": 0, "path": "{}", "shots": []}})", root))) << first.body;
+  EXPECT_TRUE(has(first, fmt::format(R"("path": "{}/a", "shots": ["s"])", root))) << first.body;
+  EXPECT_TRUE(has(first, fmt::format(R"("path": "{}/b/take1", "shots": ["s"])", root))) << first.body;
+  for (const char* never : {"inner", "trash", "d4", "elsewhere", "link", "empty"}) EXPECT_FALSE(has(first, never)) << never;
+  EXPECT_EQ(api.folders().size(), 3u);
+  const std::size_t a = api.folders()[1] == fs::canonical(parent / "a") ? 1 : 2;
+
+  // A render that starts later is listed at the next poll, after the others.
+  render(parent / "empty" / "late");
+  const Reply second = api.get("/api/folders", {});
+  EXPECT_TRUE(has(second, fmt::format(R"({{"id": 3, "path": "{}/empty/late", "shots": ["s"]}})", root))) << second.body;
+  EXPECT_EQ(api.folders()[a], fs::canonical(parent / "a"));
+  EXPECT_EQ(api.get("/api/status", {{"folder", "3"}, {"shot", "s"}}).status, 200);
+  EXPECT_EQ(api.get("/api/status", {{"folder", "4"}, {"shot", "s"}}).status, 400);
+}
+
+}  // namespace
+}  // namespace lc::monitor
+
+namespace lc::monitor {
+namespace {
+
+// What ended a run is named: the rank lost (with its node), else the
+// error, else a signal; nothing for a run that finished.
+TEST(MonitorApi, TheStatusNamesWhatEndedTheRun) {
+  test::ScratchDir scratch;
+  const fs::path dir = scratch / "out";
+  fs::create_directories(dir);
+  const MonitorApi api({dir});
+  const auto ended = [&](auto&& log_run) {
+    {
+      farm::EventLog log(dir, "s");
+      log.run_started({.pid = 9, .host = "n0", .ranks = 3, .todo = 5});
+      log.frame_stored(0, 1.0, 8);
+      log_run(log);
+    }
+    const Reply r = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
+    const auto at = r.body.find("\"ended_by\": ");
+    return at == std::string::npos ? r.body : r.body.substr(at + 12, r.body.find('}', at) - at - 12);
+  };
+  EXPECT_EQ(ended([](farm::EventLog& log) {
+              log.rank_joined(1, "n1", 2);
+              log.rank_joined(2, "n2", 2);
+              log.rank_lost(2, "n2");
+              log.run_ended("interrupted", 1);
+            }),
+            "\"rank 2 on n2 stopped answering (lost)\"");
+  EXPECT_EQ(ended([](farm::EventLog& log) {
+              log.error("s.lua:3: attempt to call a nil value");
+              log.run_ended("error", 1);
+            }),
+            "\"s.lua:3: attempt to call a nil value\"");
+  EXPECT_EQ(ended([](farm::EventLog& log) { log.run_ended("interrupted", 1); }),
+            "\"a signal: Ctrl-C, a kill, or the launcher ending the job\"");
+  EXPECT_EQ(ended([](farm::EventLog& log) { log.run_ended("done", 1); }), "null");
+}
+
+}  // namespace
+}  // namespace lc::monitor
