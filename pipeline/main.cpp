@@ -150,6 +150,29 @@ CLI::Validator png_depth_bits() {
       "8 or 16");
 }
 
+// The delivery flags render and trace share (delivery_flags.hpp); `camera`
+// is --camera's help, which says what the command does with it.  The ranges
+// and the pairings (a dome's flags with the dome) are checked by
+// delivery_from_flags, in words of the flag.
+void add_delivery_flags(CLI::App* command, lc::DeliveryFlags& flags, const std::string& camera) {
+  command->add_option("--camera", flags.camera, camera)->check(CLI::IsMember({"shot", "dome", "360", "ods"}));
+  command->add_option("--dome-tilt", flags.dome_tilt,
+                      "With --camera dome: the dome's forward tilt in degrees, 0 to 90 (default 0, a level dome; 15 is "
+                      "the nominal tilted one)")
+      ->check(number());
+  command->add_option("--dome-elevation", flags.dome_elevation,
+                      "With --camera dome: degrees above the dome's front horizon the shot's subject sits, 0 to 90 "
+                      "(default 35, the seated audience's sweet spot; 90: the zenith)")
+      ->check(number());
+  command->add_option("--separation", flags.separation,
+                      "With --camera ods: the distance between the eyes in M (default 1; docs/cameras.md)")
+      ->check(number());
+  command->add_option("--sky", flags.sky,
+                      "kstars: the real stars (KStars' catalogue, Debian's kstars-data) in place of the shot's "
+                      "generated ones or checker; default: the shot's (docs/cameras.md)")
+      ->check(CLI::IsMember({"shot", "kstars"}));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -200,11 +223,10 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--frames", render.frames, "Frames A, A:B or A:B:STEP (inclusive, numbered from 0)");
   render_cmd->add_option("--size", render.size, "Image size WxH instead of the shot's");
   render_cmd->add_option("--scale", render.scale, "Scale the image size by S (previews: 0.25)")->check(number());
-  render_cmd
-      ->add_option("--camera", render.camera,
-                   "Deliver the shot through another camera, framed from its own: dome (a 180-degree dome master, "
-                   "square) or 360 (a 360-degree video frame, 2:1); default: the shot's (docs/cameras.md)")
-      ->check(CLI::IsMember({"shot", "dome", "360"}));
+  add_delivery_flags(render_cmd, render.delivery,
+                     "Deliver the shot through another camera, framed from its own: dome (a 180-degree dome master, "
+                     "square), 360 (a 360-degree video frame, 2:1) or ods (360 in omnidirectional stereo, square); "
+                     "default: the shot's (docs/cameras.md)");
   render_cmd->add_option("--region", render.region,
                          "Render only pixels X0..X1-1, Y0..Y1-1 of the frame (X0,Y0,X1,Y1), as an image of that size: "
                          "to check part of a large frame (docs/cameras.md)");
@@ -270,10 +292,9 @@ int main(int argc, char** argv) {
   trace_cmd->add_option("-o,--output", trace.output, "CSV file to write (default: standard output)");
   trace_cmd->add_option("--size", trace.size, "Image size WxH instead of the shot's");
   trace_cmd->add_option("--scale", trace.scale, "Scale the image size by S")->check(number());
-  trace_cmd
-      ->add_option("--camera", trace.camera,
-                   "The pixel of the frame delivered through a dome master or a 360-degree camera (as render --camera)")
-      ->check(CLI::IsMember({"shot", "dome", "360"}));
+  add_delivery_flags(trace_cmd, trace.delivery,
+                     "The pixel of the frame delivered through a dome master, a 360-degree camera or ODS (as render "
+                     "--camera, with its --dome-tilt, --dome-elevation, --separation and --sky)");
   trace_cmd->add_flag("--json", trace.json,
                       "Print the report as one JSON object on standard output (the path then only with -o)");
 

@@ -213,7 +213,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   farm::FrameStore store(cmd.out, info.name);
   farm::FrameSettings settings = farm::frame_settings(job.rs);
   settings.png_depth = cmd.png_depth();
-  settings.camera = job.delivery;
+  settings.delivery = job.delivery;
   settings.shutter = job.shutter;
   const farm::ResumePlan plan = farm::plan_resume(store, survey, settings, job.frames, cmd.force, info.name);
 

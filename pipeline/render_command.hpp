@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "delivery_flags.hpp"
 #include "farm/mpi_session.hpp"
 #include "image/image_io.hpp"
 
@@ -20,7 +21,7 @@ struct RenderCommand {
   std::vector<int> frame_list;        // the frames themselves, ascending (the showcase's picks); overrides `frames`
   std::optional<std::string> size;    // "WxH"
   std::optional<std::string> region;  // "X0,Y0,X1,Y1": a window of the frame (of --size's, or the shot's)
-  std::string camera = "shot";        // --camera: shot, dome or 360 (camera/delivery.hpp)
+  DeliveryFlags delivery;             // --camera, --dome-tilt, --dome-elevation, --separation, --sky
   double scale = 1.0;
   std::optional<int> supersample;
   bool layers = false;

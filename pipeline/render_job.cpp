@@ -57,6 +57,7 @@ RenderJob load_render_job(const RenderCommand& cmd) {
   if (!(cmd.progress >= 0) || !std::isfinite(cmd.progress))
     throw std::invalid_argument(fmt::format("--progress {}: must be 0 (off) or a number of seconds", cmd.progress));
   job.test_pause = farm::test_pause_after();
+  job.delivery = delivery_from_flags(cmd.delivery);  // (before the shot: a bad flag is said first)
   job.shot = std::make_unique<Shot>(cmd.shot);
   const ShotInfo& info = job.shot->info();
   if (!cmd.frame_list.empty()) {
@@ -69,13 +70,10 @@ RenderJob load_render_job(const RenderCommand& cmd) {
     job.range = cmd.frames ? parse_frame_range(*cmd.frames, info.frames, "--frames") : all_frames(info.frames);
     job.frames = job.range->frames();
   }
-  const auto delivery = delivery_named(cmd.camera);
-  if (!delivery) throw std::invalid_argument(fmt::format("--camera {}: expected shot, dome or 360", cmd.camera));
-  job.delivery = *delivery;
   job.shot->set_delivery(job.delivery);
   job.shutter = shutter_override(cmd.shutter, cmd.shutter_position, cmd.time_samples);
   job.shot->set_shutter(job.shutter);
-  const auto [shot_width, shot_height] = delivery_size(job.delivery, info.width, info.height);
+  const auto [shot_width, shot_height] = delivery_size(job.delivery.camera, info.width, info.height);
   std::tie(job.rs.width, job.rs.height) = output_size(shot_width, shot_height, cmd.size, cmd.scale);
   if (cmd.region) {
     const Region region = parse_region(*cmd.region, job.rs.width, job.rs.height);

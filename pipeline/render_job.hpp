@@ -25,7 +25,7 @@ struct RenderJob {
   farm::StripeLayout layout{1, 1};
   int preview = 0;                  // --preview
   std::uint64_t digest = 0;         // farm::job_digest: what an MPI master and its workers compare
-  DeliveryCamera delivery = DeliveryCamera::shot;  // --camera
+  Delivery delivery{};                             // --camera ... --sky
   ShutterOverride shutter{};                       // --shutter, --shutter-position, --time-samples
   std::optional<long> test_pause;   // LIGHTCONE_TEST_PAUSE_AFTER (farm/test_pause.hpp)
 };

@@ -82,7 +82,7 @@ int render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const Sho
     rc.threads = cmd.threads;
     rc.force = cmd.force;
     rc.progress = cmd.progress;
-    rc.camera = std::string(name_of(plan.camera));
+    rc.delivery.camera = std::string(name_of(plan.camera));
     rc.png_bits = cmd.png_bits;
     if (cmd.motion_blur) rc.shutter = showcase_shutter;
     if (master)

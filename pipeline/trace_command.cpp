@@ -55,13 +55,12 @@ std::string json_report(int f, int i, int j, const RaySample& s, std::string_vie
 }  // namespace
 
 int run_trace(const TraceCommand& cmd) {
+  const Delivery delivery = delivery_from_flags(cmd.delivery);  // (before the shot: a bad flag is said first)
   Shot shot(cmd.shot);
-  const auto delivery = delivery_named(cmd.camera);
-  if (!delivery) throw std::invalid_argument(fmt::format("--camera {}: expected shot, dome or 360", cmd.camera));
-  shot.set_delivery(*delivery);
+  shot.set_delivery(delivery);
   const ShotInfo& info = shot.info();
   const int f = parse_frame_range(std::to_string(cmd.frame), info.frames, "--frame").first;
-  const auto [shot_width, shot_height] = delivery_size(*delivery, info.width, info.height);
+  const auto [shot_width, shot_height] = delivery_size(delivery.camera, info.width, info.height);
   const auto [width, height] = output_size(shot_width, shot_height, cmd.size, cmd.scale);
   const auto [i, j] = parse_pixel(cmd.pixel, "--pixel");
   if (i < 0 || i >= width || j < 0 || j >= height)

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "delivery_flags.hpp"
+
 namespace lc {
 
 struct TraceCommand {
@@ -19,7 +21,7 @@ struct TraceCommand {
   std::optional<std::string> size;
   double scale = 1.0;
   bool json = false;  // the report as one JSON object on standard output (the path only with -o)
-  std::string camera = "shot";  // as render --camera: the pixel of the frame delivered through it
+  DeliveryFlags delivery;  // as render --camera ... --sky: the pixel of the frame delivered so
 };
 
 int run_trace(const TraceCommand& cmd);

@@ -1,17 +1,22 @@
 #pragma once
 // A shot made for a flat screen, delivered to another (render --camera,
 // showcase --camera; docs/cameras.md, "A shot through a dome or a 360
-// camera"): its frames through a dome master or a 360-degree camera in
-// place of its own, framed from its own camera's orientation.
-//   dome: the 180-degree fisheye, its axis pitched dome_pitch above the
-//         shot's aim, so what the shot looked at sits 90 - dome_pitch
-//         degrees above the dome's front horizon, the sweet spot a seated
-//         audience looks at without craning (not the zenith);
+// camera"): its frames through a dome master, a 360-degree camera or
+// omnidirectional stereo in place of its own, framed from its own camera's
+// orientation (the sky it is delivered under: scene/delivered_sky.hpp).
+//   dome: the 180-degree fisheye, its axis pitched 90 - E above the shot's
+//         aim, so what the shot looked at sits E degrees (dome_elevation,
+//         35 by default) above the dome's front horizon, the sweet spot a
+//         seated audience looks at without craning (not the zenith); a
+//         tilted dome's tilt is the fisheye's own `tilt`, which keeps that
+//         height above the audience's horizon;
 //   360:  the whole sphere, its front the shot's heading (yaw) but its
 //         horizon level (no pitch, no roll: a viewer in a headset chooses
-//         where to look, and a sphere that tilts under them is sickening).
-// Square frames for the dome and 2:1 for the sphere, of the shot's height
-// unless a size is given.
+//         where to look, and a sphere that tilts under them is sickening);
+//   ods:  the 360's sphere in omnidirectional stereo (top-bottom), the eyes
+//         `separation` apart.
+// Square frames for the dome and ODS, 2:1 for the sphere, of the shot's
+// height (ODS: each eye's 2:1 picture of it) unless a size is given.
 
 #include <array>
 #include <utility>
@@ -22,33 +27,41 @@
 
 namespace lc {
 
-// The dome's axis above the shot's aim, degrees.
-inline constexpr double dome_pitch = 55.0;
+static_assert(EquirectCamera::Params{}.separation == default_ods_separation,
+              "--separation's default is the equirect's own");
 
-// The camera `shot_camera` (any kind) is delivered through.
-inline CameraSpec delivered(const CameraSpec& shot_camera, DeliveryCamera to) {
-  if (to == DeliveryCamera::shot) return shot_camera;
+// The camera `shot_camera` (any kind) is delivered through.  Assumes the
+// delivery's angles are in range (the command line checks them).
+inline CameraSpec delivered(const CameraSpec& shot_camera, const Delivery& to) {
+  if (to.camera == DeliveryCamera::shot) return shot_camera;
   const auto [yaw, pitch, roll] =
       std::visit([](const auto& p) { return std::array<double, 3>{p.yaw, p.pitch, p.roll}; }, shot_camera);
-  if (to == DeliveryCamera::dome) {
+  if (to.camera == DeliveryCamera::dome) {
     FisheyeCamera::Params dome;
     dome.yaw = yaw;
-    dome.pitch = pitch + dome_pitch;
+    dome.pitch = pitch + (90.0 - to.dome_elevation);
     dome.roll = roll;
+    dome.tilt = to.dome_tilt;
     return dome;
   }
   EquirectCamera::Params sphere;
   sphere.yaw = yaw;
+  if (to.camera == DeliveryCamera::ods) {
+    sphere.stereo = StereoLayout::top_bottom;
+    sphere.separation = to.separation;
+  }
   return sphere;
 }
 
 // The frame size for `to` when none is given: the shot's own for the
-// shot's camera, else square (dome) or 2:1 (360) of the shot's height.
+// shot's camera, else square (dome), 2:1 (360) or two 2:1 pictures one
+// above the other (ods) of the shot's height.
 inline std::pair<int, int> delivery_size(DeliveryCamera to, int width, int height) {
   switch (to) {
     case DeliveryCamera::shot: return {width, height};
     case DeliveryCamera::dome: return {height, height};
     case DeliveryCamera::sphere: return {2 * height, height};
+    case DeliveryCamera::ods: return {2 * height, 2 * height};
   }
   return {width, height};
 }

@@ -215,17 +215,23 @@ SceneSpec Shot::evaluate(double at, const std::string& ctx, FieldPaths* fields) 
     lua_pop(L, 1);
     throw lua::FieldError(fmt::format("{}: frame(i) must return a scene table, got {}", ctx, got));
   }
+  SceneSpec fs;
   try {
     lua::TableReader t(L, -1, ctx);
-    SceneSpec fs = read_scene_spec(t);
+    fs = read_scene_spec(t);
     if (fields != nullptr) *fields = scene_fields(L);
     lua_pop(L, 1);
-    fs.camera = delivered(fs.camera, delivery_);
-    return fs;
   } catch (...) {
     lua_pop(L, 1);
     throw;
   }
+  fs.camera = delivered(fs.camera, delivery_);
+  try {
+    fs.sky = delivered_sky(fs.sky, delivery_.sky);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("{}: {}", ctx, e.what()));
+  }
+  return fs;
 }
 
 std::vector<std::filesystem::path> Shot::loaded_files() const { return loaded_files_; }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "camera/delivery.hpp"
+#include "scene/delivered_sky.hpp"
 #include "lua/sandbox.hpp"
 #include "lua/table_reader.hpp"
 #include "scene/frame_specs.hpp"
@@ -36,7 +37,8 @@ class Shot {
 
   // The scene of frame i (0-based, < info().frames).  Errors name the file,
   // the frame and the field.  Its camera is the one the shot is delivered
-  // through (camera/delivery.hpp): its own unless set_delivery said other.
+  // through and its sky the one it is delivered under (camera/delivery.hpp):
+  // its own unless set_delivery said other.
   SceneSpec frame(int i);
 
   // Frame i with its shutter (scene/frame_specs.hpp): where the shutter is
@@ -54,9 +56,10 @@ class Shot {
   void set_shutter(const ShutterOverride& over) { shutter_override_ = over; }
   const ShutterOverride& shutter_override() const { return shutter_override_; }
 
-  // Every frame from now on through `to`'s camera (render --camera).
-  void set_delivery(DeliveryCamera to) { delivery_ = to; }
-  DeliveryCamera delivery() const { return delivery_; }
+  // Every frame from now on through `to`'s camera and under its sky
+  // (render --camera, --sky).
+  void set_delivery(const Delivery& to) { delivery_ = to; }
+  const Delivery& delivery() const { return delivery_; }
 
   // The script and every module it required, in any frame evaluated so far
   // (for hashing a shot's inputs).
@@ -97,7 +100,7 @@ class Shot {
   ShotInfo info_;
   std::optional<Loaded> unused_;  // the constructor's sandbox, until a frame uses it
   std::vector<std::filesystem::path> loaded_files_;
-  DeliveryCamera delivery_ = DeliveryCamera::shot;
+  Delivery delivery_{};
   ShutterOverride shutter_override_{};
 };
 

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "assets/shot_resources.hpp"
+#include "farm/journal.hpp"
 #include "durable_file.hpp"
 #include "farm/content_hash.hpp"
 #include "farm/shot_inputs.hpp"
@@ -46,7 +47,8 @@ std::map<int, std::string> reading_keys(Shot& shot, const std::vector<int>& fram
   std::map<int, std::string> out;
   for (const auto& [frame, facts] : survey.frames) {
     ContentHash h;
-    h.add(meter_header).add(std::uint64_t(width)).add(std::uint64_t(height)).add(std::uint64_t(shot.delivery()));
+    h.add(meter_header).add(std::uint64_t(width)).add(std::uint64_t(height)).add(std::uint64_t(shot.delivery().camera));
+    if (const Delivery& d = shot.delivery(); d.beyond_camera()) h.add(delivery_fields(d));  // (older keys stand)
     out[frame] = h.add(facts.inputs).hex();
   }
   return out;

@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <cstring>
 #include <istream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -54,6 +55,37 @@ std::optional<std::map<std::string, std::string>> fields(const std::string& cont
   return out;
 }
 
+// The delivery's fields of a frame line (delivery_fields), `get` a field's
+// value or null, into `d`; false when one is malformed or out of range.
+// Absent fields are the defaults (older lines, or a plain delivery).
+template <class Get>
+bool parse_delivery(const Get& get, Delivery& d) {
+  if (const std::string* camera = get("camera")) {
+    const auto named = delivery_named(*camera);
+    if (!named || *named == DeliveryCamera::shot) return false;  // the shot's own is never written
+    d.camera = *named;
+  }
+  // A number of the delivery within [lo, hi] (open at lo where `above`).
+  auto number = [&](const char* key, double& out, double lo, double hi, bool above) {
+    const std::string* text = get(key);
+    if (!text) return true;
+    double v = 0.0;
+    if (!parse_number(*text, v) || v < lo || v > hi || (above && v == lo)) return false;
+    out = v;
+    return true;
+  };
+  const double no_limit = std::numeric_limits<double>::max();
+  if (!number("dome_tilt", d.dome_tilt, 0.0, max_dome_angle, false) ||
+      !number("dome_elevation", d.dome_elevation, 0.0, max_dome_angle, false) ||
+      !number("separation", d.separation, 0.0, no_limit, true))
+    return false;
+  if (const std::string* sky = get("sky_catalogue")) {
+    if (*sky != name_of(DeliverySky::kstars)) return false;
+    d.sky = DeliverySky::kstars;
+  }
+  return true;
+}
+
 // A frame line's fields -> JournalFrame; nullopt when any field is missing
 // or malformed (e.g. written by a newer lightcone).
 std::optional<JournalFrame> parse_frame(const std::string& content) {
@@ -85,14 +117,7 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
     if (*depth != "16") return std::nullopt;  // 8 is never written
     jf.settings.png_depth = PngDepth::sixteen;
   }
-  if (const std::string* camera = get("camera")) {
-    if (*camera == name_of(DeliveryCamera::dome))
-      jf.settings.camera = DeliveryCamera::dome;
-    else if (*camera == name_of(DeliveryCamera::sphere))
-      jf.settings.camera = DeliveryCamera::sphere;
-    else
-      return std::nullopt;
-  }
+  if (!parse_delivery(get, jf.settings.delivery)) return std::nullopt;
   if (const std::string* region = get("region")) {
     ImageWindow& w = jf.settings.window;
     const auto c1 = region->find(','), c2 = region->find(',', c1 + 1), x = region->find('x', c2 + 1);
@@ -163,11 +188,26 @@ std::string FrameSettings::describe(const FrameSettings& against) const {
                      window.frame_height);
   else if (against.window.windowed())
     of = " (the whole frame)";
+  // The delivery, said where it or `against`'s is not the shot's own; a
+  // dome's angles and ODS's separation where either's are not the defaults.
   std::string through;
-  if (camera != DeliveryCamera::shot)
-    through = fmt::format(", through the {} camera", name_of(camera));
-  else if (against.camera != DeliveryCamera::shot)
+  const Delivery &d = delivery, &o = against.delivery;
+  if (d.camera != DeliveryCamera::shot) {
+    through = fmt::format(", through the {} camera", name_of(d.camera));
+    if (d.camera == DeliveryCamera::dome &&
+        (d.dome_tilt != default_dome_tilt || d.dome_elevation != default_dome_elevation ||
+         o.dome_tilt != default_dome_tilt || o.dome_elevation != default_dome_elevation))
+      through += fmt::format(" (tilted {:g} degrees, the subject {:g} degrees up)", d.dome_tilt, d.dome_elevation);
+    if (d.camera == DeliveryCamera::ods &&
+        (d.separation != default_ods_separation || o.separation != default_ods_separation))
+      through += fmt::format(" (eyes {:g} M apart)", d.separation);
+  } else if (o.camera != DeliveryCamera::shot) {
     through = ", through the shot's own camera";
+  }
+  if (d.sky == DeliverySky::kstars)
+    through += ", under the KStars sky";
+  else if (o.sky != DeliverySky::shot)
+    through += ", under the shot's own sky";
   const char* depth = png_depth == PngDepth::sixteen ? ", 16-bit PNG"
                       : against.png_depth == PngDepth::sixteen ? ", 8-bit PNG"
                                                                : "";
@@ -180,6 +220,17 @@ std::string FrameSettings::describe(const FrameSettings& against) const {
   return fmt::format("{}x{}{}{}, {}x{} samples per pixel{}, {}{}{}", width, height, of, through, supersample,
                      supersample, adaptive && supersample > 1 ? " (adaptive)" : "",
                      layers ? "with data layers" : "no data layers", depth, shutter_text);
+}
+
+std::string delivery_fields(const Delivery& d) {
+  // Each only where not the default, so a plain dome's line reads as before.
+  std::string out;
+  if (d.camera != DeliveryCamera::shot) out += fmt::format(" camera={}", name_of(d.camera));
+  if (d.dome_tilt != default_dome_tilt) out += fmt::format(" dome_tilt={}", d.dome_tilt);
+  if (d.dome_elevation != default_dome_elevation) out += fmt::format(" dome_elevation={}", d.dome_elevation);
+  if (d.separation != default_ods_separation) out += fmt::format(" separation={}", d.separation);
+  if (d.sky != DeliverySky::shot) out += fmt::format(" sky_catalogue={}", name_of(d.sky));
+  return out;
 }
 
 std::string journal_header_line() { return with_check(header); }
@@ -197,9 +248,7 @@ std::string journal_frame_line(const JournalFrame& f) {
   const std::string depth = std::string(f.settings.png_depth == PngDepth::sixteen ? " png_depth=16" : "") +
                             (w.windowed() ? fmt::format(" region={},{},{}x{}", w.x0, w.y0, w.frame_width, w.frame_height)
                                           : "") +
-                            (f.settings.camera != DeliveryCamera::shot
-                                 ? fmt::format(" camera={}", name_of(f.settings.camera))
-                                 : "") +
+                            delivery_fields(f.settings.delivery) +
                             (f.settings.shutter.open ? fmt::format(" shutter={}", *f.settings.shutter.open) : "") +
                             (f.settings.shutter.position
                                  ? fmt::format(" shutter_position={}", choice_name(*f.settings.shutter.position))

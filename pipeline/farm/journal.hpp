@@ -8,7 +8,8 @@
 //   lightcone-journal 1                                     (first line)
 //   input hash=<16 hex> path=<file>                         (an input file's content as of a run)
 //   frame=<n> size=<W>x<H> supersample=<N> layers=<0|1> sampling=<adaptive|full> [png_depth=16]
-//     [region=<x0>,<y0>,<frame W>x<frame H>] [camera=<dome|360>]
+//     [region=<x0>,<y0>,<frame W>x<frame H>] [camera=<dome|360|ods>] [dome_tilt=<deg>]
+//     [dome_elevation=<deg>] [separation=<M>] [sky_catalogue=kstars]
 //     inputs=<16 hex> script=<16 hex> [sky=<16 hex>] exr=<bytes> png=<bytes> rays=<n>
 //     reused=<n> core_seconds=<s> star_seconds=<s> finished=<unix seconds> [look=<look_text>]
 //     [render_look=<look_text>]
@@ -16,7 +17,10 @@
 // of older journals lack sampling (full), script and sky, and what the
 // frame cost beyond its rays; png_depth is written only for 16-bit PNGs,
 // region only for a window of the frame (size is then the window's),
-// camera only for a shot delivered through another camera, look only where
+// camera only for a shot delivered through another camera (and its dome's
+// tilt and elevation and ODS's separation only where not the defaults,
+// sky_catalogue only under --sky kstars: lines of a plain dome read as they
+// always did, and older lines are the defaults), look only where
 // the PNG shows the EXR through another look than the paper's (image/look.hpp:
 // what `lightcone develop` starts from), render_look only where a develop
 // made the PNG through another look than the render did (the render's own,
@@ -48,7 +52,7 @@ struct FrameSettings {
   bool adaptive = false;  // adaptive supersampling (journal lines without the field: full N x N)
   PngDepth png_depth = PngDepth::eight;  // the PNG's bits per channel (render --png-depth)
   ImageWindow window{};  // the window of the frame the image is (render --region), if any
-  DeliveryCamera camera = DeliveryCamera::shot;  // the camera the shot was delivered through (render --camera)
+  Delivery delivery{};  // the camera and sky the shot was delivered through (render --camera ... --sky)
   ShutterOverride shutter{};  // what the command line set of the shutter (render --shutter ...), over the shot's
   bool operator==(const FrameSettings&) const = default;
   // "48x32, 1x1 samples per pixel, no data layers": for messages.  The
@@ -125,6 +129,11 @@ struct StaleFrames {
 // parts) compare by their whole input hash.  An empty journal (frames made
 // elsewhere) finds nothing stale.
 StaleFrames stale_frames(const JournalContents& journal, const std::map<int, std::uintmax_t>& png_sizes);
+
+// The delivery as a frame line spells it (" camera=dome dome_tilt=15"):
+// "" for the shot's own camera and sky.  Also the key the job's digest and
+// the exposure meter take of it.
+std::string delivery_fields(const Delivery& d);
 
 // One line (without the newline) for each kind; with the check appended.
 std::string journal_header_line();

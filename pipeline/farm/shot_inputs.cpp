@@ -71,7 +71,9 @@ std::uint64_t job_digest(const Shot& shot, const RenderSettings& rs, int stripes
   h.add(i.name).add(std::uint64_t(i.frames)).add(fmt::format("{}", i.fps));
   h.add(std::uint64_t(rs.width)).add(std::uint64_t(rs.height)).add(std::uint64_t(rs.supersample));
   h.add(std::uint64_t(rs.layers)).add(std::uint64_t(stripes)).add(std::uint64_t(preview_every));
-  h.add(std::uint64_t(rs.adaptive && rs.supersample > 1)).add(std::uint64_t(shot.delivery()));
+  h.add(std::uint64_t(rs.adaptive && rs.supersample > 1)).add(std::uint64_t(shot.delivery().camera));
+  if (const Delivery& d = shot.delivery(); d.beyond_camera())  // (as for the window, below)
+    h.add(delivery_fields(d));
   if (rs.window.windowed())  // (frames without a window hash as they always did)
     h.add(std::uint64_t(rs.window.x0)).add(std::uint64_t(rs.window.y0)).add(std::uint64_t(rs.window.frame_width))
         .add(std::uint64_t(rs.window.frame_height));

@@ -558,7 +558,7 @@ Reply MonitorApi::trace_reply(const Query& q) const {
   r.y = static_cast<int>(y);
   r.width = st.width;
   r.height = st.height;
-  r.camera = std::string(name_of(st.camera));
+  r.delivery = st.delivery;
   // The same pixel of the same frame as rendered (its inputs and when it
   // was stored), traced before: its answer again.
   const std::string key = fmt::format("{}/{}/{}/{}/{}/{}/{}/{}", number_param(q, "folder", 0, 1L << 30), shot, frame, x, y,

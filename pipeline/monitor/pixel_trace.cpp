@@ -86,6 +86,17 @@ std::string path_json(const std::string& csv, std::string& chart) {
 
 }  // namespace
 
+std::vector<std::string> delivery_flag_words(const Delivery& d) {
+  std::vector<std::string> out = {"--camera", std::string(name_of(d.camera))};
+  // fmt's shortest text of a double reads back to the same double.
+  if (d.dome_tilt != default_dome_tilt) out.insert(out.end(), {"--dome-tilt", fmt::format("{}", d.dome_tilt)});
+  if (d.dome_elevation != default_dome_elevation)
+    out.insert(out.end(), {"--dome-elevation", fmt::format("{}", d.dome_elevation)});
+  if (d.separation != default_ods_separation) out.insert(out.end(), {"--separation", fmt::format("{}", d.separation)});
+  if (d.sky != DeliverySky::shot) out.insert(out.end(), {"--sky", std::string(name_of(d.sky))});
+  return out;
+}
+
 std::string trace_pixel_json(const fs::path& tracer, const PixelRequest& r, double seconds) {
   const Scratch scratch;
   const fs::path out = scratch.dir / "report.json", err = scratch.dir / "stderr.txt", csv = scratch.dir / "path.csv";
@@ -93,8 +104,8 @@ std::string trace_pixel_json(const fs::path& tracer, const PixelRequest& r, doub
                                    tracer.string(), "trace", r.script.string(),
                                    "--frame", std::to_string(r.frame), "--pixel",
                                    fmt::format("{},{}", r.x, r.y), "--size", fmt::format("{}x{}", r.width, r.height),
-                                   "--camera", r.camera, "--json",
-                                   "-o", csv.string()};
+                                   "--json", "-o", csv.string()};
+  for (std::string& word : delivery_flag_words(r.delivery)) args.push_back(std::move(word));
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

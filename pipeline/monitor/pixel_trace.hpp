@@ -8,6 +8,9 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include "camera/delivery_camera.hpp"
 
 namespace lc::monitor {
 
@@ -15,8 +18,14 @@ struct PixelRequest {
   std::filesystem::path script;  // the shot, as the render's event log names it
   int frame = 0, x = 0, y = 0;   // the pixel: column x, row y of the frame
   int width = 0, height = 0;     // the frame's size as rendered
-  std::string camera = "shot";   // as render --camera
+  Delivery delivery{};           // as render --camera ... --sky made the frame
 };
+
+// The flags that ask `lightcone trace` for the delivery `d` ("--camera",
+// "dome", "--dome-tilt", "15"; the defaults left out), as render's
+// (pipeline/delivery_flags.hpp) read them: a frame traced as the journal
+// recorded it was made.
+std::vector<std::string> delivery_flag_words(const Delivery& d);
 
 // {"report": <trace --json's object>, "chart": "<the path's chart line>",
 //  "path": [[x, y, z], ...]} with the path in Cartesian coordinates (a

@@ -124,8 +124,8 @@ PY
 expect_error outside "--region 0,0,65,10: reaches outside the 64x64 frame" -- \
   "$LIGHTCONE" render "$SHOT" --out outside --size 64x64 --region 0,0,65,10
 expect_error depth "--png-depth: '12' is not a PNG depth: give the bits per channel as the integer 8 or 16" -- "$LIGHTCONE" render "$SHOT" --out depth --size 32x32 --png-depth 12
-expect_error camera "--camera: fisheye not in {shot,dome,360}" -- "$LIGHTCONE" render "$SHOT" --out camera --camera fisheye
-expect_error trace_camera "--camera: fisheye not in {shot,dome,360}" -- \
+expect_error camera "--camera: fisheye not in {shot,dome,360,ods}" -- "$LIGHTCONE" render "$SHOT" --out camera --camera fisheye
+expect_error trace_camera "--camera: fisheye not in {shot,dome,360,ods}" -- \
   "$LIGHTCONE" trace "$SHOT" --frame 0 --pixel 1,1 --camera fisheye
 CHECKS=$((CHECKS + 1))
 if ls outside/*.png depth/*.png camera/*.png >/dev/null 2>&1; then fail "a refused render wrote frames"; fi

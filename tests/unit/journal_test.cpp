@@ -83,7 +83,7 @@ TEST(Journal, PngDepthAndWindowRoundTripAndAreSettings) {
   EXPECT_NE(f.settings.describe().find("16-bit PNG"), std::string::npos);
   // Beside settings that differ in them, the defaults are said too.
   FrameSettings plain_settings = frame(4).settings;
-  f.settings.camera = DeliveryCamera::dome;
+  f.settings.delivery.camera = DeliveryCamera::dome;
   const std::string beside = plain_settings.describe(f.settings);
   EXPECT_NE(beside.find("8-bit PNG"), std::string::npos) << beside;
   EXPECT_NE(beside.find("(the whole frame)"), std::string::npos) << beside;
