@@ -40,6 +40,8 @@ FolderFile::~FolderFile() {
   if (fd_ >= 0) ::close(fd_);
 }
 
+std::filesystem::path FolderFile::open_file_path() const { return fmt::format("/proc/self/fd/{}", fd_); }
+
 std::string FolderFile::head(std::size_t bytes) const { return read_at(0, bytes); }
 
 std::string FolderFile::read_at(std::uintmax_t offset, std::size_t bytes) const {

@@ -44,6 +44,13 @@ class FolderFile {
   // opened).  Throws std::runtime_error on a read error.
   std::string read_at(std::uintmax_t offset, std::size_t bytes) const;
 
+  // A path to the open file itself (/proc/self/fd/N), for a reader that
+  // takes a path and opens it as it is (the EXR reader): it opens this very
+  // file, checked regular, whatever is at its name by then.  Not for the
+  // farm's readers, which refuse links (this path is one).  Only while this
+  // object lives, and only if opened.
+  std::filesystem::path open_file_path() const;
+
   // The whole file.  Throws std::runtime_error if it is longer than
   // `max_bytes` or on a read error.
   std::string read_all(std::size_t max_bytes) const;

@@ -583,7 +583,15 @@ Reply MonitorApi::layer_png(const Query& q) const {
   const long frame = number_param(q, "frame", 0, 99'999'999);
   const auto wanted = q.find("layer");
   if (wanted == q.end()) throw BadRequest(400, "missing parameter 'layer'");
-  const FrameImage image = read_exr(frame_file(dir, farm::frame_path(dir, shot, static_cast<int>(frame), "exr"), frame, shot));
+  // Read through the file opened here (regular, not a link, never a FIFO
+  // swapped in after the check: that would hold a server thread for good),
+  // and no larger than what the monitor serves.
+  const FolderFile exr(frame_file(dir, farm::frame_path(dir, shot, static_cast<int>(frame), "exr"), frame, shot));
+  if (exr.missing()) throw BadRequest(404, fmt::format("frame {} of '{}' has no EXR", frame, shot));
+  if (exr.refused()) throw BadRequest(403, fmt::format("frame {}'s EXR {}", frame, exr.why()));
+  if (exr.size() > max_served_bytes)
+    throw BadRequest(413, fmt::format("frame {}'s EXR is larger than {} bytes: not read", frame, max_served_bytes));
+  const FrameImage image = read_exr(exr.open_file_path());
   FrameImage picture;
   if (!layer_picture(image, wanted->second, picture)) {
     std::string names;
