@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # docs/cluster.md's array job, its logic run here without Slurm: the job
 # scripts tests/cluster/render-array.sbatch and join-array.sbatch run with
 # bash and the variables Slurm would set (tests/cluster/slurm.sh runs

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # Exposure that follows the light and develop without re-tracing
 # (docs/light.md): the fall into a glowing Kerr disk (shots/kerr_fall.lua,
 # auto_exposure) keeps its 99th percentile of display luminance in a band

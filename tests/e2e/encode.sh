@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # The encode stage through the real binary: a tiny rendered Kerr sequence to
 # H.264 MP4 checked with ffprobe (codec, pixel format, frame count, duration
 # exactly frames/fps, moov before mdat), preview sequences with a step, a

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # Faults and bad input on the farm: a second render on a locked directory,
 # a shot whose script, module or sky image changed (refused, then --force),
 # other settings, a full disk, an output directory that cannot be made or

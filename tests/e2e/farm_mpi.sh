@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # The farm gives the same bytes however it is run: one thread, several
 # threads with another stripe count, real mpirun with 2 and 3 ranks (and a
 # preview pass); progress lines, the live line on a terminal, the summary,

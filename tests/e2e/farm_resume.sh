@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # Stop a render with SIGKILL at several points and resume it each time;
 # under mpirun kill one worker rank (the job aborts) and resume; stop it
 # with Ctrl-C (SIGINT) and SIGTERM, alone and under mpirun.  The final

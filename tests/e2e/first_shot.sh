@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # docs/first_shot.md, followed as a new user would, on the shot it builds
 # (shots/circling.lua), at sizes small enough for a test: every command
 # works, the misspelt-field example is reported as the guide says, the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # Every bad geodesic spec: a clear message naming the file and line or the
 # field, a non-zero exit, and no output file (an existing one left intact).
 source "$(dirname "$0")/lib.sh"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # A long shot before its first frame (issue 43, items 7 and 17): the render
 # evaluates every frame asked for and meters the exposure of those its
 # smoothing reaches, each saying how far it is within 2 s and stopped by a

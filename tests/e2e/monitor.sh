@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # `lightcone monitor` (docs/monitor.md) on a real render: the API's counts
 # follow the journal while the render is held mid-run, after it is
 # interrupted and after it resumes (by the command the monitor gives to

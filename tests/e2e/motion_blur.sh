@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # Motion blur through the whole pipeline (docs/motion_blur.md): a blurred
 # sequence is byte-identical whether rendered on 1 thread, on 2 with other
 # stripes, under mpirun, or killed and resumed; with and without the reuse

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # Where an output may point (docs/cli.md, "Output files"): every command that
 # writes a file, given a device node, a FIFO or a symbolic link, writes
 # through it and never replaces it (a rename over /dev/null once turned the

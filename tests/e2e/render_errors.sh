@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # Every bad shot or flag: a clear message naming the shot file and line or the
 # field or flag, a non-zero exit, and nothing under a frame's final name.
 source "$(dirname "$0")/lib.sh"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # Rendering through the real binary: the benchmark shots at a small size,
 # EXR + PNG under their final names, data layers read back, inspect's JSON,
 # trace's path, and identical frames with 1 and 2 threads.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# ctest-labels: slow
 # The showcase through the real binary, at a tiny preview (128x72, a frame
 # every 4 s of story): the three sequences rendered, encoded and joined
 # behind title cards, checked with ffprobe (codec, pixel format, frame
