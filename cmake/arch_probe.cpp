@@ -1,7 +1,7 @@
 // Configure-time probe: compiled with the candidate -march flag and run; it
 // exits 0 only if the machine executes the vector and FMA instructions that
 // flag lets the compiler use, at the widest vector the engine's ray lanes
-// take under it (engine/geodesic/lanes.hpp: 64 bytes with AVX-512).
+// take under it (engine/core/lanes.hpp: 64 bytes with AVX-512).
 #include <cmath>
 #include <cstdio>
 

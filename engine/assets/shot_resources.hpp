@@ -31,7 +31,7 @@ namespace lc {
 class ShotResources {
  public:
   // Texture paths are resolved against these folders in order (the shot's
-  // own folder first), as resolve_sky_image (scene/asset_path.hpp) says.
+  // own folder first), as resolve_sky_image (assets/asset_path.hpp) says.
   explicit ShotResources(std::vector<std::filesystem::path> asset_dirs = {},
                          std::size_t budget = shot_resource_budget);
   std::shared_ptr<const Worldline> worldline(const WorldlineSpec& spec);

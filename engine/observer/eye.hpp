@@ -1,7 +1,7 @@
 #pragma once
 // Where camera rays start: an event on the observer's path (or an eye
 // displaced from it, for stereo) and the orthonormal frame there.  A camera
-// sample (render/camera_sample.hpp) names an eye and a direction on its
+// sample (camera/camera_sample.hpp) names an eye and a direction on its
 // legs; the ray's start is then (eye.event, backward momentum from
 // eye.metric and eye.frame).  The frame's own eye is the observer at the
 // frame's time (SceneIn::eye); samples with their own time or a displaced

@@ -1,6 +1,6 @@
 #pragma once
 // What a shot says of a free-falling body: plain data, integrated into a
-// Worldline (scene/worldline.hpp) once per shot.
+// Worldline (worldline/worldline.hpp) once per shot.
 
 #include <string>
 

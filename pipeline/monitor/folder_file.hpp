@@ -30,7 +30,7 @@ class FolderFile {
   const std::string& why() const { return why_; }
   std::uintmax_t size() const { return size_; }
   // What the open file is, and when it last changed (as fstat said when it
-  // was opened): the journal cache's key (monitor/journal_cache.hpp).
+  // was opened): the journal cache's key (JournalCache, monitor/parsed_cache.hpp).
   std::uint64_t device() const { return device_; }
   std::uint64_t inode() const { return inode_; }
   std::int64_t modified_ns() const { return modified_ns_; }

@@ -1,4 +1,4 @@
-// Tests of lc::resolve_sky_image (engine/scene/asset_path.cpp): which files
+// Tests of lc::resolve_sky_image (engine/assets/asset_path.cpp): which files
 // a shot may name as sky images, and what is said about the others.
 
 #include "assets/asset_path.hpp"
