@@ -12,12 +12,15 @@
 
 #include <netdb.h>
 #include <sys/socket.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 #include <microhttpd.h>
 
 #include "interrupt.hpp"
+#include "monitor/folder_file.hpp"
 #include "monitor/monitor_api.hpp"
+#include "monitor/reply_budget.hpp"
 
 namespace lc {
 
@@ -41,6 +44,14 @@ constexpr auto head_deadline = std::chrono::seconds(5);
 // The threads that poll the connections and answer the requests (all but
 // the pixel inspector's, which run on a thread of their own).
 constexpr unsigned polling_threads = 4;
+// What the answers built in memory (JSON, layer pictures, traces) may
+// hold at once, until their clients have read them (monitor/reply_budget.hpp):
+// beyond it a request is answered 503 at once.  Files are sent from disk
+// and not counted: 64 clients that never read a 512 MB frame each would
+// otherwise pin 32 GB.
+constexpr std::size_t reply_memory_bytes = 256u << 20;
+// The 503's Retry-After, in seconds.
+constexpr const char* busy_retry_after = "1";
 
 bool loopback(const std::string& address) {
   return address == "127.0.0.1" || address == "::1" || address == "localhost" || address.rfind("127.", 0) == 0;
@@ -64,17 +75,33 @@ struct Pending {
   std::atomic<bool> done{false};
 };
 
+// A body built in memory, held by its libmicrohttpd response: its bytes
+// taken from the server's budget, given back as the response is freed.
+struct HeldBody {
+  std::string bytes;
+  monitor::ReplyBudget* budget;
+  ~HeldBody() { budget->give(bytes.size()); }
+  static void free(void* cls) { delete static_cast<HeldBody*>(cls); }
+};
+
 // The HTTP server over the monitor's API, on libmicrohttpd: every request
 // is a GET or HEAD without a body (anything else is refused before a byte
 // of it is read), each connection's memory and time are bounded, and slow
 // clients hold no thread (an internal epoll thread pool).  Range requests:
 // one range is answered 206 with that part, several are refused (416)
-// (monitor::with_range).
+// (monitor::with_range).  A file is sent from its descriptor as the client
+// reads; the bodies built in memory hold at most reply_memory_bytes at once.
 class Server {
  public:
   // Inputs: the API (outliving the server), the address and port (0: any
   // free one).  Throws std::runtime_error when it cannot listen there.
-  Server(const monitor::MonitorApi& api, const std::string& bind, int port) : api_(api) {
+  Server(const monitor::MonitorApi& api, const std::string& bind, int port)
+      : api_(api),
+        budget_(reply_memory_bytes),
+        busy_body_(monitor::error_reply(503, fmt::format("the monitor holds {} MiB of answers that their clients have "
+                                                         "not read yet: try again in a moment",
+                                                         reply_memory_bytes >> 20))
+                       .body) {
     addrinfo hints{};
     hints.ai_family = AF_UNSPEC;
     hints.ai_socktype = SOCK_STREAM;
@@ -183,31 +210,59 @@ class Server {
     }
   }
 
-  // Queues `reply` (with the headers every answer has, and `extra`) as the
-  // answer of the request on `c`; libmicrohttpd's verdict.
-  static MHD_Result queue(MHD_Connection* c, const monitor::Reply& reply,
-                          const std::map<std::string, std::string>& extra = {}) {
-    return queue(c, monitor::RangedReply{reply, ""}, extra);
+  // Queues `ranged` (with the headers every answer has, and `extra`) as the
+  // answer of the request on `c`; libmicrohttpd's verdict.  A file's
+  // descriptor goes to libmicrohttpd, which reads it as the socket drains
+  // and closes it with the response; a body built in memory is moved into
+  // the response if the budget has room for it, else the answer is a 503.
+  MHD_Result queue(MHD_Connection* c, monitor::Reply reply, const std::map<std::string, std::string>& extra = {}) {
+    return queue(c, monitor::RangedReply{std::move(reply), ""}, extra);
   }
-  static MHD_Result queue(MHD_Connection* c, const monitor::RangedReply& ranged,
-                          const std::map<std::string, std::string>& extra = {}) {
-    const monitor::Reply& reply = ranged.reply;
-    // The body is copied into a buffer the response owns.
-    auto* body = new std::string(reply.body);
-    MHD_Response* response = MHD_create_response_from_buffer_with_free_callback_cls(
-        body->size(), body->data(), [](void* cls) { delete static_cast<std::string*>(cls); }, body);
-    if (!response) {
-      delete body;
-      return MHD_NO;
+  MHD_Result queue(MHD_Connection* c, monitor::RangedReply ranged, const std::map<std::string, std::string>& extra = {}) {
+    monitor::Reply& reply = ranged.reply;
+    MHD_Response* response = nullptr;
+    if (reply.file) {
+      const int fd = reply.file->release();
+      response = MHD_create_response_from_fd_at_offset64(reply.file_length, fd, reply.file_offset);
+      if (!response) {
+        ::close(fd);
+        return MHD_NO;
+      }
+    } else {
+      const std::size_t size = reply.body.size();
+      if (size > budget_.capacity())
+        return queue(c, monitor::error_reply(500, fmt::format("the answer would be {} bytes, more than the monitor holds "
+                                                              "at once ({} MiB)",
+                                                              size, budget_.capacity() >> 20)));
+      if (!budget_.take(size)) {
+        response = MHD_create_response_from_buffer(busy_body_.size(), const_cast<char*>(busy_body_.data()),
+                                                   MHD_RESPMEM_PERSISTENT);
+        if (!response) return MHD_NO;
+        return send(c, MHD_HTTP_SERVICE_UNAVAILABLE, response, "application/json", "",
+                    {{MHD_HTTP_HEADER_RETRY_AFTER, busy_retry_after}});
+      }
+      auto* held = new HeldBody{std::move(reply.body), &budget_};
+      response = MHD_create_response_from_buffer_with_free_callback_cls(held->bytes.size(), held->bytes.data(),
+                                                                       &HeldBody::free, held);
+      if (!response) {
+        delete held;
+        return MHD_NO;
+      }
     }
-    MHD_add_response_header(response, MHD_HTTP_HEADER_CONTENT_TYPE, reply.content_type.c_str());
+    return send(c, static_cast<unsigned>(reply.status), response, reply.content_type, ranged.content_range, extra);
+  }
+
+  // Adds the headers every answer has (and `extra`) to `response`, queues
+  // it with `status` and lets go of it (libmicrohttpd keeps it until sent).
+  static MHD_Result send(MHD_Connection* c, unsigned status, MHD_Response* response, const std::string& content_type,
+                         const std::string& content_range, const std::map<std::string, std::string>& extra) {
+    MHD_add_response_header(response, MHD_HTTP_HEADER_CONTENT_TYPE, content_type.c_str());
     MHD_add_response_header(response, MHD_HTTP_HEADER_CACHE_CONTROL, "no-store");
     MHD_add_response_header(response, "X-Content-Type-Options", "nosniff");
     MHD_add_response_header(response, MHD_HTTP_HEADER_ACCEPT_RANGES, "bytes");
-    if (!ranged.content_range.empty())
-      MHD_add_response_header(response, MHD_HTTP_HEADER_CONTENT_RANGE, ranged.content_range.c_str());
+    if (!content_range.empty()) MHD_add_response_header(response, MHD_HTTP_HEADER_CONTENT_RANGE, content_range.c_str());
     for (const auto& [name, value] : extra) MHD_add_response_header(response, name.c_str(), value.c_str());
-    const MHD_Result queued = MHD_queue_response(c, static_cast<unsigned>(reply.status), response);
+    const MHD_Result queued = MHD_queue_response(c, status, response);
     MHD_destroy_response(response);
     return queued;
   }
@@ -239,29 +294,29 @@ class Server {
       }
       pending->worker.join();
       const bool busy = pending->reply.status == 429;
-      return queue(c, monitor::with_range(pending->reply, pending->range),
+      return self->queue(c, monitor::with_range(std::move(pending->reply), pending->range),
                    busy ? std::map<std::string, std::string>{{"Retry-After", "1"}} : std::map<std::string, std::string>{});
     }
     self->set_waiting(c, false);
     const std::string verb = method;
     if (verb != "GET" && verb != "HEAD")
-      return queue(c, monitor::error_reply(405, "the monitor only reads: GET or HEAD"), {{"Allow", "GET, HEAD"}});
+      return self->queue(c, monitor::error_reply(405, "the monitor only reads: GET or HEAD"), {{"Allow", "GET, HEAD"}});
     if (!header(c, MHD_HTTP_HEADER_TRANSFER_ENCODING).empty() || !header(c, MHD_HTTP_HEADER_CONTENT_ENCODING).empty() ||
         (!header(c, MHD_HTTP_HEADER_CONTENT_LENGTH).empty() && header(c, MHD_HTTP_HEADER_CONTENT_LENGTH) != "0") ||
         *upload_size != 0)
-      return queue(c, monitor::error_reply(413, "the monitor takes no request body"));
+      return self->queue(c, monitor::error_reply(413, "the monitor takes no request body"));
     const std::string range = header(c, MHD_HTTP_HEADER_RANGE);
     if (range.find(',') != std::string::npos)  // refused before any work is done for it
-      return queue(c, monitor::error_reply(416, "several ranges in one request are not served"));
+      return self->queue(c, monitor::error_reply(416, "several ranges in one request are not served"));
     monitor::Query query;
     MHD_get_connection_values(c, MHD_GET_ARGUMENT_KIND, &Server::add_argument, &query);
     const std::string path = url ? url : "";
-    if (path != "/api/trace") return queue(c, monitor::with_range(self->api_.get(path, query), range));
+    if (path != "/api/trace") return self->queue(c, monitor::with_range(self->api_.get(path, query), range));
     // A trace takes up to a minute: on a thread of its own, the connection
     // suspended meanwhile (its polling thread serves the others).
     {
       const std::lock_guard lock(self->mutex_);
-      if (self->closing_) return queue(c, monitor::error_reply(503, "the monitor is stopping"));
+      if (self->closing_) return self->queue(c, monitor::error_reply(503, "the monitor is stopping"));
       ++self->traces_;
     }
     auto* pending = new Pending;
@@ -280,6 +335,8 @@ class Server {
   }
 
   const monitor::MonitorApi& api_;
+  monitor::ReplyBudget budget_;  // given back by responses: outlives the daemon (stopped in ~Server)
+  const std::string busy_body_;  // the 503's body, sent as it is (never copied, never counted)
   MHD_Daemon* daemon_ = nullptr;
   int port_ = 0;
   std::mutex mutex_;  // guards what follows

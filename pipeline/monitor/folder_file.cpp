@@ -71,4 +71,17 @@ std::string FolderFile::read_all(std::size_t max_bytes) const {
   return head(static_cast<std::size_t>(size_));
 }
 
+int FolderFile::release() {
+  // Input: an opened file (or not: -1).  O_NONBLOCK was for the open alone
+  // (a FIFO would have blocked it); the file is checked regular by now.
+  const int fd = fd_;
+  fd_ = -1;
+  if (fd >= 0) {
+    released_ = true;
+    const int flags = ::fcntl(fd, F_GETFL);
+    if (flags >= 0) ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+  }
+  return fd;
+}
+
 }  // namespace lc::monitor

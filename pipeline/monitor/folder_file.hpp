@@ -26,7 +26,7 @@ class FolderFile {
   FolderFile& operator=(const FolderFile&) = delete;
 
   bool missing() const { return missing_; }
-  bool refused() const { return fd_ < 0 && !missing_; }
+  bool refused() const { return fd_ < 0 && !missing_ && !released_; }
   const std::string& why() const { return why_; }
   std::uintmax_t size() const { return size_; }
   // What the open file is, and when it last changed (as fstat said when it
@@ -55,9 +55,17 @@ class FolderFile {
   // `max_bytes` or on a read error.
   std::string read_all(std::size_t max_bytes) const;
 
+  // Hands the open descriptor over to a caller that closes it (libmicrohttpd,
+  // which sends a file from it as the client reads and closes it with its
+  // response): returned in blocking mode, as libmicrohttpd wants it (a
+  // regular file: a read never waits for a writer).  -1 when not opened or
+  // already handed over; this object reads nothing after.
+  int release();
+
  private:
   int fd_ = -1;
   bool missing_ = false;
+  bool released_ = false;  // its descriptor handed over (release)
   std::string why_;
   std::uintmax_t size_ = 0;
   std::uint64_t device_ = 0, inode_ = 0;

@@ -37,8 +37,10 @@ namespace {
 // stopped (killed, or its node lost): it writes progress every 2 s.
 constexpr double silent_after_seconds = 15.0;
 constexpr int max_frames_per_reply = 10000;
-// The largest file served (a frame's PNG, the chart library): one request
-// must not hold more in memory.  A 16-bit 8K frame's PNG is ~200 MB.
+// The largest file read into memory (a frame's EXR for its layer picture,
+// that picture's PNG): one request must not hold more.  A file served as
+// it is (a frame's PNG, the chart library) is sent from disk whatever its
+// size.  A 16-bit 8K frame's PNG is ~200 MB.
 constexpr std::size_t max_served_bytes = 512u << 20;
 // The pixel traces kept, so that asking again for a pixel (the page's
 // user clicking about) costs no new trace.
@@ -104,6 +106,19 @@ std::string read_file(const fs::path& p) {
   } catch (const std::runtime_error& e) {
     throw BadRequest(413, fmt::format("{} {}", p.filename().string(), e.what()));
   }
+}
+
+// `p` (no link in its last component: the callers resolve links first) as
+// an answer sent from the file itself as the client reads it (nothing of it
+// held in memory, so no bound on its size), if it is a regular file: the
+// file opened here is the one sent, at the size it had then.
+Reply file_reply(const fs::path& p, const char* content_type) {
+  auto file = std::make_shared<FolderFile>(p);
+  if (file->missing() || file->refused()) throw BadRequest(404, fmt::format("cannot read {}", p.filename().string()));
+  Reply reply(200, content_type);
+  reply.file_length = file->size();
+  reply.file = std::move(file);
+  return reply;
 }
 
 // The journal of `shot` in `dir` (canonical), read only if it is a regular
@@ -183,7 +198,7 @@ RangedReply with_range(Reply reply, const std::string& range) {
   std::string_view r = trim(range);
   if (reply.status != 200 || r.substr(0, 6) != "bytes=") return {std::move(reply), ""};
   r = trim(r.substr(6));
-  const std::uint64_t size = reply.body.size();
+  const std::uint64_t size = reply.size();
   const auto refuse = [&](const std::string& why) {
     return RangedReply{error_reply(416, why), fmt::format("bytes */{}", size)};
   };
@@ -217,7 +232,12 @@ RangedReply with_range(Reply reply, const std::string& range) {
     last = std::min(*b, size - 1);
   }
   reply.status = 206;
-  reply.body = reply.body.substr(first, last - first + 1);
+  if (reply.file) {
+    reply.file_offset += first;
+    reply.file_length = last - first + 1;
+  } else {
+    reply.body = reply.body.substr(first, last - first + 1);
+  }
   return {std::move(reply), fmt::format("bytes {}-{}/{}", first, last, size)};
 }
 
@@ -267,7 +287,7 @@ Reply MonitorApi::get(const std::string& path, const Query& query) const {
       if (ec || !fs::is_regular_file(chart, ec))
         return error_reply(404, fmt::format("{} is missing: install Debian's libjs-chart.js for the cost chart",
                                             chart_script_.string()));
-      return {200, "text/javascript", read_file(chart)};
+      return file_reply(chart, "text/javascript");
     }
     if (path == "/api/folders") return folders_reply();
     if (path == "/api/status") return status_reply(query);
@@ -527,7 +547,7 @@ Reply MonitorApi::frame_png(const Query& q) const {
   const bool preview = number_param(q, "preview", 0, 1, 0) == 1;
   const fs::path real =
       frame_file(dir, farm::frame_path(preview ? dir / "preview" : dir, shot, static_cast<int>(frame), "png"), frame, shot);
-  return {200, "image/png", read_file(real)};
+  return file_reply(real, "image/png");
 }
 
 Reply MonitorApi::trace_reply(const Query& q) const {

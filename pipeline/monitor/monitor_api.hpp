@@ -10,6 +10,7 @@
 // (farm/frame_files.hpp); the shot must be one the folder holds, and the
 // file must be a regular file inside the folder once links are followed.
 
+#include <cstdint>
 #include <deque>
 #include <filesystem>
 #include <map>
@@ -17,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "monitor/folder_list.hpp"
@@ -24,10 +26,25 @@
 
 namespace lc::monitor {
 
+class FolderFile;
+
+// An answer.  Its bytes are `body`, built in memory, or, when `file` is
+// set, the bytes [file_offset, file_offset + file_length) of a file opened
+// and checked (monitor/folder_file.hpp: regular, not a link), sent from
+// the file as the client reads them (the server hands its descriptor to
+// libmicrohttpd), never more than the size it had when opened.
 struct Reply {
-  int status = 200;
-  std::string content_type = "application/json";
+  // An answer built in memory (a file's is set after).
+  Reply(int status = 200, std::string content_type = "application/json", std::string body = {})
+      : status(status), content_type(std::move(content_type)), body(std::move(body)) {}
+
+  int status;
+  std::string content_type;
   std::string body;
+  std::shared_ptr<FolderFile> file;
+  std::uint64_t file_offset = 0, file_length = 0;
+  // How many bytes the answer has.
+  std::uint64_t size() const { return file ? file_length : body.size(); }
 };
 
 using Query = std::map<std::string, std::string>;
@@ -102,7 +119,8 @@ class MonitorApi {
 Reply error_reply(int status, const std::string& message);
 
 // `reply` as an answer to a request whose Range header is `range` ("":
-// none).  Inputs: any reply; only a 200 is cut.  Output: `reply` itself
+// none).  Inputs: any reply, in memory or a file; only a 200 is cut (a
+// file's part is only its offset and length: nothing is read).  Output: `reply` itself
 // when there is no range, its unit is not bytes or it does not parse (the
 // header is then ignored, as RFC 9110 allows); a 206 holding the one range
 // asked for (bytes=A-B, A- or -N, B past the end cut to it) with its

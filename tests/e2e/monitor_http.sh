@@ -4,9 +4,10 @@
 # hostile clients (tests/tools/monitor_abuse.py: a thousand ranges, a
 # gzip bomb and a chunked body POSTed, a header flood, slow clients
 # trickling header lines, a burst of pixel traces) are refused small and
-# fast while normal requests are answered, one byte range is answered 206
-# with its Content-Range (curl), and the monitor's memory stays
-# bounded; journals that are links, FIFOs or someone else's are refused
+# fast while normal requests are answered, clients that never read a large
+# file cost the monitor no memory, one byte range is answered 206 with its
+# Content-Range (curl), of the page and of a frame sent from its file, and
+# the monitor's memory stays bounded; journals that are links, FIFOs or someone else's are refused
 # without a word of them and hold nothing; in a real browser one shot
 # that cannot be shown says so on its card while the others are shown, and
 # a 12,000-frame film's cost chart has all its points; a render started
@@ -78,6 +79,17 @@ took=$((($(date +%s%N) - start) / 1000000))
 for check in multirange gzip-post chunked-post header-flood; do abuse "$check" >>abuse.txt; done
 abuse slow-clients 12 >>abuse.txt
 abuse trace-burst "folder=0&shot=kerr_fall&frame=0" >>abuse.txt
+# Eight clients asking for a 256 MiB preview and reading nothing (or a byte
+# a second): the file is sent from disk as they read, not held in memory
+# for each (the monitor grows by less than 48 MB; copying it did by 256 MB
+# a client).  Sparse: no disk used, but for a mark at 200 MiB that a range
+# of it must answer.
+mkdir -p out/preview
+truncate -s 256M out/preview/long.0000.png
+printf 'lightcone-mark-at-200MiB' | dd of=out/preview/long.0000.png bs=1 seek=$((200 << 20)) conv=notrunc status=none
+abuse slow-readers "$monitor" "/api/frame.png?folder=0&shot=long&frame=0&preview=1" 8 $((200 << 20)) \
+  lightcone-mark-at-200MiB 48 >>abuse.txt
+rm out/preview/long.0000.png
 cat abuse.txt
 [ "$(code /)" = 200 ] || fail "the page after the abuse"
 # HEAD is answered as GET without a body; other methods are refused.
@@ -95,6 +107,17 @@ grep -q "^HTTP/1.1 416" head.txt && grep -qi "^Content-Range: bytes \*/$whole" h
   || fail "a range past the end: $(head -1 head.txt) $(grep -i content-range head.txt)"
 [ "$(curl -s --max-time 5 -H "Range: bytes=0-1,4-5" -o /dev/null -w "%{http_code}" "$URL/")" = 416 ] || fail "two ranges"
 [ "$(curl -s --max-time 5 -H "Range: bytes=x-" -o /dev/null -w "%{http_code}" "$URL/")" = 200 ] || fail "a bad range"
+# A frame, sent from its file: whole, and one range of it, as on disk.
+FRAME="$URL/api/frame.png?folder=0&shot=kerr_fall&frame=0"
+curl -s --max-time 5 -o frame.png "$FRAME"
+cmp -s frame.png out/kerr_fall.0000.png || fail "the frame as served differs from its file"
+png_size=$(stat -c %s out/kerr_fall.0000.png)
+curl -s --max-time 5 -D head.txt -H "Range: bytes=10-29" -o part.bin "$FRAME"
+grep -q "^HTTP/1.1 206" head.txt && grep -qi "^Content-Range: bytes 10-29/$png_size" head.txt \
+  || fail "a range of the frame: $(head -1 head.txt) $(grep -i content-range head.txt)"
+cmp -s part.bin <(tail -c +11 out/kerr_fall.0000.png | head -c 20) || fail "a range of the frame: other bytes"
+[ "$(curl -s --max-time 5 -H "Range: bytes=-7" "$FRAME" | cmp -s - <(tail -c 7 out/kerr_fall.0000.png) && echo same)" = same ] \
+  || fail "the frame's last 7 bytes"
 # All of it in bounded memory (the gzip bomb alone unpacks to 62 MiB, the
 # ranges asked for 1,000 copies of the page).
 hwm=$(awk '/^VmHWM:/ {print $2}' "/proc/$monitor/status")

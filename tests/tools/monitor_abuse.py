@@ -14,6 +14,14 @@ Usage: monitor_abuse.py PORT CHECK [ARG]
                       client is cut off within 10 s
   trace-burst QUERY   8 pixel traces at once (QUERY: folder=..&shot=..&frame=..):
                       one is traced, the others answered 429 at once
+  slow-readers PID PATH N MARK_AT MARK BOUND_MB
+                      N clients ask for PATH (a large file), one at a time,
+                      then read nothing (half of them a byte a second) for
+                      4 s: the monitor's (PID) memory (VmRSS) grows by less
+                      than BOUND_MB however large the file, a normal request
+                      is answered meanwhile within 2 s, a range of the file
+                      at MARK_AT is answered 206 with the bytes MARK, and each
+                      slow client was answered 200
 """
 import socket
 import sys
@@ -177,6 +185,70 @@ elif check == "trace-burst":
     if results.count(200) < 1 or results.count(429) < 1 or any(r not in (200, 429) for r in results):
         fail(f"statuses {results} (want one trace at a time: 200 and 429s)")
     print(f"trace-burst: {results.count(200)} traced, {results.count(429)} told 429")
+
+elif check == "slow-readers":
+    pid, path, n, mark_at, mark, bound_mb = sys.argv[3], sys.argv[4], int(sys.argv[5]), int(sys.argv[6]), sys.argv[7].encode(), int(sys.argv[8])
+
+    def rss_kb():
+        with open(f"/proc/{pid}/status") as f:
+            return next(int(l.split()[1]) for l in f if l.startswith("VmRSS:"))
+
+    base = rss_kb()
+    most = 0
+
+    def measure(when):
+        # Fails at once past the bound: a server that copies the file for
+        # each client must not be driven much further than that.
+        global most
+        grown = rss_kb() - base
+        most = max(most, grown)
+        if grown > bound_mb * 1024:
+            fail(f"{when}: the monitor's memory grew by {grown // 1024} MB (bound {bound_mb} MB)")
+
+    slow = []
+    for k in range(n):
+        s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+        # A small receive window: the kernel takes little of the answer for
+        # the client, the server keeps the rest to send.
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+        s.settimeout(5.0)
+        s.connect((HOST, port))
+        s.sendall(f"GET {path} HTTP/1.1\r\nHost: {HOST}\r\n\r\n".encode())
+        slow.append([s, b""])
+        time.sleep(0.25)  # the server has read the request and begun its answer
+        measure(f"{k + 1} slow readers")
+    worst = 0.0
+    for tick in range(4):
+        for k, entry in enumerate(slow):
+            if k % 2 == 0:
+                entry[1] += entry[0].recv(1)
+        t0 = time.monotonic()
+        status, _ = get("/api/folders", timeout=5.0)
+        s = connect()
+        s.sendall(f"GET {path} HTTP/1.1\r\nHost: {HOST}\r\nRange: bytes={mark_at}-{mark_at + len(mark) - 1}\r\n"
+                  f"Connection: close\r\n\r\n".encode())
+        ranged, data = read_reply(s)
+        s.close()
+        took = time.monotonic() - t0
+        worst = max(worst, took)
+        if status != 200 or took > 2:
+            fail(f"with {n} slow readers a normal request took {took:.1f} s: HTTP {status}")
+        if ranged != 206 or not data.endswith(b"\r\n\r\n" + mark):
+            fail(f"with {n} slow readers a range of the file: HTTP {ranged}, ending {data[-64:]!r}")
+        measure(f"{n} slow readers, {tick + 1} s")
+        time.sleep(max(0.0, 1.0 - took))
+    for entry in slow:
+        while len(entry[1]) < 12:
+            chunk = entry[0].recv(12 - len(entry[1]))
+            if not chunk:
+                break
+            entry[1] += chunk
+        entry[0].close()
+    heads = sorted(set(e[1][:12] for e in slow))
+    if heads != [b"HTTP/1.1 200"]:
+        fail(f"the slow readers were answered {heads}")
+    print(f"slow-readers: {n} clients not reading a large file; the monitor grew by at most {most // 1024} MB "
+          f"(bound {bound_mb}); normal requests and a range meanwhile took at most {worst:.2f} s")
 
 else:
     fail("unknown check")

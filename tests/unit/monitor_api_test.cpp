@@ -4,13 +4,16 @@
 // frame linked out of the folder, huge ranges, unknown pages) is a 4xx
 // naming why, and nothing outside the folders is read.
 
+#include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <future>
 #include <memory>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -19,7 +22,10 @@
 #include "farm/event_log.hpp"
 #include "farm/frame_files.hpp"
 #include "farm/frame_store.hpp"
+#include "file_bytes.hpp"
+#include "monitor/folder_file.hpp"
 #include "monitor/monitor_api.hpp"
+#include "monitor/reply_budget.hpp"
 #include "render/renderer.hpp"
 #include "scratch_dir.hpp"
 #include "tiny_frame.hpp"
@@ -54,6 +60,10 @@ fs::path render_folder(const test::ScratchDir& scratch) {
 
 bool has(const Reply& r, const std::string& text) { return r.body.find(text) != std::string::npos; }
 
+// The bytes an answer sends: its body, or its part of its file (read
+// through the file opened when the answer was made).
+std::string sent_bytes(const Reply& r) { return r.file ? r.file->read_at(r.file_offset, r.file_length) : r.body; }
+
 TEST(MonitorApi, StatusCountsTheJournalAndTheRun) {
   test::ScratchDir scratch;
   const MonitorApi api({render_folder(scratch)});
@@ -80,7 +90,8 @@ TEST(MonitorApi, StatusCountsTheJournalAndTheRun) {
   const Reply png = api.get("/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "2"}});
   EXPECT_EQ(png.status, 200);
   EXPECT_EQ(png.content_type, "image/png");
-  EXPECT_EQ(png.body.substr(1, 3), "PNG");
+  ASSERT_TRUE(png.file) << "a frame is sent from its file, not copied into memory";
+  EXPECT_EQ(sent_bytes(png).substr(1, 3), "PNG");
   EXPECT_TRUE(has(api.get("/", {}), "<title>lightcone monitor</title>"));
 }
 
@@ -389,6 +400,67 @@ TEST(MonitorApi, OneRangeIsAnsweredWithItsPart) {
   const RangedReply missing = with_range(error_reply(404, "no such page"), "bytes=0-1");
   EXPECT_EQ(missing.reply.status, 404);
   EXPECT_EQ(missing.content_range, "");
+}
+
+// A frame is sent from the file opened for it, at the size it had then
+// (the file grows after: the answer does not), and a range of it is only
+// an offset and a length in that file.
+TEST(MonitorApi, AFrameIsSentFromItsFileAtItsSizeWhenOpened) {
+  test::ScratchDir scratch;
+  const fs::path dir = render_folder(scratch);
+  const fs::path png = farm::frame_path(dir, "s", 2, "png");
+  const MonitorApi api({dir});
+  const Reply whole = api.get("/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "2"}});
+  ASSERT_EQ(whole.status, 200) << whole.body;
+  ASSERT_TRUE(whole.file);
+  EXPECT_TRUE(whole.body.empty());
+  const std::uint64_t size = fs::file_size(png);
+  EXPECT_EQ(whole.size(), size);
+  std::ofstream(png, std::ios::app) << "appended after the answer was made";
+  const std::string on_disk = test::bytes_of(png);
+  EXPECT_EQ(sent_bytes(whole), on_disk.substr(0, size));
+  const RangedReply part = with_range(whole, "bytes=3-9");
+  EXPECT_EQ(part.reply.status, 206);
+  EXPECT_EQ(part.content_range, fmt::format("bytes 3-9/{}", size));
+  EXPECT_EQ(sent_bytes(part.reply), on_disk.substr(3, 7));
+  const RangedReply tail = with_range(whole, "bytes=-4");
+  EXPECT_EQ(sent_bytes(tail.reply), on_disk.substr(size - 4, 4));
+  EXPECT_EQ(with_range(whole, fmt::format("bytes={}-", size)).reply.status, 416);
+}
+
+// The server's budget for bodies built in memory: what would go past it is
+// refused and takes nothing; what is given back can be taken again; many
+// threads taking and giving at once never hold more than it.
+TEST(ReplyBudget, RefusesWhatWouldGoPastItAndTakesBackWhatIsFreed) {
+  ReplyBudget budget(100);
+  EXPECT_TRUE(budget.take(60));
+  EXPECT_FALSE(budget.take(41));
+  EXPECT_EQ(budget.held(), 60u);
+  EXPECT_TRUE(budget.take(40));
+  EXPECT_FALSE(budget.take(1));
+  EXPECT_FALSE(budget.take(SIZE_MAX));  // no wrap past the capacity
+  budget.give(60);
+  EXPECT_TRUE(budget.take(60));
+  budget.give(100);
+  EXPECT_EQ(budget.held(), 0u);
+  EXPECT_FALSE(budget.take(101));
+
+  ReplyBudget shared(1000);
+  std::atomic<std::size_t> most{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 8; ++t)
+    threads.emplace_back([&] {
+      for (int k = 0; k < 20000; ++k)
+        if (shared.take(300)) {
+          std::size_t seen = shared.held(), was = most.load();
+          while (seen > was && !most.compare_exchange_weak(was, seen)) {
+          }
+          shared.give(300);
+        }
+    });
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(shared.held(), 0u);
+  EXPECT_LE(most.load(), 900u);  // three bodies of 300 at most, never a fourth
 }
 
 }  // namespace
