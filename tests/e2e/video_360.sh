@@ -65,20 +65,52 @@ sed 's/lc.equirect{}/lc.equirect{longitude = 180, latitude = 90}/' "$SHOT" >wind
 side=$(ffprobe -v error -show_entries stream_side_data=side_data_type -of default=nw=1 window.mp4 2>&1)
 [ -z "$side" ] || fail "a window of the sphere was marked for players: $side"
 
-# 4. ODS and a stereo pinhole, marked for players.
+# 4. ODS and a stereo pinhole, marked for players.  What players read is
+# the track's st3d box (Spherical Video V2: mode 1 top-bottom, 2 side by
+# side); ffprobe's reading is checked too, except that FFmpeg 7.1 also
+# writes visionOS's vexu box (eyes, no packing) and reads it after st3d,
+# so it shows "unspecified" there (docs/encoding.md).
 CHECKS=$((CHECKS + 1))
+# The stereo mode byte of the st3d box inside the file's moov, or "none".
+st3d_mode() {
+  "$PY" - "$1" <<'PY'
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+at = 0
+while at + 8 <= len(data):
+    size, kind = struct.unpack(">I4s", data[at:at + 8])
+    if size < 8:
+        break
+    if kind == b"moov":
+        i = data.find(b"st3d", at, at + size)
+        print(data[i + 8] if i >= 0 else "none")
+        sys.exit(0)
+    at += size
+print("none")
+PY
+}
+# Stereo side data as ffprobe reads it: the layout asked for, or FFmpeg
+# 7.1's "unspecified" where the file also has a vexu box.
+stereo_read() { # FILE TYPE
+  local side
+  side=$(ffprobe -v error -show_entries stream_side_data=side_data_type,type -of default=nw=1 "$1" 2>&1)
+  grep -qx "type=$2" <<<"$side" && return 0
+  grep -qx "type=unspecified" <<<"$side" && "$PY" -c "import sys; sys.exit(b'vexu' not in open(sys.argv[1], 'rb').read())" "$1"
+}
 sed 's/lc.equirect{}/lc.equirect{stereo = "top-bottom", separation = 1}/' "$SHOT" >ods.lua
 "$LIGHTCONE" render ods.lua --out ods --size 128x128 --progress 0 >ods.out 2>ods.err || fail "render ODS: $(cat ods.err)"
 if grep -q "warning" ods.err; then fail "a square ODS frame was warned about: $(cat ods.err)"; fi
 "$LIGHTCONE" encode ods -o ods.mp4 >odsenc.out 2>odsenc.err || fail "encode ODS: $(cat odsenc.err)"
 side=$(ffprobe -v error -show_entries stream_side_data=side_data_type,projection,type -of default=nw=1 ods.mp4 2>&1)
 grep -qx "projection=equirectangular" <<<"$side" || fail "ods.mp4: no equirectangular mapping: $side"
-grep -qx "type=top and bottom" <<<"$side" || fail "ods.mp4: no top-bottom stereo layout: $side"
+[ "$(st3d_mode ods.mp4)" = 1 ] || fail "ods.mp4: its st3d box does not say top-bottom: $(st3d_mode ods.mp4)"
+stereo_read ods.mp4 "top and bottom" || fail "ods.mp4: ffprobe reads no top-bottom stereo layout: $side"
 sed 's/lc.equirect{}/lc.camera{fov = 60, stereo = "side-by-side", separation = 0.5}/' "$SHOT" >pair.lua
 "$LIGHTCONE" render pair.lua --out pair --size 128x48 --progress 0 >pair.out 2>pair.err || fail "render a stereo pair: $(cat pair.err)"
 "$LIGHTCONE" encode pair -o pair.mp4 >pairenc.out 2>pairenc.err || fail "encode a stereo pair: $(cat pairenc.err)"
 side=$(ffprobe -v error -show_entries stream_side_data=side_data_type,projection,type -of default=nw=1 pair.mp4 2>&1)
-grep -qx "type=side by side" <<<"$side" || fail "pair.mp4: no side-by-side stereo layout: $side"
+[ "$(st3d_mode pair.mp4)" = 2 ] || fail "pair.mp4: its st3d box does not say side by side: $(st3d_mode pair.mp4)"
+stereo_read pair.mp4 "side by side" || fail "pair.mp4: ffprobe reads no side-by-side stereo layout: $side"
 if grep -q "projection=" <<<"$side"; then fail "a stereo pinhole was marked as a sphere: $side"; fi
 
 # 5. Bad spans and stereo, at the shot's line, nothing written.
