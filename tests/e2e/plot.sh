@@ -28,7 +28,16 @@ assert (w, h) == (320, 240), (w, h)
 # The SVG: well-formed, 640x480 pixels.
 root = ET.parse(sys.argv[2]).getroot()
 assert root.get("width") in ("640", "640px") and root.get("height") in ("480", "480px"), root.attrib
-paths = [p for p in root.iter("{http://www.w3.org/2000/svg}path") if "stroke-width:1.5" in (p.get("style") or "")]
+# A path's presentation properties, from its style (Cairo 1.16) or its
+# attributes (Cairo 1.18 writes fill="none" stroke-width="1.5" ...).
+def props(p):
+    out = {k: v for k, v in p.attrib.items() if k != "d"}
+    for decl in (p.get("style") or "").split(";"):
+        if ":" in decl:
+            k, v = decl.split(":", 1)
+            out[k.strip()] = v.strip()
+    return out
+paths = [p for p in root.iter("{http://www.w3.org/2000/svg}path") if props(p).get("stroke-width") == "1.5"]
 def points(d):
     nums = [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?", d)]
     return list(zip(nums[0::2], nums[1::2]))
@@ -75,7 +84,7 @@ for p in paths:
 assert match, "no SVG path is ray 1's points"
 p, pts, sx = match
 # It came from the disk's bottom side: dashed.
-assert "stroke-dasharray" in p.get("style"), p.get("style")
+assert "stroke-dasharray" in props(p), props(p)
 print("ray 1:", cut, "rows drawn,", len(pts), "vertices, scale", sx, "px/M")
 PY
 
