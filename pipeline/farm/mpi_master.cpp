@@ -1,6 +1,7 @@
 #include "farm/mpi_master.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -120,15 +121,18 @@ std::vector<int> stop_mpi_workers(const MpiSession& mpi, const std::optional<Giv
   answered[0] = 1;
   int left = mpi.size() - 1;
   const auto deadline = std::chrono::steady_clock::now() + answer_stop_within;
+  std::optional<std::chrono::steady_clock::time_point> last_answer;
   while (left > 0) {
     if (auto m = mpi_poll(MPI_ANY_SOURCE)) {
       if (m->tag == Tag::bye && !answered[static_cast<std::size_t>(m->source)]) {
         answered[static_cast<std::size_t>(m->source)] = 1;
         --left;
+        last_answer = std::chrono::steady_clock::now();
       }
       continue;
     }
-    if (give_up && std::chrono::steady_clock::now() > deadline) {
+    const auto now = std::chrono::steady_clock::now();
+    if (give_up && (now > deadline || (last_answer && now > *last_answer + answer_stop_after_others))) {
       // Still waiting only for joined ranks: they are lost.  Any other
       // (one still loading its job) is waited for.
       std::vector<int> lost;

@@ -39,17 +39,24 @@ MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& ru
 // given up as lost.  Its MPI thread polls every millisecond and says
 // goodbye before its render threads finish their sets, so only a dead
 // process (or node) stays silent this long.  Short, because a launcher
-// that lost a rank gives the others little time: Open MPI's mpirun sends
+// that lost a rank gives the others little time: Open MPI 4's mpirun sends
 // SIGTERM and then SIGKILL a second later.
 inline constexpr std::chrono::milliseconds answer_stop_within{500};
+
+// Once some workers have answered, how long the silent ones have after the
+// last answer.  Open MPI 5's launcher (PRRTE 3) sends SIGKILL 35-90 ms after
+// SIGTERM (docs/cluster.md, "When things fail"): the workers alive answer
+// within a few milliseconds, so the master names the dead one in time.
+inline constexpr std::chrono::milliseconds answer_stop_after_others{20};
 
 // Tells every worker to stop and waits until each has said goodbye
 // (discarding whatever else they send).  Call it once on every way out of
 // the master, also when it fails before its loop (a locked directory, a
 // refused resume).  Without `give_up`, waits as long as it takes (a rank
 // still loading its job answers when it is ready).  With it, the ranks of
-// `give_up->joined` that have not answered within `answer_stop_within` are
-// no longer waited for and are returned: lost.
+// `give_up->joined` that have not answered within `answer_stop_within`, or
+// within `answer_stop_after_others` of the last rank that did, are no
+// longer waited for and are returned: lost.
 struct GiveUp {
   std::vector<int> joined;
 };
