@@ -91,7 +91,6 @@ struct FrameCost {
   bool recorded() const { return reused >= 0 && core_seconds >= 0.0; }
 };
 
-
 struct JournalFrame {
   int frame = 0;
   FrameSettings settings;
@@ -99,7 +98,7 @@ struct JournalFrame {
   InputParts parts;
   std::uintmax_t exr_bytes = 0, png_bytes = 0;
   FrameCost cost;
-  FrameMakers makers;
+  FrameMakers makers;  // who rendered it (none recorded in older journals)
   Look look;  // what the PNG shows of the EXR
   // The look the render made the PNG with, where a develop has since made
   // it with another (`look`); none: `look` is the render's own.
