@@ -75,11 +75,11 @@ long field_long(const Event& e, const char* key) {
 
 }  // namespace
 
-std::string percent_encode(const std::string& text) {
+std::string percent_encode(const std::string& text, std::string_view also) {
   std::string out;
   for (const char c : text) {
     const auto u = static_cast<unsigned char>(c);
-    if (plain(u))
+    if (plain(u) && also.find(c) == std::string_view::npos)
       out += c;
     else
       out += fmt::format("%{:02X}", u);

@@ -9,8 +9,8 @@ FarmRun::FarmRun(WorkQueue& queue, FrameSink& sink, int writers, std::function<i
 
 FarmRun::~FarmRun() { close(); }
 
-void FarmRun::finish(const WorkItem& item, const RenderStats& stats) {
-  auto done = queue_.finish(item, stats);
+void FarmRun::finish(const WorkItem& item, const RenderStats& stats, int rank, std::string_view node) {
+  auto done = queue_.finish(item, stats, rank, node);
   if (!done) return;
   {
     std::lock_guard lock(mutex_);

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -41,9 +42,10 @@ class FarmRun {
   FarmRun(const FarmRun&) = delete;
   FarmRun& operator=(const FarmRun&) = delete;
 
-  // A handed-out set is rendered (its rows are in queue.canvas(item)).
-  // Completed frames are queued for the writer.
-  void finish(const WorkItem& item, const RenderStats& stats);
+  // A handed-out set is rendered (its rows are in queue.canvas(item)), by
+  // `rank` on `node` (WorkQueue::finish).  Completed frames are queued for
+  // the writer.
+  void finish(const WorkItem& item, const RenderStats& stats, int rank = 0, std::string_view node = {});
   // Records the first error and stops the queue; later errors are dropped.
   void fail(const std::string& message);
   std::optional<std::string> error() const;

@@ -127,7 +127,8 @@ void FrameStore::note_inputs(const std::map<std::string, std::string>& files) {
 
 void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata,
                              const FrameSettings& settings, const std::string& inputs, const InputParts& parts,
-                             FrameCost cost, const Look& look) {
+                             FrameCost cost, const Look& look, const FrameMakers& makers,
+                             std::optional<std::chrono::steady_clock::time_point> dispatched) {
   with_space_hint(dir_, [&] {
     write_frame_files(frame_path(dir_, shot_, frame, "exr"), frame_path(dir_, shot_, frame, "png"), image, metadata,
                       look, settings.png_depth);
@@ -138,7 +139,11 @@ void FrameStore::write_frame(int frame, const FrameImage& image, const ImageMeta
   jf.inputs = inputs;
   jf.parts = parts;
   cost.finished = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  // Its files are renamed into place and durable by now: the wall time
+  // ends where the frame is safe, as a wrangler's "task done" does.
+  if (dispatched) cost.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - *dispatched).count();
   jf.cost = cost;
+  jf.makers = makers;
   const auto exr = size_of(frame_path(dir_, shot_, frame, "exr"));
   const auto png = size_of(frame_path(dir_, shot_, frame, "png"));
   if (!exr || !png)

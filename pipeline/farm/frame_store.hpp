@@ -12,6 +12,7 @@
 // size is ignored and the frame rendered again.  The EXR and PNG are the
 // data; the journal is the record of which of them are complete.
 
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -58,10 +59,13 @@ class FrameStore {
   // naming the file (a full disk, a vanished directory).  Thread-safe for
   // different frames (the journal appends are serialised).
   // The PNG shows the image through `look`, at the settings' depth; the
-  // line records `cost`,
-  // stamped with the time it is written.
+  // line records `cost`, stamped with the time it is written, and `makers`
+  // (who rendered it); with `dispatched` (when its first working set was
+  // handed out), the wall time from then until its files are stored.
   void write_frame(int frame, const FrameImage& image, const ImageMetadata& metadata, const FrameSettings& settings,
-                   const std::string& inputs, const InputParts& parts, FrameCost cost, const Look& look);
+                   const std::string& inputs, const InputParts& parts, FrameCost cost, const Look& look,
+                   const FrameMakers& makers = {},
+                   std::optional<std::chrono::steady_clock::time_point> dispatched = std::nullopt);
 
   // Makes a finished frame's PNG again from its EXR through `look`, at the
   // depth it was rendered with (`lightcone develop`): the PNG is replaced

@@ -22,6 +22,7 @@
 #include "durable_file.hpp"
 #include "farm/checked_line.hpp"
 #include "farm/content_hash.hpp"
+#include "farm/event_log.hpp"
 
 namespace lc::farm {
 
@@ -84,6 +85,55 @@ bool parse_delivery(const Get& get, Delivery& d) {
     d.sky = DeliverySky::kstars;
   }
   return true;
+}
+
+// The makers' fields of a frame line (makers_fields), `get` a field's value
+// or null, into `m`; false when one is malformed.  Absent: not recorded.
+template <class Get>
+bool parse_makers(const Get& get, FrameMakers& m) {
+  const std::string *ranks = get("ranks"), *nodes = get("nodes"), *count = get("rank_count");
+  if (!ranks && !nodes && !count) return true;
+  if (!ranks || !nodes) return false;
+  // Every piece between commas, empty ones too (a node without a name).
+  auto pieces = [](const std::string& list) {
+    std::vector<std::string> out(1);
+    for (const char c : list)
+      if (c == ',')
+        out.emplace_back();
+      else
+        out.back() += c;
+    return out;
+  };
+  const std::vector<std::string> rank_list = pieces(*ranks), node_list = pieces(*nodes);
+  if (rank_list.size() != node_list.size() || rank_list.size() > max_listed_ranks) return false;
+  for (std::size_t k = 0; k < rank_list.size(); ++k) {
+    FrameMakers::Rank r;
+    if (!parse_number(rank_list[k], r.rank) || (k > 0 && r.rank <= m.ranks.back().rank)) return false;
+    r.node = percent_decode(node_list[k]);
+    m.ranks.push_back(std::move(r));
+  }
+  m.count = static_cast<int>(m.ranks.size());
+  if (count && (!parse_number(*count, m.count) || m.count <= static_cast<int>(m.ranks.size()))) return false;
+  return true;
+}
+
+// " ranks=1,2 nodes=a,b [rank_count=N]" of a frame line; "" when not recorded.
+std::string makers_fields(const FrameMakers& m) {
+  if (m.ranks.empty()) return "";
+  std::string ranks, nodes;
+  for (const FrameMakers::Rank& r : m.ranks) {
+    if (!ranks.empty()) {
+      ranks += ',';
+      nodes += ',';
+    }
+    ranks += std::to_string(r.rank);
+    // A host name is letters, digits, '-' and '.'; whatever else, and the
+    // list's comma, is escaped, so any name reads back.
+    nodes += percent_encode(r.node, ",");
+  }
+  const int count = std::max(m.count, static_cast<int>(m.ranks.size()));
+  return fmt::format(" ranks={} nodes={}{}", ranks, nodes,
+                     count > static_cast<int>(m.ranks.size()) ? fmt::format(" rank_count={}", count) : "");
 }
 
 // A frame line's fields -> JournalFrame; nullopt when any field is missing
@@ -166,6 +216,10 @@ std::optional<JournalFrame> parse_frame(const std::string& content) {
         !parse_number(*finished, jf.cost.finished))
       return std::nullopt;
   }
+  // Written since the monitor shows who made a frame and how long it took.
+  if (const std::string* wall = get("wall_seconds"))
+    if (!parse_number(*wall, jf.cost.wall_seconds)) return std::nullopt;
+  if (!parse_makers(get, jf.makers)) return std::nullopt;
   // Written where the PNG has a look of its own, and where a develop gave
   // it another than the render's.
   try {
@@ -256,13 +310,15 @@ std::string journal_frame_line(const JournalFrame& f) {
                             (f.settings.shutter.time_samples
                                  ? fmt::format(" time_samples={}", *f.settings.shutter.time_samples)
                                  : "");
+  const std::string made = (c.wall_seconds >= 0.0 ? fmt::format(" wall_seconds={:.3f}", c.wall_seconds) : "") +
+                           makers_fields(f.makers);
   const std::string look = look_text(f.look);
   const std::string render_look =
       f.render_look && !(*f.render_look == f.look) ? " render_look=" + look_text(*f.render_look) : "";
-  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}{}{}",
+  return with_check(fmt::format("frame={} size={}x{} supersample={} layers={} sampling={}{} inputs={}{} exr={} png={} rays={}{}{}{}{}",
                                 f.frame, f.settings.width, f.settings.height, f.settings.supersample,
                                 f.settings.layers ? 1 : 0, f.settings.adaptive ? "adaptive" : "full", depth, f.inputs, parts,
-                                f.exr_bytes, f.png_bytes, c.rays, cost, look.empty() ? "" : " look=" + look, render_look));
+                                f.exr_bytes, f.png_bytes, c.rays, cost, made, look.empty() ? "" : " look=" + look, render_look));
 }
 
 std::string journal_input_line(const std::string& hash, const std::string& path) {

@@ -11,7 +11,8 @@
 //     [region=<x0>,<y0>,<frame W>x<frame H>] [camera=<dome|360|ods>] [dome_tilt=<deg>]
 //     [dome_elevation=<deg>] [separation=<M>] [sky_catalogue=kstars]
 //     inputs=<16 hex> script=<16 hex> [sky=<16 hex>] exr=<bytes> png=<bytes> rays=<n>
-//     reused=<n> core_seconds=<s> star_seconds=<s> finished=<unix seconds> [look=<look_text>]
+//     reused=<n> core_seconds=<s> star_seconds=<s> finished=<unix seconds> [wall_seconds=<s>]
+//     [ranks=<r>,<r>... nodes=<host>,<host>... [rank_count=<n>]] [look=<look_text>]
 //     [render_look=<look_text>]
 // A later frame line for the same frame supersedes an earlier one.  Lines
 // of older journals lack sampling (full), script and sky, and what the
@@ -25,7 +26,10 @@
 // what `lightcone develop` starts from), render_look only where a develop
 // made the PNG through another look than the render did (the render's own,
 // which develop's exposure shift and --reset start from; "" for the
-// paper's).
+// paper's).  wall_seconds, ranks and nodes (who made the frame, and how
+// long it took: FrameMakers, FrameCost) are written since the monitor shows
+// them; lines without them read as not recorded, and they are no setting:
+// a frame's files do not depend on who rendered it.
 
 #include <cstdint>
 #include <cstddef>
@@ -38,6 +42,7 @@
 
 #include "camera/delivery_camera.hpp"
 #include "camera/image_window.hpp"
+#include "farm/frame_makers.hpp"
 #include "image/image_io.hpp"
 #include "image/look.hpp"
 
@@ -82,6 +87,7 @@ struct FrameCost {
                               // evaluation included (-1: not recorded)
   double star_seconds = 0.0;  // the writer's point-star stage
   std::int64_t finished = 0;  // when it was stored, Unix seconds (0: not recorded)
+  double wall_seconds = -1;   // from its first working set handed out to its files stored (-1: not recorded)
   bool recorded() const { return reused >= 0 && core_seconds >= 0.0; }
 };
 
@@ -92,6 +98,7 @@ struct JournalFrame {
   InputParts parts;
   std::uintmax_t exr_bytes = 0, png_bytes = 0;
   FrameCost cost;
+  FrameMakers makers;  // who rendered it (none recorded in older journals)
   Look look;  // what the PNG shows of the EXR
   // The look the render made the PNG with, where a develop has since made
   // it with another (`look`); none: `look` is the render's own.
@@ -140,8 +147,9 @@ std::string journal_header_line();
 std::string journal_frame_line(const JournalFrame& f);
 std::string journal_input_line(const std::string& hash, const std::string& path);
 
-// The longest journal line read: a frame line is ~300 bytes, an input
-// line a hash and a path.  A longer line is skipped as a bad line without
+// The longest journal line read: a frame line is ~300 bytes (and up to
+// max_listed_ranks host names of at most 255 bytes), an input line a hash
+// and a path.  A longer line is skipped as a bad line without
 // being held whole (a junk line of 600 MB must not cost 600 MB).
 inline constexpr std::size_t max_journal_line = 64 * 1024;
 

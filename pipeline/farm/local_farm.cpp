@@ -1,18 +1,23 @@
 #include "farm/local_farm.hpp"
 
 #include <atomic>
+#include <string>
 #include <thread>
 #include <vector>
+
+#include "farm/threads.hpp"
 
 namespace lc::farm {
 
 void run_local_farm(WorkQueue& queue, FarmRun& run, StripeRenderer& renderer, int threads, Progress& progress) {
   std::atomic<int> running{threads};
+  // The frames' record names this node, asked once: the threads are rank 0.
+  const std::string node = host_name();
   auto work = [&] {
     while (auto item = queue.take_wait()) {
       try {
         const RenderStats stats = renderer.render(*item, queue.canvas(*item));
-        run.finish(*item, stats);
+        run.finish(*item, stats, 0, node);
       } catch (const std::exception& e) {
         run.fail(e.what());
         break;

@@ -59,7 +59,8 @@ MasterReport run_mpi_master(const MpiSession& mpi, WorkQueue& queue, FarmRun& ru
         const WorkItem item = result_item(m.data);
         const RenderStats stats = unpack_result(m.data, queue.canvas(item), queue.layout().rows(item.stripe));
         if (board) board->returned(m.source, item);
-        run.finish(item, stats);
+        // The node is the one the worker named once, in its hello.
+        run.finish(item, stats, m.source, report.hosts[m.source]);
         return;
       }
       case Tag::error:

@@ -96,7 +96,8 @@ void StoreSink::store(const CompletedFrame& cf) {
   if (std::any_of(written->rgb.begin(), written->rgb.end(), [](float v) { return v < 0.0f; }))
     metadata.emplace_back("lightcone/colour",
                           "scene-linear, Rec. 709 primaries, D65; components below 0 are colours outside that gamut");
-  store_.write_frame(cf.frame, *written, metadata, settings_, facts.inputs, facts.parts, cost, frame_look(facts));
+  store_.write_frame(cf.frame, *written, metadata, settings_, facts.inputs, facts.parts, cost, frame_look(facts),
+                     cf.makers, cf.dispatched);
   if (events_) events_->frame_stored(cf.frame, cost.core_seconds + cost.star_seconds, cost.rays);
 }
 

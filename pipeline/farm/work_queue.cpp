@@ -1,10 +1,30 @@
 #include "farm/work_queue.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 namespace lc::farm {
+
+namespace {
+
+// The journal's record of who rendered a frame (rank -> node and sets):
+// every rank, or the max_listed_ranks that rendered the most sets (the
+// lower rank on a tie), ascending by rank.
+FrameMakers makers_of(const std::map<int, std::pair<std::string, int>>& by) {
+  std::vector<std::pair<int, int>> most;  // (sets, rank)
+  for (const auto& [rank, held] : by) most.emplace_back(held.second, rank);
+  std::stable_sort(most.begin(), most.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  if (most.size() > max_listed_ranks) most.resize(max_listed_ranks);
+  std::sort(most.begin(), most.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  FrameMakers m;
+  m.count = static_cast<int>(by.size());
+  for (const auto& [sets, rank] : most) m.ranks.push_back({rank, by.at(rank).first});
+  return m;
+}
+
+}  // namespace
 
 WorkQueue::WorkQueue(RenderSettings rs, StripeLayout layout, std::vector<int> frames, Options options)
     : rs_(rs), layout_(layout), frames_(std::move(frames)), options_(options), owner_(layout_.stripes(), -1) {
@@ -58,6 +78,7 @@ std::optional<WorkItem> WorkQueue::take_locked(int taker) {
     of.canvas = std::make_unique<FrameImage>(make_frame(rs_));
     of.done.assign(stripes.size(), 0);
     of.remaining = static_cast<int>(stripes.size());
+    of.opened = std::chrono::steady_clock::now();
     frame_started_ = true;
     handed_.assign(stripes.size(), 0);
     handed_count_ = lowest_ = 0;
@@ -113,7 +134,8 @@ FrameImage& WorkQueue::canvas(const WorkItem& item) {
 
 // Index of `stripe` in the pass's stripe list (preview stripes are every
 // k-th, so the index is stripe / k).
-std::optional<CompletedFrame> WorkQueue::finish(const WorkItem& item, const RenderStats& stats) {
+std::optional<CompletedFrame> WorkQueue::finish(const WorkItem& item, const RenderStats& stats, int rank,
+                                                std::string_view node) {
   std::lock_guard lock(mutex_);
   auto it = open_.find(key(item.pass, item.frame));
   const int index = item.pass == Pass::preview ? item.stripe / std::max(1, options_.preview_every) : item.stripe;
@@ -125,10 +147,11 @@ std::optional<CompletedFrame> WorkQueue::finish(const WorkItem& item, const Rend
   OpenFrame& of = it->second;
   of.done[index] = 1;
   of.stats += stats;
+  ++of.by.try_emplace(rank, std::string(node), 0).first->second.second;
   progress_.stats += stats;
   progress_.rows_done += layout_.row_count(item.stripe);
   if (--of.remaining > 0) return std::nullopt;
-  CompletedFrame done{item.pass, item.frame, std::move(*of.canvas), of.stats};
+  CompletedFrame done{item.pass, item.frame, std::move(*of.canvas), of.stats, makers_of(of.by), of.opened};
   of.canvas.reset();  // the slot stays taken until stored()
   return done;
 }

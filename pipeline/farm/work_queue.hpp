@@ -6,13 +6,17 @@
 // with a preview pass, every k-th stripe of every frame comes first.
 // Thread-safe.
 
+#include <chrono>
 #include <condition_variable>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
+#include "farm/frame_makers.hpp"
 #include "farm/stripes.hpp"
 #include "render/render_settings.hpp"
 
@@ -34,6 +38,8 @@ struct CompletedFrame {
   int frame = 0;
   FrameImage image;
   RenderStats stats;
+  FrameMakers makers;  // the ranks that rendered its sets, with their nodes
+  std::chrono::steady_clock::time_point dispatched;  // when its first set was handed out
 };
 
 struct QueueProgress {
@@ -69,9 +75,13 @@ class WorkQueue {
 
   // Where the rows of a handed-out set go (stable until its frame completes).
   FrameImage& canvas(const WorkItem& item);
-  // Marks a handed-out set done.  Returns the frame when this was its last
-  // stripe.  Throws std::logic_error for a set that is not out (a duplicate).
-  std::optional<CompletedFrame> finish(const WorkItem& item, const RenderStats& stats);
+  // Marks a handed-out set done, rendered by `rank` on `node` (a local
+  // farm's threads: rank 0 on this host).  Returns the frame when this was
+  // its last stripe, with the ranks that rendered it (those that rendered
+  // the most sets, if more than max_listed_ranks).  Throws std::logic_error
+  // for a set that is not out (a duplicate).
+  std::optional<CompletedFrame> finish(const WorkItem& item, const RenderStats& stats, int rank = 0,
+                                       std::string_view node = {});
   // The writer has stored a completed frame: frees its slot.
   void stored(Pass pass, int frame);
   // Every frame of both passes completed and stored.
@@ -99,6 +109,8 @@ class WorkQueue {
     std::vector<char> done;  // per stripe index
     int remaining = 0;
     RenderStats stats;
+    std::chrono::steady_clock::time_point opened;   // its first set handed out
+    std::map<int, std::pair<std::string, int>> by;  // rank -> its node and the sets it rendered
   };
   using Key = std::pair<int, int>;  // (pass, frame)
   static Key key(Pass p, int frame) { return {static_cast<int>(p), frame}; }

@@ -523,9 +523,22 @@ Reply MonitorApi::frames_reply(const Query& q) const {
       next = std::to_string(jf.frame);
       break;
     }
-    out += fmt::format("{}{{\"frame\": {}, \"core_seconds\": {}, \"rays\": {}, \"finished\": {}}}", n ? ", " : "",
-                       jf.frame, jf.cost.recorded() ? json_number(jf.cost.core_seconds + jf.cost.star_seconds) : "null",
-                       jf.cost.rays, jf.cost.finished);
+    // Who made it and its wall time, where its line records them (null,
+    // [] in older journals).
+    std::vector<int> ranks;
+    std::string nodes;
+    for (const farm::FrameMakers::Rank& r : jf.makers.ranks) {
+      ranks.push_back(r.rank);
+      if (!nodes.empty()) nodes += ',';
+      nodes += json_text(r.node);
+    }
+    out += fmt::format("{}{{\"frame\": {}, \"core_seconds\": {}, \"rays\": {}, \"finished\": {}, \"wall_seconds\": {}, "
+                       "\"ranks\": {}, \"nodes\": [{}], \"rank_count\": {}}}",
+                       n ? ", " : "", jf.frame,
+                       jf.cost.recorded() ? json_number(jf.cost.core_seconds + jf.cost.star_seconds) : "null",
+                       jf.cost.rays, jf.cost.finished,
+                       jf.cost.wall_seconds >= 0.0 ? json_number(jf.cost.wall_seconds) : "null", json_list(ranks), nodes,
+                       jf.makers.count);
     ++n;
   }
   return {200, "application/json",

@@ -5,13 +5,13 @@
 # interrupted and after it resumes (by the command the monitor gives to
 # copy, run as given); a real headless browser (Debian's
 # chromium) draws the page from it: the counts, a thumbnail per latest
-# frame, a point of the cost chart per finished frame (the screenshot is
-# kept as monitor.png); clicking a frame's pixel (Selenium) shows what
+# frame, a point of the cost chart per finished frame, the rank, node and
+# wall time of each latest frame (the screenshot is kept as monitor.png); clicking a frame's pixel (Selenium) shows what
 # `lightcone trace` says of it, with its path drawn (monitor_pixel.png);
 # hostile requests get 4xx and nothing outside the folder; an MPI run's
 # workers and what each holds, and one of them lost when it is killed,
-# named as what ended the run, with the event log's last lines
-# (docs/monitor.md); the monitor stops on a kill.
+# named as what ended the run, with the event log's last lines, and each
+# of its frames' ranks, node and wall time (docs/monitor.md); the monitor stops on a kill.
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
@@ -81,6 +81,11 @@ status=$(api "/api/status?$Q")
 [ "$(field 'd["frames"]["done"]' <<<"$status")" = 9 ] || fail "resumed: done: $status"
 [ "$(field 'd["run"]["state"]' <<<"$status")" = done ] || fail "resumed: state: $status"
 [ "$(api "/api/frames?$Q" | field 'len(d["frames"])')" = 9 ] || fail "frames: $(api "/api/frames?$Q")"
+# Each frame names who rendered it, on which node, and its wall time: a
+# render without MPI is rank 0 (its threads) on this host.
+HOST=$(hostname)
+[ "$(api "/api/frames?$Q" | field 'all(f["ranks"] == [0] and f["nodes"] == ["'"$HOST"'"] and f["rank_count"] == 1 and f["wall_seconds"] > 0 for f in d["frames"])')" = True ] \
+  || fail "the frames' rank, node and wall time: $(api "/api/frames?$Q")"
 curl -s --max-time 10 -o frame.png "$URL/api/frame.png?$Q&frame=40"
 cmp -s frame.png out/kerr_fall.0040.png || fail "the served frame 40 is not the file"
 
@@ -107,6 +112,9 @@ grep -q 'data-count="to_do">0<' page.html || fail "the page's to do"
 [ "$(grep -o '<figure data-frame=' page.html | wc -l)" = 8 ] || fail "the page shows $(grep -o '<figure data-frame=' page.html | wc -l) thumbnails, not the 8 latest"
 grep -q 'data-points="9"' page.html || fail "the cost chart has not 9 points: $(grep -o 'data-points="[0-9]*"' page.html)"
 grep -q 'class="state done"' page.html || fail "the page's run state"
+# The table of the latest frames: the newest first, its rank, node and wall time.
+grep -Eq "<tr data-frame=\"160\"><td>160</td><td class=\"rank\">0 \(local\)</td><td class=\"node\">$HOST</td><td class=\"wall\">[0-9]+\.[0-9] s</td>" page.html \
+  || fail "the page's frame table: $(grep -o '<table class="frames">.*</table>' page.html | head -c 600)"
 timeout 60 "${BROWSER[@]}" --screenshot="$WORK/monitor.png" "$URL/" >/dev/null 2>>browser.log || fail "chromium's screenshot: $(tail -3 browser.log)"
 [ -s monitor.png ] || fail "no screenshot"
 
@@ -183,6 +191,11 @@ before=$(grep -c '^frame=' mpi_out/kerr_fall.journal || true)
 mpi 3 "$LIGHTCONE" render "$FALL" --out mpi_out "${MPI_ARGS[@]}" 2>mpi_resume.log || fail "the MPI resume: $(cat mpi_resume.log)"
 grep -q "resuming: $before of 6 frames already finished" mpi_resume.log || fail "the MPI resume: $(cat mpi_resume.log)"
 [ -z "$(grep -o '^frame=[0-9]*' mpi_out/kerr_fall.journal | sort | uniq -d)" ] || fail "a frame was rendered twice"
+# Every frame of the MPI render, before the kill and after the resume, names
+# the workers (ranks 1 and 2, never the master) whose sets made it, their
+# node, and its wall time.
+[ "$(api "/api/frames?$MQ" | field 'len(d["frames"]) == 6 and all(f["ranks"] and set(f["ranks"]) <= {1, 2} and f["nodes"] == ["'"$HOST"'"] * len(f["ranks"]) and f["rank_count"] == len(f["ranks"]) and f["wall_seconds"] > 0 for f in d["frames"])')" = True ] \
+  || fail "the MPI frames' ranks, nodes and wall time: $(api "/api/frames?$MQ")"
 status=$(api "/api/status?$MQ")
 [ "$(field 'd["frames"]["done"], d["run"]["state"], sorted(w["state"] for w in d["run"]["workers"])' <<<"$status")" = \
   "(6, 'done', ['done', 'done'])" ] || fail "the resumed MPI run: $status"

@@ -4,6 +4,7 @@
 // of open frames is bounded, and threads sharing the queue agree.
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <set>
 #include <thread>
@@ -120,6 +121,43 @@ TEST(FarmQueue, FrameCompletesWithItsLastStripeAndHoldsItsRows) {
   q.stored(Pass::full, 0);
   EXPECT_TRUE(q.all_stored());
   EXPECT_EQ(q.progress().frames_stored, 1);
+}
+
+// A completed frame names the ranks whose sets made it, with their nodes,
+// and when its first set was handed out (the journal's wall time starts
+// there); of more ranks than are listed, those that rendered the most.
+TEST(FarmQueue, AFrameNamesTheRanksThatRenderedItAndWhenItWasDispatched) {
+  WorkQueue q(settings(2, 4), StripeLayout(4, 4), {0}, {});
+  const auto before = std::chrono::steady_clock::now();
+  const auto a = *q.take_for(2), b = *q.take_for(1), c = *q.take_for(2), d = *q.take_for(2);
+  q.finish(a, {}, 2, "node-b");
+  q.finish(b, {}, 1, "node-a");
+  q.finish(c, {}, 2, "node-b");
+  const auto done = q.finish(d, {}, 2, "node-b");
+  ASSERT_TRUE(done.has_value());
+  EXPECT_EQ(done->makers, (FrameMakers{{{1, "node-a"}, {2, "node-b"}}, 2}));
+  EXPECT_GE(done->dispatched, before);
+  EXPECT_LE(done->dispatched, std::chrono::steady_clock::now());
+
+  const int ranks = static_cast<int>(max_listed_ranks) + 4;
+  WorkQueue many(settings(2, 64), StripeLayout(64, 64), {0}, {});
+  std::vector<WorkItem> items;
+  while (auto i = many.take()) items.push_back(*i);
+  ASSERT_EQ(items.size(), 64u);
+  // Ranks 1..20: rank r renders one set, ranks 5..20 a second one too.
+  std::vector<int> by;
+  for (int r = 1; r <= ranks; ++r) by.push_back(r);
+  for (int r = 5; r <= ranks; ++r) by.push_back(r);
+  std::optional<CompletedFrame> last;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const int r = k < by.size() ? by[k] : ranks;
+    last = many.finish(items[k], {}, r, "n" + std::to_string(r));
+  }
+  ASSERT_TRUE(last.has_value());
+  EXPECT_EQ(last->makers.count, ranks);
+  ASSERT_EQ(last->makers.ranks.size(), max_listed_ranks);
+  EXPECT_EQ(last->makers.ranks.front(), (FrameMakers::Rank{5, "n5"}));  // 1..4 rendered the fewest
+  EXPECT_EQ(last->makers.ranks.back(), (FrameMakers::Rank{ranks, "n" + std::to_string(ranks)}));
 }
 
 TEST(FarmQueue, DuplicateOrUnknownSetIsRefused) {

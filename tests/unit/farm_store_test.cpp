@@ -7,10 +7,12 @@
 #include <fstream>
 #include <iterator>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "farm/checked_line.hpp"
 #include "farm/frame_files.hpp"
 #include "farm/frame_store.hpp"
 #include "farm/resume_plan.hpp"
@@ -120,6 +122,52 @@ TEST(FarmStore, ResumeTrustsJournalAndFileSizes) {
   EXPECT_EQ(store.state(3, st, "00000000000000aa"), FrameState::todo);
   EXPECT_EQ(store.state(0, st, "00000000000000bb"), FrameState::stale);
   EXPECT_EQ(store.state(0, {8, 4, 1, false}, "00000000000000aa"), FrameState::stale);
+}
+
+// A stored frame's line records who rendered it and the wall time from
+// its dispatch until its files were stored; a journal an earlier lightcone
+// wrote (lines without them) still resumes: its frames are done.
+TEST(FarmStore, AFrameRecordsWhoMadeItAndAnOlderJournalStillResumes) {
+  test::ScratchDir dir;
+  const FrameSettings st{4, 2, 1, false};
+  const auto dispatched = std::chrono::steady_clock::now() - std::chrono::milliseconds(1500);
+  {
+    FrameStore store(dir.path(), "s");
+    store.write_frame(0, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8, .reused = 0, .core_seconds = 0.5}, Look{},
+                      {{{1, "node-a"}, {2, "node-b"}}, 2}, dispatched);
+    store.write_frame(1, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, Look{});
+  }
+  const JournalContents j = read_journal(dir / "s.journal");
+  EXPECT_EQ(j.frames.at(0).makers, (FrameMakers{{{1, "node-a"}, {2, "node-b"}}, 2}));
+  EXPECT_GE(j.frames.at(0).cost.wall_seconds, 1.5);
+  EXPECT_LT(j.frames.at(0).cost.wall_seconds, 60.0);
+  EXPECT_EQ(j.frames.at(1).cost.wall_seconds, -1.0);  // no dispatch known: none recorded
+  EXPECT_TRUE(j.frames.at(1).makers.ranks.empty());
+
+  // The same folder's journal as an earlier lightcone wrote it: its lines
+  // without the new fields (written out literally), then resumed.
+  const auto exr = std::filesystem::file_size(frame_path(dir.path(), "s", 0, "exr"));
+  const auto png = std::filesystem::file_size(frame_path(dir.path(), "s", 0, "png"));
+  {
+    std::ofstream old(dir / "s.journal", std::ios::binary | std::ios::trunc);
+    old << journal_header_line() << "\n"
+        << with_check(fmt::format("frame=0 size=4x2 supersample=1 layers=0 sampling=full inputs=00000000000000aa "
+                                  "exr={} png={} rays=8 reused=0 core_seconds=0.500 star_seconds=0.000 finished=1764000000",
+                                  exr, png))
+        << "\n";
+  }
+  FrameStore store(dir.path(), "s");
+  EXPECT_EQ(store.journal().bad_lines, 0);
+  EXPECT_EQ(store.state(0, st, "00000000000000aa"), FrameState::done);
+  EXPECT_EQ(store.state(1, st, "00000000000000aa"), FrameState::todo);
+  // Appending to it keeps the older line as it was.
+  store.write_frame(1, tiny(), {}, st, "00000000000000aa", {}, {.rays = 8}, Look{}, {{{0, "here"}}, 1},
+                    std::chrono::steady_clock::now());
+  const JournalContents resumed = read_journal(dir / "s.journal");
+  EXPECT_EQ(resumed.frames.size(), 2u);
+  EXPECT_TRUE(resumed.frames.at(0).makers.ranks.empty());
+  EXPECT_EQ(resumed.frames.at(1).makers, (FrameMakers{{{0, "here"}}, 1}));
+  EXPECT_GE(resumed.frames.at(1).cost.wall_seconds, 0.0);
 }
 
 TEST(FarmStore, RefusalNamesTheChangedInputAndForceRendersOnlyThose) {

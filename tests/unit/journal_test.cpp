@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "farm/checked_line.hpp"
 #include "farm/content_hash.hpp"
 #include "farm/journal.hpp"
 #include "scratch_dir.hpp"
@@ -378,6 +379,64 @@ TEST(Journal, CostRoundTripsAndOlderLinesLackIt) {
   EXPECT_FALSE(j.frames.at(7).cost.recorded());
   EXPECT_EQ(j.frames.at(7).cost.rays, 5);
   EXPECT_EQ(journal_frame_line(old).find("reused="), std::string::npos);
+}
+
+// Who made a frame and its wall time (the monitor's frame table): they
+// round-trip, a node's name of any bytes (the list's comma, a space, '%')
+// reads back, a list cut to max_listed_ranks keeps how many there were,
+// and a malformed record makes the line bad as any malformed field does.
+TEST(Journal, MakersAndWallTimeRoundTrip) {
+  JournalFrame f = frame(3);
+  f.cost.wall_seconds = 3.25;
+  f.makers = {{{1, "node-a.farm"}, {2, "odd,name 100%"}, {7, ""}}, 3};
+  const std::string line = journal_frame_line(f);
+  EXPECT_NE(line.find(" wall_seconds=3.250 ranks=1,2,7 nodes=node-a.farm,odd%2Cname%20100%25, "), std::string::npos) << line;
+  EXPECT_EQ(line.find("rank_count"), std::string::npos);  // every rank is listed
+  JournalContents j = parse_journal(journal_text(0) + line + "\n", "j");
+  ASSERT_EQ(j.frames.count(3), 1u);
+  EXPECT_EQ(j.frames.at(3).cost.wall_seconds, 3.25);
+  EXPECT_EQ(j.frames.at(3).makers, f.makers);
+  // Cut: 16 of 40 ranks listed.
+  f.makers.ranks.clear();
+  for (int r = 1; r <= static_cast<int>(max_listed_ranks); ++r) f.makers.ranks.push_back({r, "n"});
+  f.makers.count = 40;
+  j = parse_journal(journal_text(0) + journal_frame_line(f) + "\n", "j");
+  EXPECT_EQ(j.frames.at(3).makers, f.makers);
+  EXPECT_NE(journal_frame_line(f).find(" rank_count=40"), std::string::npos);
+  // A local farm's threads: rank 0 on this node.
+  f.makers = {{{0, "here"}}, 1};
+  j = parse_journal(journal_text(0) + journal_frame_line(f) + "\n", "j");
+  EXPECT_EQ(j.frames.at(3).makers, f.makers);
+}
+
+TEST(Journal, MalformedMakersMakeTheLineBad) {
+  const std::string base = journal_frame_line(frame(1));
+  const std::string content = base.substr(0, base.rfind(" #"));
+  for (const std::string fields : {" ranks=1,2 nodes=a", " ranks=1 nodes=a,b", " ranks=2,1 nodes=a,b", " ranks=1",
+                                   " nodes=a", " ranks=1 nodes=a rank_count=1", " ranks=x nodes=a",
+                                   " ranks=1 nodes=a rank_count=-3", " wall_seconds=-1", " wall_seconds=nan",
+                                   " ranks=1,1 nodes=a,a"}) {
+    const JournalContents j = parse_journal(journal_header_line() + "\n" + with_check(content + fields) + "\n", "j");
+    EXPECT_EQ(j.frames.size(), 0u) << fields;
+    EXPECT_EQ(j.bad_lines, 1) << fields;
+  }
+}
+
+// A line as lightcone wrote it before it recorded who made a frame (a
+// journal of an earlier release, written out literally): it reads, with
+// its makers and wall time unrecorded, and a line written for it again
+// (develop's) stays without them.
+TEST(Journal, OlderLinesLackMakersAndWallTime) {
+  const std::string old_line = with_check(
+      "frame=4 size=48x32 supersample=1 layers=0 sampling=full inputs=0123456789abcdef script=0123456789abcdef "
+      "exr=1004 png=204 rays=1536 reused=0 core_seconds=0.500 star_seconds=0.000 finished=1764000004");
+  const JournalContents j = parse_journal(journal_header_line() + "\n" + old_line + "\n", "j");
+  ASSERT_EQ(j.frames.count(4), 1u);
+  const JournalFrame& f = j.frames.at(4);
+  EXPECT_TRUE(f.cost.recorded());
+  EXPECT_EQ(f.cost.wall_seconds, -1.0);
+  EXPECT_TRUE(f.makers.ranks.empty());
+  EXPECT_EQ(journal_frame_line(f), old_line);
 }
 
 }  // namespace

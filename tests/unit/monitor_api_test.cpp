@@ -38,7 +38,9 @@ namespace fs = std::filesystem;
 FrameImage tiny() { return test::tiny_frame(); }
 
 // A folder with three finished frames of "s" (costs 1, 2 and 3
-// core-seconds) and a run logged as still going with frame 3 in flight.
+// core-seconds; the last made by ranks 1 and 2, dispatched 2 s before it
+// was stored, the others as older journals hold them, without) and a run
+// logged as still going with frame 3 in flight.
 fs::path render_folder(const test::ScratchDir& scratch) {
   const fs::path dir = scratch / "out";
   {
@@ -46,7 +48,9 @@ fs::path render_folder(const test::ScratchDir& scratch) {
     const farm::FrameSettings st{4, 2, 1, false, false};
     for (int f = 0; f < 3; ++f)
       store.write_frame(f, tiny(), {}, st, "00000000000000aa", {"00000000000000bb", ""},
-                        {.rays = 8, .reused = 0, .core_seconds = 1.0 + f}, Look{});
+                        {.rays = 8, .reused = 0, .core_seconds = 1.0 + f}, Look{},
+                        f == 2 ? farm::FrameMakers{{{1, "node-a"}, {2, "node \"b\""}}, 2} : farm::FrameMakers{},
+                        f == 2 ? std::optional(std::chrono::steady_clock::now() - std::chrono::seconds(2)) : std::nullopt);
   }
   farm::EventLog log(dir, "s");
   log.run_started({.pid = 9, .host = "n0", .ranks = 1, .threads = 2, .todo = 5, .width = 4, .height = 2});
@@ -87,6 +91,11 @@ TEST(MonitorApi, StatusCountsTheJournalAndTheRun) {
   EXPECT_TRUE(has(none, "{\"total\": 3, \"frames\": [], \"next\": null}")) << none.body;
   const Reply events = api.get("/api/events", {{"folder", "0"}, {"shot", "s"}});
   EXPECT_TRUE(has(events, "\"event\": \"progress\"")) << events.body;
+  // Each frame's ranks and nodes and its wall time, where its line has them.
+  const Reply made = api.get("/api/frames", {{"folder", "0"}, {"shot", "s"}});
+  EXPECT_TRUE(has(made, "\"ranks\": [1,2], \"nodes\": [\"node-a\",\"node \\\"b\\\"\"], \"rank_count\": 2}")) << made.body;
+  EXPECT_TRUE(has(made, "\"wall_seconds\": 2.")) << made.body;
+  EXPECT_TRUE(has(made, "\"wall_seconds\": null, \"ranks\": [], \"nodes\": [], \"rank_count\": 0}")) << made.body;
   const Reply png = api.get("/api/frame.png", {{"folder", "0"}, {"shot", "s"}, {"frame", "2"}});
   EXPECT_EQ(png.status, 200);
   EXPECT_EQ(png.content_type, "image/png");
