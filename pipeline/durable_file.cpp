@@ -148,22 +148,52 @@ void DurableFile::clear_temporary_name() const {
 }
 
 DurableFile::~DurableFile() {
-  // A destructor must not throw: clean-up is best effort.
+  // A destructor must not throw: clean-up is best effort.  Only a temporary
+  // this object made is removed: whatever else is under its name was put
+  // there by someone else, and is left for them.
   if (fd_ >= 0) ::close(fd_);
   std::error_code ec;
-  if (!committed_ || stream_) fs::remove(temp_, ec);
+  if (created_ && (!committed_ || stream_)) fs::remove(temp_, ec);
+}
+
+void DurableFile::create_temp() {
+  // O_EXCL (which never follows a link): the constructor cleared the name,
+  // so anything there now was put there since, and is neither written
+  // through nor taken as the temporary.
+  fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd_ >= 0) {
+    created_ = true;
+    return;
+  }
+  if (errno != EEXIST) fail("write", final_, errno);
+  throw std::runtime_error(
+      fmt::format("cannot write {}: something appeared under its temporary's name {} after lightcone had cleared "
+                  "it (a planted link?), and lightcone writes only into a temporary it created itself: nothing was "
+                  "written, and what is there was left as it is (move it away)",
+                  final_.string(), temp_.string()));
+}
+
+fs::path DurableFile::library_path() {
+  if (committed_) throw std::logic_error("DurableFile::library_path after commit");
+  if (fd_ < 0) create_temp();
+  // Without /proc (a chroot, a container without it) the path would lead
+  // nowhere, or elsewhere: say so rather than let the library fail vaguely.
+  const fs::path path = descriptor_path(fd_);
+  struct stat via {}, own {};
+  if (::stat(path.c_str(), &via) != 0 || ::fstat(fd_, &own) != 0 || via.st_dev != own.st_dev ||
+      via.st_ino != own.st_ino)
+    throw std::runtime_error(fmt::format(
+        "cannot write {}: {} does not lead to its temporary (is /proc mounted?); lightcone hands the image and video "
+        "libraries that path, never the temporary's name, which a link planted there could lead elsewhere",
+        final_.string(), path.string()));
+  return path;
 }
 
 void DurableFile::write(std::string_view bytes) {
   // Input: the next bytes of the file.  Loops because write() may take
   // fewer bytes than asked, and a signal may interrupt it.
   if (committed_) throw std::logic_error("DurableFile::write after commit");
-  if (fd_ < 0) {
-    // O_EXCL: the constructor cleared the name, so anything there now was
-    // put there since, and is not written through.
-    fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
-    if (fd_ < 0) fail("write", final_, errno);
-  }
+  if (fd_ < 0) create_temp();
   while (!bytes.empty()) {
     const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
     if (n < 0) {
@@ -174,17 +204,27 @@ void DurableFile::write(std::string_view bytes) {
   }
 }
 
+void DurableFile::check_temp_is_ours() const {
+  // A library wrote through the descriptor, so the file is right whatever
+  // is under its name by now; but the rename takes the name, which must
+  // still hold that file, or a file or link put there meanwhile would
+  // become the output.  Assumes sync_temp() found the temporary created.
+  struct stat own {}, named {};
+  if (::fstat(fd_, &own) != 0) fail("write", final_, errno);
+  if (::lstat(temp_.c_str(), &named) == 0 && named.st_dev == own.st_dev && named.st_ino == own.st_ino) return;
+  throw std::runtime_error(fmt::format(
+      "cannot write {}: its temporary {} was removed or replaced while it was being written, and lightcone puts in "
+      "place only the file it wrote (nothing was put in place)",
+      final_.string(), temp_.string()));
+}
+
 void DurableFile::sync_temp() const {
   // The data must be on disk before the name points at it, or a crash could
-  // leave a complete-looking name over an empty file.  A library that wrote
-  // by path has closed its file: reopen it to sync.
-  if (fd_ >= 0) {
-    if (::fsync(fd_) != 0) fail("sync", final_, errno);
-    return;
-  }
-  const int fd = ::open(temp_.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) fail("sync", final_, errno);
-  sync_and_close(fd, final_);
+  // leave a complete-looking name over an empty file.  A temporary never
+  // created (a library that failed before writing anything) is not looked
+  // for by name: a file there is not this one's.
+  if (fd_ < 0) fail("sync", final_, ENOENT);
+  if (::fsync(fd_) != 0) fail("sync", final_, errno);
 }
 
 void DurableFile::rename_into_place() {
@@ -202,14 +242,20 @@ void DurableFile::rename_into_place() {
 void DurableFile::copy_into_stream() {
   // Assumes the temporary is written.  Opens the target without truncating
   // or creating (a device or FIFO exists; truncating a descriptor a shell
-  // opened for `>>` would lose what it holds) and copies the bytes in.
-  if (fd_ >= 0) {
-    const int rc = ::close(fd_);
-    fd_ = -1;
-    if (rc != 0) fail("write", final_, errno);
+  // opened for `>>` would lose what it holds) and copies the bytes in.  The
+  // temporary is read through its descriptor, never its name: its name in
+  // the system's temporary directory is anyone's to plant a file at.
+  if (fd_ < 0) fail("read back the temporary of", final_, ENOENT);  // never created
+  const int in = ::open(descriptor_path(fd_).c_str(), O_RDONLY | O_CLOEXEC);
+  const int open_err = errno;
+  const int rc = ::close(fd_);
+  const int close_err = errno;
+  fd_ = -1;
+  if (in < 0) fail("read back the temporary of", final_, open_err);
+  if (rc != 0) {
+    ::close(in);
+    fail("write", final_, close_err);
   }
-  const int in = ::open(temp_.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (in < 0) fail("read back the temporary of", final_, errno);
   const int out = descriptor_ >= 0 ? ::fcntl(descriptor_, F_DUPFD_CLOEXEC, 0)
                                    : ::open(target_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
   if (out < 0) {
@@ -254,7 +300,9 @@ void commit_together(std::initializer_list<DurableFile*> files) {
   // first rename, so a failed sync leaves every final name as it was.
   for (DurableFile* f : files) {
     if (f->committed_) throw std::logic_error("DurableFile committed twice: " + f->final_.string());
-    if (!f->stream_) f->sync_temp();  // (a device or FIFO is not synced: it keeps nothing)
+    if (f->stream_) continue;  // not synced (a device or FIFO keeps nothing), nor renamed: read by its descriptor
+    f->sync_temp();
+    f->check_temp_is_ours();
   }
   std::vector<fs::path> dirs;
   for (DurableFile* f : files) {
@@ -265,6 +313,8 @@ void commit_together(std::initializer_list<DurableFile*> files) {
   }
   for (const fs::path& dir : dirs) sync_directory(dir);
 }
+
+fs::path descriptor_path(int fd) { return fmt::format("/proc/self/fd/{}", fd); }
 
 void sync_directory(const fs::path& dir) {
   const fs::path d = dir.empty() ? fs::path(".") : dir;

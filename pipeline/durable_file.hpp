@@ -7,7 +7,7 @@
 //
 // How: the bytes go to a temporary beside the final name (same directory,
 // so the rename is atomic), written either through write() or by a library
-// that takes a path (FFmpeg, the image layer) at temp_path().  commit()
+// that takes a path (FFmpeg, the image layer) at library_path().  commit()
 // fsyncs the temporary, renames it over the final name and fsyncs the
 // directory.  A DurableFile destroyed uncommitted (an error, an interrupt
 // unwinding the stack) removes its temporary and leaves the final name as it
@@ -34,7 +34,13 @@
 //
 // The temporary is never a link either: a file already under its name (a
 // killed process of the same pid left it, or someone planted it) is removed
-// first, and write() creates it afresh without following a link.
+// first, and write() or library_path() creates it afresh (O_EXCL, without
+// following a link).  A library is never handed the temporary's name: its
+// name is predictable (the pid), so a link planted there after it was
+// cleared would lead the library's own open(O_CREAT | O_TRUNC) to a file
+// elsewhere.  It is handed /proc/self/fd/N of the descriptor created here,
+// which opens this very file whatever is under the name by then.  commit()
+// renames the temporary only if its name still holds that file.
 
 #include <filesystem>
 #include <initializer_list>
@@ -74,8 +80,19 @@ class DurableFile {
 
   // The path as given (what messages name).
   const std::filesystem::path& final_path() const { return final_; }
-  // Where a library that writes by path should write (it creates the file).
+  // The temporary's name, for messages and tests.  Never hand it to a
+  // library that writes by path: library_path() is what it writes to.
   const std::filesystem::path& temp_path() const { return temp_; }
+
+  // Where a library that writes by path (the image layer, FFmpeg) writes,
+  // reads back what it wrote, or reopens it: /proc/self/fd/N of the
+  // temporary, which the first call creates as write() does (so that it
+  // holds only what the library writes; a library's truncating open is
+  // harmless).  Valid while this object lives and is not committed.
+  // Throws naming the final path when the temporary cannot be created
+  // (something appeared under its name since the constructor cleared it,
+  // a missing directory, a full disk) or /proc is not there to reach it.
+  std::filesystem::path library_path();
 
   // Appends `bytes` to the temporary, creating it on the first call; throws
   // on a write error (a missing directory, a full disk).
@@ -92,6 +109,8 @@ class DurableFile {
   friend void commit_together(std::initializer_list<DurableFile*> files);
 
  private:
+  void create_temp();
+  void check_temp_is_ours() const;
   void sync_temp() const;
   void rename_into_place();
   void copy_into_stream();
@@ -103,11 +122,19 @@ class DurableFile {
   std::filesystem::path temp_;
   bool stream_ = false;  // target_ is written in place (a device, FIFO or descriptor)
   int descriptor_ = -1;  // for /dev/fd/N and the like: N, written through a copy of it
-  int fd_ = -1;          // open while write() is in use
+  int fd_ = -1;          // the temporary, open from its creation (write(), library_path()) to commit()
+  bool created_ = false;  // the temporary was made by this object (only then is it removed)
   bool committed_ = false;
 };
 
 void commit_together(std::initializer_list<DurableFile*> files);
+
+// Input: an open descriptor of this process.  Output: /proc/self/fd/N, a
+// path that opens the very file the descriptor is open on (never what is
+// under that file's name by then), for a library that takes a path: the
+// image and video writers (DurableFile::library_path), the monitor's EXR
+// reader.  The path is a link, so a reader that refuses links cannot use it.
+std::filesystem::path descriptor_path(int fd);
 
 // Input: a directory ("" is the current one).  fsyncs it, so that renames
 // and new names in it survive a crash; throws naming it.

@@ -18,7 +18,7 @@ int run_starfield(const StarfieldCommand& cmd) {
     throw std::invalid_argument(fmt::format("--width {}: must be even, between 64 and 16384", cmd.width));
   DurableFile out(cmd.output);
   // Written by the image layer, whose errors then name the final file.
-  write_png(out.temp_path(), render_starfield(cmd.width, cmd.width / 2, cmd.seed), out.final_path());
+  write_png(out.library_path(), render_starfield(cmd.width, cmd.width / 2, cmd.seed), out.final_path());
   out.commit();
   fmt::print(stderr, "starfield: {}x{} (seed {}) -> {}\n", cmd.width, cmd.width / 2, cmd.seed, cmd.output.string());
   return 0;

@@ -173,7 +173,9 @@ class CheckedFileOutput final : public OIIO::Filesystem::IOProxy {
 // `path` does not matter), through CheckedFileOutput.  Messages name
 // `named` when given (the final name of a temporary `path`), else `path`.
 // Removes the half-written file if writing or closing fails after it was
-// opened; the reason is the OS's when it had one ("No space left on device").
+// opened (a descriptor's path, /proc/self/fd/N, cannot be removed: the
+// file's owner, a DurableFile, removes it); the reason is the OS's when it
+// had one ("No space left on device").
 void write_with(const char* format, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* pixels,
                 std::string_view what, const fs::path& path, const fs::path& named) {
   const fs::path& blame = named.empty() ? path : named;

@@ -8,7 +8,11 @@
 // names ("x.0001.exr.tmp-123") and renames.  Readers detect the format from
 // the file's content.  Every failure is a std::runtime_error whose message
 // names the file and the reason.  A writer given `named` (a DurableFile's
-// final path while `path` is its temporary) names that file instead.
+// final path while `path` leads to its temporary) names that file instead.
+// A writer opens `path` as it is, following links (O_CREAT | O_TRUNC): a
+// file in a folder lightcone keeps is never handed over by name but as the
+// path of a descriptor lightcone created it under (/proc/self/fd/N,
+// DurableFile::library_path in pipeline/durable_file.hpp).
 
 #include <filesystem>
 #include <functional>

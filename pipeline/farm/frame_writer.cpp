@@ -17,14 +17,16 @@ enum class FrameFormat { exr, png };
 // disk: an EXR is read back whole and its size checked; a PNG's chunks are
 // checked whole with their CRCs and its size (image/png_check.hpp), which
 // finds what a read-back would (a file cut short or changed) without
-// decoding it.  Throws naming the final name.  The caller commits.
-void write_verified(const DurableFile& file, FrameFormat format, const FrameImage& image,
+// decoding it.  Both go through the temporary's descriptor (library_path),
+// never its name, so a link planted under the name is neither written
+// through nor read.  Throws naming the final name.  The caller commits.
+void write_verified(DurableFile& file, FrameFormat format, const FrameImage& image,
                     const ImageMetadata& metadata = {}, PngDepth depth = PngDepth::eight) {
-  const std::filesystem::path& temp = file.temp_path();
+  const std::filesystem::path temp = file.library_path();
   if (format == FrameFormat::exr)
-    write_exr(temp, image, metadata);
+    write_exr(temp, image, metadata, file.final_path());
   else
-    write_png(temp, image, {}, depth);
+    write_png(temp, image, file.final_path(), depth);
   try {
     if (format == FrameFormat::png) return check_png_file(temp, image.width, image.height);
     const FrameImage back = read_exr(temp);

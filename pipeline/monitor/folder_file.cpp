@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "durable_file.hpp"
+
 namespace lc::monitor {
 
 FolderFile::FolderFile(const std::filesystem::path& path) {
@@ -40,7 +42,7 @@ FolderFile::~FolderFile() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-std::filesystem::path FolderFile::open_file_path() const { return fmt::format("/proc/self/fd/{}", fd_); }
+std::filesystem::path FolderFile::open_file_path() const { return descriptor_path(fd_); }
 
 std::string FolderFile::head(std::size_t bytes) const { return read_at(0, bytes); }
 

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "core/json.hpp"
+#include "durable_file.hpp"
 #include "farm/event_log.hpp"
 #include "farm/frame_files.hpp"
 #include "farm/journal.hpp"
@@ -633,16 +634,22 @@ Reply MonitorApi::layer_png(const Query& q) const {
                                         : fmt::format("frame {} has no layer '{}'; it has {}", frame,
                                                       wanted->second.substr(0, 100), names));
   }
-  // Through a temporary file: the PNG writer writes by path.
+  // Through a temporary file: the PNG writer writes by path.  It writes
+  // through the descriptor mkstemp made (durable_file.hpp's
+  // descriptor_path), never by the name in the shared temporary directory;
+  // read_file reads the name back only as a regular file, not a link.
   std::string pattern = (fs::temp_directory_path() / "lightcone-layer-XXXXXX").string();
   const int fd = ::mkstemp(pattern.data());
   if (fd < 0) throw std::runtime_error("cannot make a temporary file for the layer's picture");
-  ::close(fd);
   struct Remove {
     std::string path;
-    ~Remove() { std::remove(path.c_str()); }
-  } remove{pattern};
-  write_png(pattern, picture);
+    int fd;
+    ~Remove() {
+      ::close(fd);
+      std::remove(path.c_str());
+    }
+  } remove{pattern, fd};
+  write_png(descriptor_path(fd), picture);
   return {200, "image/png", read_file(pattern)};
 }
 

@@ -120,7 +120,9 @@ ConcatResult concat_videos(const std::vector<fs::path>& inputs, const fs::path& 
 
   const std::string where = out.string();
   Output o(out, name);
-  libav::check(avformat_alloc_output_context2(&o.ctx, nullptr, libav::muxer_name(container), o.file.temp_path().c_str()),
+  // By the temporary's descriptor path, never its name, as VideoWriter does.
+  const std::string file = o.file.library_path().string();
+  libav::check(avformat_alloc_output_context2(&o.ctx, nullptr, libav::muxer_name(container), file.c_str()),
                fmt::format("cannot write {}", where));
   AVStream* st = avformat_new_stream(o.ctx, nullptr);
   if (!st) throw std::bad_alloc();
@@ -131,7 +133,7 @@ ConcatResult concat_videos(const std::vector<fs::path>& inputs, const fs::path& 
   st->avg_frame_rate = first.avg_frame_rate;
   st->r_frame_rate = first.avg_frame_rate;
   libav::add_layout(o.ctx, st, layout, where);
-  libav::check(avio_open(&o.ctx->pb, o.file.temp_path().c_str(), AVIO_FLAG_WRITE), fmt::format("cannot write {}", where));
+  libav::check(avio_open(&o.ctx->pb, file.c_str(), AVIO_FLAG_WRITE), fmt::format("cannot write {}", where));
   libav::write_header(o.ctx, container, st->time_base, where);
 
   // Each input is shifted by `offset` (output time base) so it starts where

@@ -184,7 +184,7 @@ void write_contact_sheet(const FrameSequence& sequence, const ContactSheetOption
   // Builds the sheet first (reading every pick), then writes it atomically.
   const FrameImage sheet = make_contact_sheet(sequence, options);
   DurableFile file(out, StaleTemporaries::remove, options.output_name);
-  write_png(file.temp_path(), sheet, file.final_path());
+  write_png(file.library_path(), sheet, file.final_path());
   file.commit();
 }
 

@@ -125,7 +125,10 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
   if (!codec)
     throw std::runtime_error(fmt::format("cannot write {}: this FFmpeg has no {} encoder for {}", where,
                                          encoder_name(options.codec), codec_name(options.codec)));
-  libav::check(avformat_alloc_output_context2(&m.fmt, nullptr, libav::muxer_name(container), m.output.temp_path().c_str()),
+  // FFmpeg opens its file by path, and reopens it (faststart reads it
+  // back): the temporary's descriptor path, never its name (durable_file.hpp).
+  const std::string file = m.output.library_path().string();
+  libav::check(avformat_alloc_output_context2(&m.fmt, nullptr, libav::muxer_name(container), file.c_str()),
                fmt::format("cannot write {}", where));
   m.stream = avformat_new_stream(m.fmt, nullptr);
   m.enc = avcodec_alloc_context3(codec);
@@ -169,7 +172,7 @@ VideoWriter::VideoWriter(const std::filesystem::path& out, int width, int height
 
   libav::add_layout(m.fmt, m.stream, options.layout, where);
 
-  libav::check(avio_open(&m.fmt->pb, m.output.temp_path().c_str(), AVIO_FLAG_WRITE),
+  libav::check(avio_open(&m.fmt->pb, file.c_str(), AVIO_FLAG_WRITE),
                fmt::format("cannot write {}", where));
   libav::write_header(m.fmt, container, m.enc->time_base, where);
 

@@ -85,7 +85,7 @@ expect_error new_dir_full "$full" -- "$LIGHTCONE" render tiny.lua --out "$disk/n
 missing="No such file or directory"
 expect_error plot_missing "cannot write nowhere/rays.svg: $missing" -- "$LIGHTCONE" plot rays.csv -o nowhere/rays.svg
 expect_error plot_png_missing "cannot write nowhere/rays.png: $missing" -- "$LIGHTCONE" plot rays.csv -o nowhere/rays.png
-expect_error sheet_missing "cannot write PNG 'nowhere/sheet.png': $missing" -- "$LIGHTCONE" contact-sheet frames -o nowhere/sheet.png
+expect_error sheet_missing "cannot write nowhere/sheet.png: $missing" -- "$LIGHTCONE" contact-sheet frames -o nowhere/sheet.png
 check_refused sheet_missing "$WORK/nowhere/sheet.png" "$missing"
 [ ! -e nowhere ] || fail "a refused output made its directory"
 e2e_end

@@ -71,6 +71,76 @@ expect_error preview_link "preview_link/preview: it is a symbolic link" -- \
   "${T[@]}" "$LIGHTCONE" render tiny.lua --out preview_link --preview 2 --size 16x16
 [ -z "$(ls -A outside_dir)" ] || fail "previews were written through a link: $(ls outside_dir)"
 
+# --- Temporaries: a frame's or a video's temporary ("<name>.tmp-<pid>") has
+# a predictable name, and the image and video libraries were handed that
+# name: a link planted there after lightcone cleared it (here planted again
+# and again while the command runs) had OpenImageIO and FFmpeg write the
+# frame or video into the file it led to. Now they write only a temporary
+# lightcone created, through its descriptor: the command either stops
+# naming what was planted, or (if the planter was too slow) finishes with
+# the right files; the link's target is never written.
+cat >plant.py <<'PY'
+# plant.py PID DIR VICTIM NAME...: while process PID lives (60 s at most),
+# keeps a link to VICTIM at DIR/NAME.tmp-PID for every NAME, made again as
+# soon as it is removed, as a hostile user of a shared folder would.
+import os, sys, time
+pid, d, victim, names = int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4:]
+temps = [os.path.join(d, f"{n}.tmp-{pid}") for n in names]
+deadline = time.monotonic() + 60
+while time.monotonic() < deadline:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        break
+    for t in temps:
+        try:
+            os.symlink(victim, t)
+        except (FileExistsError, FileNotFoundError):
+            pass
+    time.sleep(0.0001)
+PY
+# planted NAME DIR OUTPUT... -- COMMAND...: runs COMMAND (lightcone itself,
+# not under `timeout`: the temporaries carry its pid) with links planted at
+# the temporaries of DIR/OUTPUT...; it must not write outside.txt, stop (if
+# it stops) naming a planted temporary, and leave no link under a final
+# name.  The planter gives up after 60 s, and a command still running then
+# is killed and fails the test.
+planted() {
+  local name=$1 dir=$2 rc=0 out
+  shift 2
+  local outputs=()
+  while [ "$1" != -- ]; do outputs+=("$1"); shift; done
+  shift
+  "$@" >"$name.out" 2>"$name.err" &
+  local pid=$!
+  "$PY" plant.py "$pid" "$dir" "$WORK/outside.txt" "${outputs[@]}"
+  if kill -0 "$pid" 2>/dev/null; then
+    kill -KILL "$pid"
+    fail "$name: still running after 60 s"
+  fi
+  wait "$pid" || rc=$?
+  outside_unchanged "$name"
+  for out in "${outputs[@]}"; do
+    [ ! -L "$dir/$out" ] || fail "$name: a planted link became $dir/$out"
+    rm -f "$dir/$out.tmp-$pid"
+  done
+  if [ "$rc" -ne 0 ]; then
+    grep -qF "something appeared under its temporary's name" "$name.err" && grep -qF ".tmp-$pid after" "$name.err" ||
+      fail "$name: exit $rc without naming the planted temporary: $(cat "$name.err")"
+  fi
+  PLANTED_RC=$rc
+}
+mkdir -p tmp_link
+planted render_tmp_link tmp_link tiny.0000.exr tiny.0000.png tiny.0001.exr tiny.0001.png -- \
+  "$LIGHTCONE" render tiny.lua --out tmp_link --progress 0
+if [ "$PLANTED_RC" -eq 0 ]; then
+  cmp -s tmp_link/tiny.0001.png done/tiny.0001.png || fail "the frames written beside planted links differ"
+fi
+planted encode_tmp_link . film.mp4 -- "$LIGHTCONE" encode done -o film.mp4
+if [ "$PLANTED_RC" -eq 0 ]; then
+  [ -f film.mp4 ] && [ -s film.mp4 ] || fail "encode beside a planted link exited 0 without its video"
+fi
+
 # --- FIFOs: refused (the journal, the lock) or written around (the event
 # log, the meter), at once.
 mkdir -p journal_fifo && mkfifo journal_fifo/tiny.journal

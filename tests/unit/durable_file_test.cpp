@@ -28,9 +28,11 @@
 #include <cstring>
 #include <thread>
 
+#include "image/image_io.hpp"
 #include "interrupt.hpp"
 #include "scratch_dir.hpp"
 #include "test_errors.hpp"
+#include "tiny_frame.hpp"
 
 namespace {
 
@@ -90,7 +92,11 @@ TEST(DurableFile, AnAbandonedWriteChangesNothingAndLeavesNoTemporary) {
 TEST(DurableFile, ALibraryWritesByPath) {
   ScratchDir dir;
   DurableFile out(dir / "sheet.png");
-  std::ofstream(out.temp_path(), std::ios::binary) << "picture";  // as FFmpeg or the image layer would
+  const fs::path lib = out.library_path();
+  EXPECT_EQ(lib.parent_path(), "/proc/self/fd");  // the temporary's descriptor, not its name
+  EXPECT_EQ(dir.names(), Names{out.temp_path().filename().string()});  // made by library_path itself
+  std::ofstream(lib, std::ios::binary | std::ios::trunc) << "picture";  // as FFmpeg or the image layer would
+  EXPECT_EQ(out.library_path(), lib);  // one temporary however often asked
   EXPECT_FALSE(fs::exists(dir / "sheet.png"));
   out.commit();
   EXPECT_EQ(dir.names(), Names{"sheet.png"});
@@ -192,7 +198,7 @@ TEST(DurableFile, ADeviceIsWrittenInPlaceNeverReplaced) {
   // A library writing by path goes to the temporary, copied in at commit.
   {
     DurableFile out(null);
-    std::ofstream(out.temp_path(), std::ios::binary) << "picture";
+    std::ofstream(out.library_path(), std::ios::binary) << "picture";
     out.commit();
     EXPECT_FALSE(fs::exists(out.temp_path()));
   }
@@ -347,7 +353,7 @@ TEST(DurableFile, TheTemporaryIsNeverWrittenThrough) {
       DurableFile out(dir / "out.csv");
       EXPECT_EQ(out.temp_path(), temp);
       if (by_library)
-        std::ofstream(out.temp_path(), std::ios::binary) << "picture";
+        std::ofstream(out.library_path(), std::ios::binary) << "picture";
       else
         out.write("a,b\n");
       out.commit();
@@ -364,6 +370,70 @@ TEST(DurableFile, TheTemporaryIsNeverWrittenThrough) {
                           0),
             0u)
       << message;
+}
+
+TEST(DurableFile, ALinkPlantedAtTheTemporaryAfterItWasClearedIsNeverWrittenThrough) {
+  // The temporary's name is predictable ("<final>.tmp-<pid>"), and the
+  // constructor's clearing of it comes before the write: a link planted in
+  // between was followed by the image writers and FFmpeg, which were handed
+  // that name and open it O_CREAT | O_TRUNC, so a frame overwrote the file
+  // the link led to (review of issue 43).  The link is planted here at that
+  // exact moment, then the image layer writes as the frame store does.
+  ScratchDir dir;
+  const Outside outside(dir);
+  fs::create_directories(dir / "out");
+  const fs::path exr = dir / "out" / "s.0001.exr";
+  const lc::FrameImage frame = lc::test::tiny_frame();
+  for (const bool by_library : {true, false}) {
+    {
+      DurableFile out(exr, lc::StaleTemporaries::cleaned_by_caller, lc::FinalName::own);
+      fs::create_symlink(outside.path, out.temp_path());
+      const std::string message = error_of([&] {
+        if (by_library) lc::write_exr(out.library_path(), frame, {}, out.final_path());
+        else out.write("bytes");
+        out.commit();
+      });
+      EXPECT_EQ(message, "cannot write " + exr.string() + ": something appeared under its temporary's name " +
+                             out.temp_path().string() +
+                             " after lightcone had cleared it (a planted link?), and lightcone writes only into a "
+                             "temporary it created itself: nothing was written, and what is there was left as it is "
+                             "(move it away)");
+    }
+    EXPECT_TRUE(outside.unchanged());
+    EXPECT_FALSE(fs::exists(exr));
+    // What it made is its own to remove; the link is not.
+    const fs::path temp = dir / "out" / ("s.0001.exr.tmp-" + std::to_string(::getpid()));
+    EXPECT_TRUE(fs::is_symlink(temp));
+    fs::remove(temp);
+  }
+  // The link swapped in for the temporary after it was made (its name
+  // unlinked, a link put there), before the library opens it: the library
+  // writes the file made, and the commit refuses to rename the link into
+  // place.
+  {
+    DurableFile out(exr, lc::StaleTemporaries::cleaned_by_caller, lc::FinalName::own);
+    const fs::path lib = out.library_path();
+    fs::remove(out.temp_path());
+    fs::create_symlink(outside.path, out.temp_path());
+    lc::write_exr(lib, frame, {}, out.final_path());
+    EXPECT_TRUE(outside.unchanged());
+    EXPECT_EQ(error_of([&] { out.commit(); }),
+              "cannot write " + exr.string() + ": its temporary " + out.temp_path().string() +
+                  " was removed or replaced while it was being written, and lightcone puts in place only the file it "
+                  "wrote (nothing was put in place)");
+    fs::remove(out.temp_path());
+  }
+  EXPECT_TRUE(outside.unchanged());
+  EXPECT_FALSE(fs::exists(exr));
+  // Written as usual, the frame is the image layer's bytes for the image.
+  {
+    DurableFile out(exr, lc::StaleTemporaries::cleaned_by_caller, lc::FinalName::own);
+    lc::write_exr(out.library_path(), frame, {}, out.final_path());
+    out.commit();
+  }
+  lc::write_exr(dir / "plain.exr", frame);
+  EXPECT_EQ(contents(exr), contents(dir / "plain.exr"));
+  EXPECT_EQ(dir.names(), (Names{"out", "outside.txt", "plain.exr"}));
 }
 
 TEST(DurableFile, OwnFilesAreOpenedOnlyAsRegularFiles) {
