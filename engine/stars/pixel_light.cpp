@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "stars/parallel_for.hpp"
+#include "core/parallel_for.hpp"
 
 namespace lc {
 
@@ -12,7 +12,7 @@ std::vector<LitPixel> light_pixels(const std::vector<Deposit>& deposits, const C
   std::vector<LitPixel> lit(deposits.size());
   const GlareKernel* kernel = spread.kernel;
   constexpr std::size_t chunk = 256;
-  for_each_parallel((deposits.size() + chunk - 1) / chunk, threads, [&](std::size_t c) {
+  parallel_for((deposits.size() + chunk - 1) / chunk, {.threads = threads, .helpers_cpu = &helpers_cpu}, [&](std::size_t c) {
     for (std::size_t k = c * chunk; k < std::min(deposits.size(), (c + 1) * chunk); ++k) {
       const Deposit& d = deposits[k];
       const double omega = camera_solid_angle(camera, {{{static_cast<double>(d.i), static_cast<double>(d.j)},
@@ -29,7 +29,7 @@ std::vector<LitPixel> light_pixels(const std::vector<Deposit>& deposits, const C
       while (l.reach < kernel->radius && glow * kernel->at_radius[static_cast<std::size_t>(l.reach + 1)] >= floor) ++l.reach;
       l.share = spread.glare / kernel->within[static_cast<std::size_t>(l.reach)];
     }
-  }, helpers_cpu);
+  });
   return lit;
 }
 
@@ -39,7 +39,7 @@ void add_lit_pixels(const std::vector<Deposit>& deposits, const std::vector<LitP
   const int w = width, h = height;
   const int reach = kernel ? kernel->radius : 0;
   const int bands = (h + band - 1) / band;
-  for_each_parallel(static_cast<std::size_t>(bands), threads, [&](std::size_t b) {
+  parallel_for(static_cast<std::size_t>(bands), {.threads = threads, .helpers_cpu = &helpers_cpu}, [&](std::size_t b) {
     const int y0 = static_cast<int>(b) * band, y1 = std::min(h, y0 + band);
     auto row_at_least = [&](int j) {
       return std::partition_point(deposits.begin(), deposits.end(), [j](const Deposit& d) { return d.j < j; }) -
@@ -64,7 +64,7 @@ void add_lit_pixels(const std::vector<Deposit>& deposits, const std::vector<LitP
           if (const double k = kernel->weight[static_cast<std::size_t>((dy + c0) * n + dx + c0)]; k > 0.0)
             add(d.i + dx, d.j + dy, static_cast<float>(l.share * k));
     }
-  }, helpers_cpu);
+  });
 }
 
 }  // namespace lc

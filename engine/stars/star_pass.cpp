@@ -11,9 +11,9 @@
 #include <fmt/format.h>
 
 #include "core/cpu_time.hpp"
+#include "core/parallel_for.hpp"
 #include "stars/glare_kernel.hpp"
 #include "stars/magnification.hpp"
-#include "stars/parallel_for.hpp"
 #include "stars/pass_constants.hpp"
 #include "stars/pixel_deposits.hpp"
 #include "stars/pixel_light.hpp"
@@ -107,9 +107,9 @@ std::vector<FoundStarImage> find_star_images(std::span<const SkyPoint> sky, int 
   const int tile_rows = (h + 1 + star_tile - 1) / star_tile;
   std::vector<std::vector<FoundStarImage>> rows(static_cast<std::size_t>(tile_rows));
   double cpu = 0.0;
-  for_each_parallel(rows.size(), options.threads, [&](std::size_t r) {
+  parallel_for(rows.size(), {.threads = options.threads, .helpers_cpu = &cpu}, [&](std::size_t r) {
     rows[r] = find_in_row_of_tiles(grid, field, camera, options, cos_max, -1 + static_cast<int>(r) * star_tile);
-  }, cpu);
+  });
   std::vector<FoundStarImage> images;
   for (const std::vector<FoundStarImage>& r : rows) images.insert(images.end(), r.begin(), r.end());
   if (cpu_seconds) *cpu_seconds += cpu + thread_cpu_seconds() - start;
