@@ -8,7 +8,6 @@
 #include <memory>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 #include <stdexcept>
 #include <thread>
 
@@ -16,6 +15,7 @@
 #include <fmt/ranges.h>
 
 #include "core/cpu_time.hpp"
+#include "core/parallel_for.hpp"
 #include "farm/dir_lock.hpp"
 #include "farm/frame_files.hpp"
 #include "farm/frame_store.hpp"
@@ -297,36 +297,31 @@ int run_develop(const DevelopCommand& cmd) {
 
   const auto start = std::chrono::steady_clock::now();
   const double cpu_at_start = process_cpu_seconds();
-  std::atomic<std::size_t> next{0}, done{0};
-  std::atomic<bool> stop{false};
-  std::mutex error_mutex;
+  std::atomic<std::size_t> done{0};
   std::optional<std::string> error;
-  auto work = [&] {
-    for (std::size_t k; !stop && (k = next++) < frames.size();) {
-      try {
-        store.develop_frame(frames[k], looks[k], cmd.out);
-        ++done;
-      } catch (const std::exception& e) {
-        std::lock_guard lock(error_mutex);
-        if (!error) error = e.what();
-        stop = true;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
-  const ProgressFn progress = progress_printer(guard, "develop", "frames");
   std::optional<int> interrupted;
-  while (done < frames.size() && !stop) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    try {
-      progress(static_cast<int>(done), static_cast<int>(frames.size()));
-    } catch (const Interrupted& e) {
-      interrupted = e.signal;
-      stop = true;
-    }
+  try {
+    parallel_for(
+        frames.size(), {.threads = threads},
+        [&](std::size_t k) {
+          store.develop_frame(frames[k], looks[k], cmd.out);
+          ++done;
+        },
+        [&](ParallelRun& run) {
+          const ProgressFn progress = progress_printer(guard, "develop", "frames");
+          while (done < frames.size() && !run.stopped()) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            try {
+              progress(static_cast<int>(done), static_cast<int>(frames.size()));
+            } catch (const Interrupted& e) {
+              interrupted = e.signal;
+              run.stop();
+            }
+          }
+        });
+  } catch (const std::exception& e) {
+    error = e.what();
   }
-  for (std::thread& t : pool) t.join();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (error) {
     fmt::print(stderr, "develop: stopped after {} of {} frames (each one developed is whole, with its journal line)\n",

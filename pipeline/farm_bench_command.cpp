@@ -1,8 +1,6 @@
 #include "farm_bench_command.hpp"
 
-#include <atomic>
 #include <chrono>
-#include <thread>
 #include <filesystem>
 #include <numeric>
 #include <stdexcept>
@@ -12,6 +10,7 @@
 #include <unistd.h>
 
 #include "core/cpu_time.hpp"
+#include "core/parallel_for.hpp"
 #include "farm/content_hash.hpp"
 #include "farm/farm_run.hpp"
 #include "farm/frame_files.hpp"
@@ -69,18 +68,9 @@ WriteTiming time_frame_writes(const RenderSettings& rs, int writers) {
       t.one = std::min(t.one, since(t0));
     }
     const int frames = 3 * writers;
-    std::atomic<int> next{0};
     const auto t0 = std::chrono::steady_clock::now();
-    std::vector<std::thread> pool;
-    for (int w = 0; w < writers; ++w)
-      pool.emplace_back([&] {
-        for (int k; (k = next.fetch_add(1)) < frames;) try {
-            write(100 + k);
-          } catch (...) {
-            failure = std::current_exception();
-          }
-      });
-    for (auto& th : pool) th.join();
+    parallel_for(static_cast<std::size_t>(frames), {.threads = writers},
+                 [&](std::size_t k) { write(100 + static_cast<int>(k)); });
     t.parallel = frames / since(t0);
   } catch (...) {
     failure = std::current_exception();

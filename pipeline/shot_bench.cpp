@@ -2,14 +2,12 @@
 
 #include <span>
 
-#include <atomic>
 #include <chrono>
 #include <functional>
-#include <mutex>
-#include <thread>
 #include <vector>
 
 #include "core/cpu_time.hpp"
+#include "core/parallel_for.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
 #include "script/shot.hpp"
@@ -23,33 +21,31 @@ namespace {
 std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int threads, long* steps,
                                  double* cpu_seconds = nullptr) {
   std::vector<RaySample> out(static_cast<std::size_t>(width) * height);
-  std::atomic<int> next{0};
-  std::atomic<long> total{0};
-  std::mutex cpu_mutex;
+  const std::size_t rows = static_cast<std::size_t>(height);
+  // Per worker: the row's directions (made once) and the steps counted.
+  std::vector<std::vector<Vec3>> dirs(parallel_workers(rows, threads),
+                                      std::vector<Vec3>(static_cast<std::size_t>(width)));
+  std::vector<long> counted(dirs.size(), 0);
   double cpu = 0.0;
-  auto worker = [&] {
-    const double cpu0 = thread_cpu_seconds();
-    long local = 0;
-    std::vector<Vec3> dirs(static_cast<std::size_t>(width));
-    for (int j; (j = next.fetch_add(1)) < height;)
-      std::visit(
-          [&](const auto& sc) {
-            // A row at a time, as the renderer traces (several rays at once
-            // where the spacetime allows).
-            for (int i = 0; i < width; ++i) dirs[i] = sc.camera.direction(i + 0.5, j + 0.5);
-            const std::span<RaySample> row(out.data() + static_cast<std::size_t>(j) * width, static_cast<std::size_t>(width));
-            trace_batch(sc, std::span<const Vec3>(dirs), row);
-            for (const RaySample& s : row) local += s.steps;
-          },
-          scene);
-    total += local;
-    const std::lock_guard lock(cpu_mutex);
-    cpu += thread_cpu_seconds() - cpu0;
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  const double cpu0 = thread_cpu_seconds();
+  parallel_for(rows, {.threads = threads, .helpers_cpu = &cpu}, [&](std::size_t j, std::size_t worker) {
+    std::visit(
+        [&](const auto& sc) {
+          // A row at a time, as the renderer traces (several rays at once
+          // where the spacetime allows).
+          std::vector<Vec3>& row_dirs = dirs[worker];
+          for (int i = 0; i < width; ++i) row_dirs[i] = sc.camera.direction(i + 0.5, j + 0.5);
+          const std::span<RaySample> row(out.data() + j * width, static_cast<std::size_t>(width));
+          trace_batch(sc, std::span<const Vec3>(row_dirs), row);
+          long local = 0;
+          for (const RaySample& s : row) local += s.steps;
+          counted[worker] += local;
+        },
+        scene);
+  });
+  cpu += thread_cpu_seconds() - cpu0;
+  long total = 0;
+  for (long c : counted) total += c;
   if (steps) *steps = total;
   if (cpu_seconds) *cpu_seconds += cpu;
   return out;

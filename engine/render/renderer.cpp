@@ -1,5 +1,6 @@
 #include "render/renderer.hpp"
 
+#include "core/parallel_for.hpp"
 #include "render/layers.hpp"
 #include "render/pixel_rows.hpp"
 
@@ -43,20 +44,13 @@ FrameImage render_frame(const Scene& scene, const RenderSettings& rs, int thread
   FrameImage img = make_frame(rs);
   prepare_frame(scene, img);
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, rs.height);
-  std::atomic<int> next{0};
-  std::vector<RenderStats> per_thread(threads);
-  auto worker = [&](int k) {
-    for (int j; (j = next.fetch_add(1)) < rs.height;) {
-      const int row[1] = {j};
-      per_thread[k] += render_rows(scene, rs, row, img);
-      if (rows_done) rows_done->fetch_add(1);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back(worker, k);
-  worker(0);
-  for (auto& t : pool) t.join();
+  const std::size_t rows = static_cast<std::size_t>(std::max(rs.height, 0));
+  std::vector<RenderStats> per_thread(parallel_workers(rows, threads));
+  parallel_for(rows, {.threads = threads}, [&](std::size_t j, std::size_t worker) {
+    const int row[1] = {static_cast<int>(j)};
+    per_thread[worker] += render_rows(scene, rs, row, img);
+    if (rows_done) rows_done->fetch_add(1);
+  });
   if (stats)
     for (const auto& s : per_thread) *stats += s;
   return img;

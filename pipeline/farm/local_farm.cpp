@@ -1,19 +1,17 @@
 #include "farm/local_farm.hpp"
 
-#include <atomic>
+#include <algorithm>
 #include <string>
-#include <thread>
-#include <vector>
 
+#include "core/parallel_for.hpp"
 #include "farm/threads.hpp"
 
 namespace lc::farm {
 
 void run_local_farm(WorkQueue& queue, FarmRun& run, StripeRenderer& renderer, int threads, Progress& progress) {
-  std::atomic<int> running{threads};
   // The frames' record names this node, asked once: the threads are rank 0.
   const std::string node = host_name();
-  auto work = [&] {
+  auto work = [&](std::size_t) {
     while (auto item = queue.take_wait()) {
       try {
         const RenderStats stats = renderer.render(*item, queue.canvas(*item));
@@ -23,18 +21,16 @@ void run_local_farm(WorkQueue& queue, FarmRun& run, StripeRenderer& renderer, in
         break;
       }
     }
-    running.fetch_sub(1);
   };
-  std::vector<std::thread> pool;
-  pool.reserve(threads);
-  for (int k = 0; k < threads; ++k) pool.emplace_back(work);
-  // Wake up for progress a few times a second; the threads need nothing
-  // from this one.
-  while (running.load() > 0) {
-    run.wait(std::chrono::milliseconds(100));
-    progress.tick(queue.progress());
-  }
-  for (auto& t : pool) t.join();
+  // A worker a thread, each on the queue till it ends.  Wake up for progress
+  // a few times a second; the threads need nothing from this one.
+  const std::size_t workers = static_cast<std::size_t>(std::max(threads, 0));
+  parallel_for(workers, {.threads = threads, .handout = Handout::by_thread}, work, [&](ParallelRun& pool) {
+    while (pool.running()) {
+      run.wait(std::chrono::milliseconds(100));
+      progress.tick(queue.progress());
+    }
+  });
   // The writer may still be storing the last frames.
   while (!run.over()) {
     run.wait(std::chrono::milliseconds(100));
