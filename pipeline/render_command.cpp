@@ -315,9 +315,9 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   events.run_ended(error ? "error" : interrupted ? "interrupted" : "done", p.frames_stored);
   for (const auto& [rank, host] : lost)
     fmt::print(stderr,
-               "render: rank {} (on {}) was lost: it did not answer the master's stop within {} ms (killed, out of "
-               "memory, or its node failed); the frames it held are rendered when the same command resumes\n",
-               rank, host, farm::answer_stop_within.count());
+               "render: rank {} (on {}) was lost: it did not answer the master's stop (killed, out of memory, or its "
+               "node failed); the frames it held are rendered when the same command resumes\n",
+               rank, host);
   // Whichever way the run ended (an error may land with the launcher's
   // signal), a lost rank means no MPI_Finalize.
   if (!lost.empty()) mpi->end_with_abort(error ? 1 : 128 + interrupted);
