@@ -113,6 +113,26 @@ same_frames() {
   [ "$n" -gt 0 ] || fail "$1: no frames"
 }
 
+# start_monitor DIR... : starts `lightcone monitor DIR... --port 0` in the
+# background (its log monitor.log), sets MONITOR (its pid) and URL, and
+# kills it when the test ends.  A monitor that does not start fails the
+# test and ends it.
+start_monitor() {
+  "$LIGHTCONE" monitor "$@" --port 0 2>monitor.log &
+  MONITOR=$!
+  trap 'kill "$MONITOR" 2>/dev/null || true' EXIT
+  for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
+  URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log) || { fail "the monitor did not start: $(cat monitor.log)"; e2e_end; exit 1; }
+}
+
+# tiny_fall_render DIR: one 32x18 frame of shots/kerr_fall.lua in DIR, for
+# a journal and event log to copy.
+tiny_fall_render() {
+  mkdir -p "$1"
+  "$LIGHTCONE" render "$SRC/shots/kerr_fall.lua" --out "$1" --size 32x18 --supersample 1 --progress 0 --frames 0:0 \
+    2>"$1.render.log" || fail "render: $(cat "$1.render.log")"
+}
+
 e2e_end() {
   echo "$CHECKS error checks; $FAILURES failures"
   [ "$FAILURES" -eq 0 ]

@@ -16,9 +16,7 @@ source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
 FALL="$SRC/shots/kerr_fall.lua"
-mkdir -p out
-"$LIGHTCONE" render "$FALL" --out out --size 32x18 --supersample 1 --progress 0 --frames 0:0 2>render.log \
-  || fail "render: $(cat render.log)"
+tiny_fall_render out
 # Beside the render: someone else's file named as a journal, a journal that
 # is a FIFO (with a log, so the shot is listed), and links out of the folder.
 echo "root:x:0:0:SECRET-ROOT-LINE" >passwd
@@ -28,33 +26,14 @@ cp out/kerr_fall.events out/fifo.events
 ln -s "$WORK/passwd" out/leak.journal
 ln -s "$WORK/passwd" out/count.events
 # A film of 12,000 frames: the render's frame line copied with each
-# frame's number and cost, each line with its check (FNV-1a, as
-# pipeline/farm/checked_line.hpp).
-"$PY" - out/kerr_fall.journal out/long.journal <<'PY'
-import re, sys
-def check(content):
-    h = 0xcbf29ce484222325
-    for b in content:
-        h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
-    return b"%s #%016x\n" % (content, h)
-lines = open(sys.argv[1], "rb").read().split(b"\n")
-frame = next(l.rpartition(b" #")[0] for l in lines if l.startswith(b"frame="))
-with open(sys.argv[2], "wb") as out:
-    out.write(lines[0] + b"\n")
-    for f in range(12000):
-        line = re.sub(rb"^frame=0 ", b"frame=%d " % f, frame)
-        out.write(check(re.sub(rb"core_seconds=[0-9.]+", b"core_seconds=%d" % (1 + f % 7), line)))
-PY
+# frame's number and cost.
+"$PY" "$SRC/tests/tools/journal_frames.py" out/kerr_fall.journal 0 12000 >out/long.journal
 
-"$LIGHTCONE" monitor out --port 0 2>monitor.log &
-monitor=$!
-trap 'kill "$monitor" 2>/dev/null || true' EXIT
-for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
-URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log) || { fail "the monitor did not start: $(cat monitor.log)"; e2e_end; exit 1; }
+start_monitor out
 PORT=${URL##*:}
 # Its memory as it starts (mostly its libraries' pages), to measure what
 # the clients below add.
-base=$(awk '/^VmRSS:/ {print $2}' "/proc/$monitor/status")
+base=$(awk '/^VmRSS:/ {print $2}' "/proc/$MONITOR/status")
 abuse() { timeout 60 "$PY" "$SRC/tests/tools/monitor_abuse.py" "$PORT" "$@" || fail "$1: $(tail -1 abuse.txt)"; }
 code() { curl -s --max-time 5 -o body.txt -w "%{http_code}" "$URL$1"; }
 
@@ -68,7 +47,7 @@ grep -q '"shots": \["fifo", "foreign", "kerr_fall", "long"\]' <<<"$shots" || fai
 grep -q "SECRET" body.txt && fail "a foreign journal was quoted: $(cat body.txt)"
 start=$(date +%s%N)
 for k in $(seq 1 10); do curl -s --max-time 5 -o "fifo$k.txt" -w "%{http_code}\n" "$URL/api/status?folder=0&shot=fifo" >"fifo$k.code" & done
-wait $(jobs -p | grep -v "^$monitor$") 2>/dev/null || true
+wait $(jobs -p | grep -v "^$MONITOR$") 2>/dev/null || true
 took=$((($(date +%s%N) - start) / 1000000))
 [ "$(cat fifo*.code | sort -u)" = 403 ] || fail "a FIFO journal: $(cat fifo*.code | tr '\n' ' ') $(cat fifo1.txt)"
 [ "$took" -lt 3000 ] || fail "ten requests of a FIFO journal took $took ms"
@@ -87,7 +66,7 @@ abuse trace-burst "folder=0&shot=kerr_fall&frame=0" >>abuse.txt
 mkdir -p out/preview
 truncate -s 256M out/preview/long.0000.png
 printf 'lightcone-mark-at-200MiB' | dd of=out/preview/long.0000.png bs=1 seek=$((200 << 20)) conv=notrunc status=none
-abuse slow-readers "$monitor" "/api/frame.png?folder=0&shot=long&frame=0&preview=1" 8 $((200 << 20)) \
+abuse slow-readers "$MONITOR" "/api/frame.png?folder=0&shot=long&frame=0&preview=1" 8 $((200 << 20)) \
   lightcone-mark-at-200MiB 48 >>abuse.txt
 rm out/preview/long.0000.png
 cat abuse.txt
@@ -120,7 +99,7 @@ cmp -s part.bin <(tail -c +11 out/kerr_fall.0000.png | head -c 20) || fail "a ra
   || fail "the frame's last 7 bytes"
 # All of it in bounded memory (the gzip bomb alone unpacks to 62 MiB, the
 # ranges asked for 1,000 copies of the page).
-hwm=$(awk '/^VmHWM:/ {print $2}' "/proc/$monitor/status")
+hwm=$(awk '/^VmHWM:/ {print $2}' "/proc/$MONITOR/status")
 echo "monitor: VmRSS $base kB as it started, VmHWM $hwm kB after the clients"
 [ $((${hwm:-999999} - ${base:-0})) -lt 32768 ] || fail "the monitor's memory grew from $base to $hwm kB"
 
@@ -156,8 +135,8 @@ kill -TERM "$parent"
 wait "$parent" 2>/dev/null || true
 
 # A kill (SIGTERM, as Ctrl-C) stops it at once.
-kill -TERM "$monitor"
-for _ in $(seq 1 40); do kill -0 "$monitor" 2>/dev/null || break; sleep 0.05; done
-kill -0 "$monitor" 2>/dev/null && fail "the monitor did not stop within 2 s of SIGTERM"
-wait "$monitor" 2>/dev/null || true
+kill -TERM "$MONITOR"
+for _ in $(seq 1 40); do kill -0 "$MONITOR" 2>/dev/null || break; sleep 0.05; done
+kill -0 "$MONITOR" 2>/dev/null && fail "the monitor did not stop within 2 s of SIGTERM"
+wait "$MONITOR" 2>/dev/null || true
 e2e_end

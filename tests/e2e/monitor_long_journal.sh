@@ -7,47 +7,21 @@
 source "$(dirname "$0")/lib.sh"
 e2e_begin "$@"
 
-FALL="$SRC/shots/kerr_fall.lua"
-mkdir -p out
-"$LIGHTCONE" render "$FALL" --out out --size 32x18 --supersample 1 --progress 0 --frames 0:0 2>render.log \
-  || fail "render: $(cat render.log)"
-# Frame lines as the render's, with each frame's number and cost and each
-# line's check (FNV-1a, as pipeline/farm/checked_line.hpp): frames FROM to
-# TO-1 appended to the journal (written anew with FROM 0).
-lines() {
-  "$PY" - out/kerr_fall.journal "$1" "$2" <<'PY'
-import re, sys
-def check(content):
-    h = 0xcbf29ce484222325
-    for b in content:
-        h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
-    return b"%s #%016x\n" % (content, h)
-lines = open(sys.argv[1], "rb").read().split(b"\n")
-frame = next(l.rpartition(b" #")[0] for l in lines if l.startswith(b"frame="))
-first, end = int(sys.argv[2]), int(sys.argv[3])
-out = [lines[0] + b"\n"] if first == 0 else []
-for f in range(first, end):
-    line = re.sub(rb"^frame=0 ", b"frame=%d " % f, frame)
-    out.append(check(re.sub(rb"core_seconds=[0-9.]+", b"core_seconds=%d" % (1 + f % 7), line)))
-sys.stdout.buffer.write(b"".join(out))
-PY
-}
+tiny_fall_render out
+# Frames FROM to TO-1 as the render's journal lines (with FROM 0, a whole journal).
+lines() { "$PY" "$SRC/tests/tools/journal_frames.py" out/kerr_fall.journal "$1" "$2"; }
 lines 0 100000 >long.journal
 mv long.journal out/kerr_fall.journal
 
-"$LIGHTCONE" monitor out --port 0 2>monitor.log &
-monitor=$!
-trap 'kill "$monitor" 2>/dev/null || true' EXIT
-for _ in $(seq 1 100); do grep -q "http://127.0.0.1:" monitor.log && break; sleep 0.05; done
-URL=$(grep -o "http://127.0.0.1:[0-9]*" monitor.log) || { fail "the monitor did not start: $(cat monitor.log)"; e2e_end; exit 1; }
+start_monitor out
 status() { curl -s --max-time 30 "$URL/api/status?folder=0&shot=kerr_fall"; }
 field() { $PY -c "import json,sys; d=json.load(sys.stdin); print(eval(sys.argv[1]))" "$1"; }
 # The monitor's CPU time so far, in ms (utime + stime of /proc/PID/stat).
-cpu_ms() { awk -v hz="$(getconf CLK_TCK)" '{print int(($14 + $15) * 1000 / hz)}' "/proc/$monitor/stat"; }
+cpu_ms() { awk -v hz="$(getconf CLK_TCK)" '{print int(($14 + $15) * 1000 / hz)}' "/proc/$MONITOR/stat"; }
 
 # The first request parses it all; 10 polls after it must not.
 [ "$(status | field 'd["frames"]["stale"] + len(d["latest"])')" -ge 1 ] || fail "the first status: $(status | head -c 300)"
-base=$(awk '/^VmRSS:/ {print $2}' "/proc/$monitor/status")
+base=$(awk '/^VmRSS:/ {print $2}' "/proc/$MONITOR/status")
 before=$(cpu_ms)
 for _ in $(seq 1 10); do status >status.json; done
 polls=$(($(cpu_ms) - before))
@@ -64,7 +38,7 @@ echo "a poll after 50 frames were appended: $appended ms CPU"
 grep -q '"latest": \[100049,' status.json || fail "the appended frames: $(grep -o '"latest": [^]]*]' status.json)"
 curl -s --max-time 30 "$URL/api/frames?folder=0&shot=kerr_fall&from=100040&count=5" >frames.json
 grep -q '"total": 100050' frames.json || fail "the frames' total: $(head -c 200 frames.json)"
-hwm=$(awk '/^VmHWM:/ {print $2}' "/proc/$monitor/status")
+hwm=$(awk '/^VmHWM:/ {print $2}' "/proc/$MONITOR/status")
 echo "monitor: VmRSS $base kB after the first request, VmHWM $hwm kB after the polls"
 [ $((${hwm:-999999} - ${base:-0})) -lt 65536 ] || fail "the polls grew the monitor's memory from $base to $hwm kB"
 
