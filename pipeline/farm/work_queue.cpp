@@ -147,7 +147,9 @@ std::optional<CompletedFrame> WorkQueue::finish(const WorkItem& item, const Rend
   OpenFrame& of = it->second;
   of.done[index] = 1;
   of.stats += stats;
-  ++of.by.try_emplace(rank, std::string(node), 0).first->second.second;
+  auto [maker, first_set] = of.by.try_emplace(rank);
+  if (first_set) maker->second.first = node;  // a rank's node is copied once a frame, not once a set
+  ++maker->second.second;
   progress_.stats += stats;
   progress_.rows_done += layout_.row_count(item.stripe);
   if (--of.remaining > 0) return std::nullopt;
