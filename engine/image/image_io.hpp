@@ -12,7 +12,7 @@
 // A writer opens `path` as it is, following links (O_CREAT | O_TRUNC): a
 // file in a folder lightcone keeps is never handed over by name but as the
 // path of a descriptor lightcone created it under (/proc/self/fd/N,
-// DurableFile::library_path in pipeline/durable_file.hpp).
+// DurableFile::library_path in pipeline/store/durable_file.hpp).
 
 #include <filesystem>
 #include <functional>

@@ -61,7 +61,7 @@ struct StarPassOptions {
 // The smallest picture the pass draws on, in each direction: a quad of
 // rays needs two rows and two columns of them.  The render refuses a
 // smaller frame, eye's picture or --region of a point-star sky before it
-// starts (pipeline/render_command.cpp).
+// starts (pipeline/cli/render_command.cpp).
 inline constexpr int star_pass_min_side = 2;
 
 // A star image as stages 1-5 find it: the star (its index in the field),

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "durable_file.hpp"
+#include "store/durable_file.hpp"
 
 namespace lc::monitor {
 

@@ -16,17 +16,17 @@
 #include <fmt/format.h>
 
 #include "core/json.hpp"
-#include "durable_file.hpp"
-#include "farm/event_log.hpp"
-#include "farm/frame_files.hpp"
-#include "farm/journal.hpp"
+#include "store/durable_file.hpp"
+#include "telemetry/event_log.hpp"
+#include "store/frame_files.hpp"
+#include "store/journal.hpp"
 #include "image/image_io.hpp"
 #include "monitor/folder_file.hpp"
 #include "monitor/layer_picture.hpp"
 #include "monitor/pixel_trace.hpp"
 #include "render/layers.hpp"
 #include "monitor_page.hpp"  // generated from monitor/page.html (pipeline/CMakeLists.txt)
-#include "video/frame_sequence.hpp"
+#include "store/frame_sequence.hpp"
 
 namespace lc::monitor {
 

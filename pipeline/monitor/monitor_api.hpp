@@ -7,7 +7,7 @@
 //
 // Safe by construction: no request names a file.  A frame is asked for by
 // folder number, shot and frame number, and its path is built here
-// (farm/frame_files.hpp); the shot must be one the folder holds, and the
+// (store/frame_files.hpp); the shot must be one the folder holds, and the
 // file must be a regular file inside the folder once links are followed.
 
 #include <cstdint>

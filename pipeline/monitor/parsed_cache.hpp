@@ -1,7 +1,7 @@
 #pragma once
 // The journals and event logs the monitor has parsed, kept between requests
 // (docs/monitor.md, "Long renders").  Both files are only ever appended to
-// (farm/journal.hpp, farm/event_log.hpp), and the page polls every few
+// (store/journal.hpp, telemetry/event_log.hpp), and the page polls every few
 // seconds: parsing a 100,000-frame journal whole on every poll cost about a
 // second of CPU a request.  So each file's parse is kept with where it
 // stopped (the end of its last complete line) and, on the next request,
@@ -18,8 +18,8 @@
 #include <mutex>
 #include <string>
 
-#include "farm/event_log.hpp"
-#include "farm/journal.hpp"
+#include "telemetry/event_log.hpp"
+#include "store/journal.hpp"
 #include "monitor/folder_file.hpp"
 
 namespace lc::monitor {

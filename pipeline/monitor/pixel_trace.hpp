@@ -23,7 +23,7 @@ struct PixelRequest {
 
 // The flags that ask `lightcone trace` for the delivery `d` ("--camera",
 // "dome", "--dome-tilt", "15"; the defaults left out), as render's
-// (pipeline/delivery_flags.hpp) read them: a frame traced as the journal
+// (pipeline/job/delivery_flags.hpp) read them: a frame traced as the journal
 // recorded it was made.
 std::vector<std::string> delivery_flag_words(const Delivery& d);
 

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "durable_file.hpp"
+#include "store/durable_file.hpp"
 #include "image/image_io.hpp"
 #include "image/srgb.hpp"
 #include "video/pixel_font.hpp"

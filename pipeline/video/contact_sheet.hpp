@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "durable_file.hpp"
+#include "store/durable_file.hpp"
 #include "image/frame_image.hpp"
-#include "video/frame_sequence.hpp"
+#include "store/frame_sequence.hpp"
 
 namespace lc {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "durable_file.hpp"
+#include "store/durable_file.hpp"
 #include "image/video_layout.hpp"
 
 namespace lc {

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "durable_file.hpp"
+#include "store/durable_file.hpp"
 #include "video/libav.hpp"
 
 namespace lc {

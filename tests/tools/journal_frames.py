@@ -4,7 +4,7 @@
 usage: journal_frames.py JOURNAL FROM TO
 Prints frames FROM to TO-1, each a copy of JOURNAL's first frame line with the
 frame's number and a cost of 1 + frame % 7 core-seconds, each line with its
-check (FNV-1a 64 of its content, as pipeline/farm/checked_line.hpp); with FROM
+check (FNV-1a 64 of its content, as pipeline/store/checked_line.hpp); with FROM
 0 the journal's header line first, so the output is a whole journal.
 """
 import re

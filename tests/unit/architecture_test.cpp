@@ -60,40 +60,80 @@ std::vector<Include> includes_under(const fs::path& dir) {
 
 std::string top_folder(const fs::path& p) { return p.begin()->string(); }
 
-TEST(Architecture, EngineFoldersIncludeOnlyTheFoldersBelowThem) {
-  const fs::path engine = fs::path(LIGHTCONE_SOURCE_DIR) / "engine";
+// One message per include under dir that breaks levels (a folder includes
+// only its own folder and the folders of lower levels) and per folder that
+// has no level; `tree` ("engine", "pipeline") names dir in the messages.
+// Includes of files outside dir's folders (another tree, the standard
+// library, generated headers) are not its business.
+struct Violation {
+  std::string include;  // "file -> target", without the line number, which moves with every edit
+  std::string message;  // with the line
+  bool operator<(const Violation& o) const { return message < o.message; }
+};
+
+std::vector<Violation> level_violations(const fs::path& dir, const std::vector<std::vector<std::string>>& levels,
+                                        const std::string& tree) {
   std::map<std::string, int> level;
-  for (int l = 0; l < static_cast<int>(engine_levels.size()); ++l)
-    for (const auto& f : engine_levels[l]) level[f] = l;
-  for (const auto& e : fs::directory_iterator(engine)) {
-    if (!e.is_directory()) continue;
-    EXPECT_TRUE(level.count(e.path().filename().string()))
-        << "engine/" << e.path().filename().string() << " has no level: add it to engine_levels and to "
-        << "docs/architecture.md";
+  for (int l = 0; l < static_cast<int>(levels.size()); ++l)
+    for (const auto& f : levels[l]) level[f] = l;
+  std::vector<Violation> out;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (e.is_directory() && !level.count(name))
+      out.push_back({name, tree + "/" + name + " has no level: add it to " + tree + "_levels and to docs/architecture.md"});
+    const auto ext = e.path().extension();
+    if (e.is_regular_file() && (ext == ".hpp" || ext == ".cpp"))
+      out.push_back({name, tree + "/" + name + " lies outside every folder: each source lives in a folder with a level"});
   }
-  for (const Include& inc : includes_under(engine)) {
-    const std::string from = top_folder(fs::relative(inc.file, engine));
+  for (const Include& inc : includes_under(dir)) {
+    const std::string from = top_folder(fs::relative(inc.file, dir));
     const std::string to = top_folder(fs::path(inc.target));
-    if (to == from || !level.count(to) || !level.count(from)) continue;
-    EXPECT_LT(level[to], level[from]) << fs::relative(inc.file, engine).string() << ":" << inc.line << " includes "
-                                      << inc.target << ": engine/" << from << " must not include engine/" << to
-                                      << " (docs/architecture.md#folders)";
+    if (to == from || !level.count(to) || !level.count(from) || level[to] < level[from]) continue;
+    const std::string file = fs::relative(inc.file, dir).string();
+    out.push_back({file + " -> " + inc.target, file + ":" + std::to_string(inc.line) + " includes " + inc.target + ": " +
+                                                   tree + "/" + from + " must not include " + tree + "/" + to +
+                                                   " (docs/architecture.md#folders)"});
   }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
-// The pipeline's frame store, video writer and monitor API sit below the
-// commands: of the top-level files they include only the storage helpers
-// (and the monitor its page, generated into the build).
-TEST(Architecture, FarmAndVideoIncludeNoCommand) {
-  const fs::path pipeline = fs::path(LIGHTCONE_SOURCE_DIR) / "pipeline";
-  const std::set<std::string> allowed = {"durable_file.hpp", "interrupt.hpp", "monitor_page.hpp"};
-  for (const char* sub : {"farm", "video", "monitor"}) {
-    for (const Include& inc : includes_under(pipeline / sub)) {
-      if (inc.target.find('/') != std::string::npos || allowed.count(inc.target)) continue;
-      ADD_FAILURE() << fs::relative(inc.file, pipeline).string() << ":" << inc.line << " includes " << inc.target
-                    << ", a top-level pipeline file (docs/architecture.md#folders)";
-    }
+TEST(Architecture, EngineFoldersIncludeOnlyTheFoldersBelowThem) {
+  for (const Violation& v : level_violations(fs::path(LIGHTCONE_SOURCE_DIR) / "engine", engine_levels, "engine"))
+    ADD_FAILURE() << v.message;
+}
+
+// The pipeline by concern: storage at the bottom, the readers of storage
+// (telemetry, video, the monitor) above it, then what a job is, how its work
+// is handed out, the stages done to a frame, where the work runs (threads,
+// MPI) and the commands on top.
+const std::vector<std::vector<std::string>> pipeline_levels = {
+    {"store"}, {"telemetry", "video", "monitor"}, {"job"}, {"schedule"}, {"stages"}, {"transport"}, {"cli"},
+};
+
+// Includes that break the pipeline's levels today, each to be cut (issue
+// 44); a fixed one must leave this list, and a new one fails.
+const std::set<std::string> pipeline_known_violations = {
+    "job/render_job.hpp -> cli/render_command.hpp",
+    "job/test_pause.hpp -> stages/stripe_renderer.hpp",
+    "monitor/monitor_api.cpp -> telemetry/event_log.hpp",
+    "monitor/parsed_cache.hpp -> telemetry/event_log.hpp",
+    "store/frame_files.cpp -> job/resume_plan.hpp",
+    "store/journal.cpp -> telemetry/event_log.hpp",
+    "telemetry/event_log.hpp -> schedule/work_queue.hpp",
+    "telemetry/event_log.hpp -> transport/rank_board.hpp",
+    "telemetry/progress.cpp -> cli/interrupt.hpp",
+    "telemetry/progress.hpp -> schedule/work_queue.hpp",
+};
+
+TEST(Architecture, PipelineFoldersIncludeOnlyTheFoldersBelowThem) {
+  std::set<std::string> seen;
+  for (const Violation& v : level_violations(fs::path(LIGHTCONE_SOURCE_DIR) / "pipeline", pipeline_levels, "pipeline")) {
+    seen.insert(v.include);
+    if (!pipeline_known_violations.count(v.include)) ADD_FAILURE() << v.message;
   }
+  for (const std::string& k : pipeline_known_violations)
+    EXPECT_TRUE(seen.count(k)) << k << " no longer breaks the levels: take it off the known violations";
 }
 
 // docs/architecture.md names every engine folder.
@@ -154,7 +194,7 @@ TEST(Architecture, NoEngineOrPipelineFileIsNamedLikeATest) {
     }
 }
 
-// The test hook is read in one place: pipeline/farm/test_pause.cpp, the
+// The test hook is read in one place: pipeline/job/test_pause.cpp, the
 // only file of engine/ and pipeline/ that names a LIGHTCONE_TEST_ variable
 // in code (comments aside), and docs/architecture.md says so.
 TEST(Architecture, TheTestHookIsReadInOnePlace) {
@@ -169,14 +209,14 @@ TEST(Architecture, TheTestHookIsReadInOnePlace) {
         const auto comment = text.find("//");
         if (std::regex_search(text.substr(0, comment), test_variable)) {
           EXPECT_EQ(e.path().filename(), "test_pause.hpp")
-              << e.path() << ":" << n << " names a test variable outside pipeline/farm/test_pause.hpp";
+              << e.path() << ":" << n << " names a test variable outside pipeline/job/test_pause.hpp";
         }
       }
     }
   std::ifstream in(std::string(LIGHTCONE_SOURCE_DIR) + "/docs/architecture.md");
   std::stringstream doc;
   doc << in.rdbuf();
-  EXPECT_NE(doc.str().find("pipeline/farm/test_pause"), std::string::npos)
+  EXPECT_NE(doc.str().find("pipeline/job/test_pause"), std::string::npos)
       << "docs/architecture.md does not say where the test hook lives";
 }
 
@@ -211,9 +251,9 @@ std::set<fs::path> included_by(const fs::path& file) {
 // new kind rebuilds").
 TEST(Architecture, TheFarmsLoopsIncludeNoRegistry) {
   const fs::path root(LIGHTCONE_SOURCE_DIR);
-  for (const char* header : {"farm/work_queue.hpp", "farm/memo_budget.hpp", "farm/stripe_renderer.hpp",
-                             "farm/test_pause.hpp", "farm/local_farm.hpp", "farm/mpi_worker.hpp",
-                             "farm/mpi_messages.hpp", "farm/progress.hpp", "farm/farm_run.hpp"}) {
+  for (const char* header : {"schedule/work_queue.hpp", "stages/memo_budget.hpp", "stages/stripe_renderer.hpp",
+                             "job/test_pause.hpp", "transport/local_farm.hpp", "transport/mpi_worker.hpp",
+                             "transport/mpi_messages.hpp", "telemetry/progress.hpp", "schedule/farm_run.hpp"}) {
     const std::set<fs::path> in = included_by(root / "pipeline" / header);
     for (const char* registry : {"spacetime/spacetime.hpp", "camera/camera.hpp", "sky/sky.hpp", "objects/objects.hpp"})
       EXPECT_EQ(in.count((root / "engine" / registry).lexically_normal()), 0u)

@@ -1,4 +1,4 @@
-// Delivery from the command line (pipeline/delivery_flags.hpp,
+// Delivery from the command line (pipeline/job/delivery_flags.hpp,
 // camera/delivery.hpp): the flags -> the delivery, refused with the flag
 // named where they do not fit; the delivery -> the camera the frames are
 // made through (a dome's tilt and the subject's height checked by where the
@@ -17,11 +17,11 @@
 
 #include "camera/delivery.hpp"
 #include "core/constants.hpp"
-#include "delivery_flags.hpp"
-#include "farm/checked_line.hpp"
-#include "farm/journal.hpp"
+#include "job/delivery_flags.hpp"
+#include "store/checked_line.hpp"
+#include "store/journal.hpp"
 #include "monitor/pixel_trace.hpp"
-#include "render_job.hpp"
+#include "job/render_job.hpp"
 #include "scene/delivered_sky.hpp"
 #include "scratch_dir.hpp"
 

@@ -1,10 +1,10 @@
-// `lightcone develop`'s looks (pipeline/develop_command.cpp): what a frame's
+// `lightcone develop`'s looks (pipeline/cli/develop_command.cpp): what a frame's
 // look becomes under develop's flags.  A develop must be a fixed point:
 // run again, or stopped part way and run again, it gives the same looks,
 // so the exposure shift is from the render's own exposure, never from the
 // look a develop last applied (issue 43).
 
-#include "develop_command.hpp"
+#include "cli/develop_command.hpp"
 
 #include <gtest/gtest.h>
 

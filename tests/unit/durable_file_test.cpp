@@ -1,9 +1,9 @@
-// Tests of lc::DurableFile (pipeline/durable_file.cpp), which every output
+// Tests of lc::DurableFile (pipeline/store/durable_file.cpp), which every output
 // of lightcone goes through: the final name shows a file only when it is
 // complete, a failed or abandoned write changes nothing and leaves no
 // temporary, and errors name the file and the reason.
 
-#include "durable_file.hpp"
+#include "store/durable_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,7 +29,7 @@
 #include <thread>
 
 #include "image/image_io.hpp"
-#include "interrupt.hpp"
+#include "cli/interrupt.hpp"
 #include "scratch_dir.hpp"
 #include "test_errors.hpp"
 #include "tiny_frame.hpp"

@@ -13,7 +13,7 @@
 
 #include "scratch_dir.hpp"
 #include "test_errors.hpp"
-#include "video/frame_sequence.hpp"
+#include "store/frame_sequence.hpp"
 
 namespace {
 

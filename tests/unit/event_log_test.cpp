@@ -1,4 +1,4 @@
-// The farm's event log (farm/event_log.hpp): lines round-trip with their
+// The farm's event log (telemetry/event_log.hpp): lines round-trip with their
 // fields (a message's spaces and newlines too), a line cut short or
 // garbled is skipped, and a reader keeps the latest run only, in bounded
 // memory.
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "farm/event_log.hpp"
+#include "telemetry/event_log.hpp"
 #include "scratch_dir.hpp"
 
 namespace lc::farm {

@@ -1,8 +1,8 @@
-// Tests of lc::farm::hash_file (pipeline/farm/content_hash.cpp): it hashes
+// Tests of lc::farm::hash_file (pipeline/store/content_hash.cpp): it hashes
 // the inputs of a render, which a shot names, so it must not block or run
 // forever on what is no regular file.
 
-#include "farm/content_hash.hpp"
+#include "store/content_hash.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "farm/memo_budget.hpp"
+#include "stages/memo_budget.hpp"
 #include "render/sample_memo.hpp"
 
 #include <unistd.h>

@@ -11,10 +11,10 @@
 
 #include <gtest/gtest.h>
 
-#include "farm/farm_run.hpp"
-#include "farm/frame_store.hpp"
-#include "farm/mpi_messages.hpp"
-#include "farm/work_queue.hpp"
+#include "schedule/farm_run.hpp"
+#include "store/frame_store.hpp"
+#include "transport/mpi_messages.hpp"
+#include "schedule/work_queue.hpp"
 
 namespace lc::farm {
 namespace {

@@ -12,10 +12,10 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include "farm/checked_line.hpp"
-#include "farm/frame_files.hpp"
-#include "farm/frame_store.hpp"
-#include "farm/resume_plan.hpp"
+#include "store/checked_line.hpp"
+#include "store/frame_files.hpp"
+#include "store/frame_store.hpp"
+#include "job/resume_plan.hpp"
 #include "image/image_io.hpp"
 #include "render/renderer.hpp"
 #include "scratch_dir.hpp"

@@ -1,7 +1,7 @@
 // Frame ranges as the command line takes them: "A", "A:B", "A:B:STEP",
 // inclusive, checked against the shot's frames.
 
-#include "frame_range.hpp"
+#include "job/frame_range.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // number must never render another size), pixels "I,J" alike, and the size
 // after --size and --scale.
 
-#include "image_size.hpp"
+#include "job/image_size.hpp"
 
 #include <gtest/gtest.h>
 

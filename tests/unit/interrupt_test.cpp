@@ -2,7 +2,7 @@
 // recorded (the command stops where it can), a second one ends the process,
 // guards nest, and the old handlers come back.
 
-#include "interrupt.hpp"
+#include "cli/interrupt.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "farm/checked_line.hpp"
-#include "farm/content_hash.hpp"
-#include "farm/journal.hpp"
+#include "store/checked_line.hpp"
+#include "store/content_hash.hpp"
+#include "store/journal.hpp"
 #include "scratch_dir.hpp"
 
 namespace lc::farm {

@@ -18,10 +18,10 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "farm/checked_line.hpp"
-#include "farm/event_log.hpp"
-#include "farm/frame_files.hpp"
-#include "farm/frame_store.hpp"
+#include "store/checked_line.hpp"
+#include "telemetry/event_log.hpp"
+#include "store/frame_files.hpp"
+#include "store/frame_store.hpp"
 #include "file_bytes.hpp"
 #include "monitor/folder_file.hpp"
 #include "monitor/monitor_api.hpp"

@@ -10,9 +10,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "farm/checked_line.hpp"
-#include "farm/event_log.hpp"
-#include "farm/journal.hpp"
+#include "store/checked_line.hpp"
+#include "telemetry/event_log.hpp"
+#include "store/journal.hpp"
 #include "monitor/folder_file.hpp"
 #include "monitor/parsed_cache.hpp"
 #include "scratch_dir.hpp"

@@ -1,10 +1,10 @@
-// What each MPI worker holds (farm/rank_board.hpp): sets handed out and not
+// What each MPI worker holds (transport/rank_board.hpp): sets handed out and not
 // returned, by rank, with their frames; and the event log's `held` field
 // round-trips, a malformed entry skipped.
 
 #include <gtest/gtest.h>
 
-#include "farm/rank_board.hpp"
+#include "transport/rank_board.hpp"
 
 namespace lc::farm {
 namespace {

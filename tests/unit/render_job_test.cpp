@@ -1,4 +1,4 @@
-// A render job (pipeline/render_job.hpp): what every rank derives from the
+// A render job (pipeline/job/render_job.hpp): what every rank derives from the
 // flags and the shot, the test hook's value among it.
 
 #include <cstdlib>
@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render_job.hpp"
+#include "job/render_job.hpp"
 
 namespace lc {
 namespace {

@@ -1,6 +1,6 @@
 // The showcase's plan: which frames of which shot at what size and rate.
 
-#include "showcase_plan.hpp"
+#include "job/showcase_plan.hpp"
 
 #include <gtest/gtest.h>
 

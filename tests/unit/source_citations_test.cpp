@@ -1,6 +1,6 @@
 // Every project file a comment or a doc cites exists: a comment that says
 // "see render/pixel_rows.hpp" or a doc that points at
-// "pipeline/farm/journal.cpp" stays true when files move (docs/architecture.md,
+// "pipeline/store/journal.cpp" stays true when files move (docs/architecture.md,
 // "Conventions the code relies on").  The test reads comments (after // or inside /* */ in C++,
 // after # in shell, Python and CMake, after -- in Lua) and the whole text of
 // the docs, and checks each path whose first folder is one of the project's

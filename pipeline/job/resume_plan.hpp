@@ -1,0 +1,35 @@
+#pragma once
+// Which frames of a render still need rendering, given what the frame store
+// already holds (frame_store.hpp says what is trusted), and the refusal when
+// finished frames were made from other settings or inputs.
+
+#include <string>
+#include <vector>
+
+#include "store/frame_store.hpp"
+#include "job/shot_survey.hpp"
+
+namespace lc::farm {
+
+struct ResumePlan {
+  std::vector<int> todo;     // in the order asked for
+  std::vector<int> done;     // finished already: skipped
+  std::vector<int> damaged;  // journalled, but files missing or changed: rendered again
+  std::vector<int> stale;    // finished from other settings or inputs: rendered again (--force)
+};
+
+// Sorts `frames` into the plan.  Without `force`, stale frames make it throw
+// std::runtime_error explaining what differs (settings, or which input
+// files changed) and how to proceed.
+ResumePlan plan_resume(const FrameStore& store, const ShotSurvey& survey, const FrameSettings& settings,
+                       const std::vector<int>& frames, bool force, const std::string& shot_name);
+
+// "0-4, 7, 9-12": a sorted or unsorted list of frame numbers, compactly; at
+// most `max_items` runs, then ", ... (N frames in all)" (a preview's frames
+// every 10th would otherwise fill the screen).
+std::string format_frame_list(std::vector<int> frames, int max_items = 12);
+
+// "frame 3 was" / "frames 0-4, 7 were": the start of a sentence about frames.
+std::string frames_were(const std::vector<int>& frames);
+
+}  // namespace lc::farm

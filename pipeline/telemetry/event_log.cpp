@@ -1,0 +1,320 @@
+#include "telemetry/event_log.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <istream>
+#include <sstream>
+
+#include <ext/stdio_filebuf.h>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "core/line_reader.hpp"
+#include "store/durable_file.hpp"
+#include "store/checked_line.hpp"
+
+namespace lc::farm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view header = "lightcone-events 1";
+constexpr std::size_t max_event_line = 16 * 1024;
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+bool plain(unsigned char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+         std::strchr("-._~/:,+", c) != nullptr;
+}
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// "key=value key=value": nullopt when a token is not key=value.
+std::optional<Event> parse_event(const std::string& content) {
+  Event e;
+  std::size_t pos = 0;
+  while (pos < content.size()) {
+    const std::size_t end = std::min(content.find(' ', pos), content.size());
+    const std::string token = content.substr(pos, end - pos);
+    pos = end + 1;
+    if (token.empty()) continue;
+    const auto eq = token.find('=');
+    if (eq == std::string::npos || eq == 0) return std::nullopt;
+    e.fields[token.substr(0, eq)] = percent_decode(token.substr(eq + 1));
+  }
+  const auto t = e.fields.find("t"), kind = e.fields.find("event");
+  if (t == e.fields.end() || kind == e.fields.end()) return std::nullopt;
+  char* stop = nullptr;
+  e.time = std::strtod(t->second.c_str(), &stop);
+  if (stop != t->second.c_str() + t->second.size()) return std::nullopt;
+  e.kind = kind->second;
+  e.fields.erase(t);
+  e.fields.erase("event");
+  return e;
+}
+
+long field_long(const Event& e, const char* key) {
+  const auto it = e.fields.find(key);
+  return it == e.fields.end() ? 0 : std::strtol(it->second.c_str(), nullptr, 10);
+}
+
+}  // namespace
+
+std::string percent_encode(const std::string& text, std::string_view also) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (plain(u) && also.find(c) == std::string_view::npos)
+      out += c;
+    else
+      out += fmt::format("%{:02X}", u);
+  }
+  return out;
+}
+
+std::string percent_decode(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '%' && i + 2 < text.size()) {
+      const int hi = hex_digit(text[i + 1]), lo = hex_digit(text[i + 2]);
+      if (hi >= 0 && lo >= 0) {
+        out += static_cast<char>(16 * hi + lo);
+        i += 2;
+        continue;
+      }
+    }
+    out += text[i];
+  }
+  return out;
+}
+
+fs::path EventLog::file_of(const fs::path& dir, const std::string& shot) { return dir / (shot + ".events"); }
+
+EventLog::EventLog(const fs::path& dir, const std::string& shot) : name_(file_of(dir, shot).string()) {
+  // Opened as lightcone's own file: a link under its name is not appended
+  // through, a FIFO does not block the render (which holds the folder's
+  // lock); either is said and the render goes on without a log.
+  OwnFile own;
+  try {
+    own = open_own_file(name_, O_WRONLY | O_APPEND | O_CREAT, "write the event log");
+  } catch (const std::runtime_error& e) {
+    fmt::print(stderr, "render: warning: {}: `lightcone monitor` will not see this run\n", e.what());
+    warned_ = true;
+    return;
+  }
+  fd_ = own.fd;
+  created_ = own.created;
+  struct stat st {};
+  if (::fstat(fd_, &st) == 0 && st.st_size == 0) append(std::string(header));
+}
+
+EventLog::~EventLog() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void EventLog::append(const std::string& content) {
+  if (fd_ < 0) return;
+  const std::string line = with_check(content) + "\n";
+  std::lock_guard lock(mutex_);
+  // One write: with O_APPEND the line lands whole after whatever is there.
+  const ssize_t n = ::write(fd_, line.data(), line.size());
+  if (n != static_cast<ssize_t>(line.size()) && !warned_) {
+    warned_ = true;
+    fmt::print(stderr, "render: warning: cannot write the event log {} ({}); the render goes on\n", name_,
+               n < 0 ? std::strerror(errno) : "a short write");
+  }
+}
+
+namespace {
+
+// The run line's cwd and command fields (" cwd=... command=..."), "" when
+// the command line is unknown or too long.
+std::string resume_fields(const RunStart& r) {
+  if (r.command.empty()) return "";
+  std::string joined;
+  for (std::size_t k = 0; k < r.command.size(); ++k) joined += (k ? std::string(1, '\0') : "") + r.command[k];
+  std::string fields = fmt::format(" cwd={} command={}", percent_encode(r.cwd), percent_encode(joined));
+  // A command line so long that the run line would pass what a reader
+  // takes is left out: the run line matters more.
+  return fields.size() > max_event_line / 2 ? "" : fields;
+}
+
+}  // namespace
+
+std::vector<std::string> own_command_line() {
+  // NUL-terminated arguments; bounded, as Linux bounds a command line.
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::vector<std::string> out;
+  std::size_t bytes = 0;
+  for (std::string arg; std::getline(in, arg, '\0') && bytes < (1u << 20);) {
+    bytes += arg.size() + 1;
+    out.push_back(std::move(arg));
+  }
+  return out;
+}
+
+void EventLog::run_started(const RunStart& r) {
+  append(fmt::format("t={:.3f} event=run pid={} host={} ranks={} threads={} todo={} done={} size={}x{} script={}{}",
+                     now_seconds(), r.pid, percent_encode(r.host), r.ranks, r.threads, r.todo, r.done_before, r.width,
+                     r.height, percent_encode(r.script), resume_fields(r)));
+}
+
+void EventLog::rank_joined(int rank, const std::string& host, int threads) {
+  append(fmt::format("t={:.3f} event=rank rank={} host={} threads={}", now_seconds(), rank, percent_encode(host), threads));
+}
+
+void EventLog::rank_lost(int rank, const std::string& host) {
+  append(fmt::format("t={:.3f} event=lost rank={} host={}", now_seconds(), rank, percent_encode(host)));
+}
+
+void EventLog::progress(const QueueProgress& p, const std::vector<int>& open, const std::vector<RankHolding>* held) {
+  std::string frames;
+  for (std::size_t k = 0; k < open.size() && k < 64; ++k) frames += (k ? "," : "") + std::to_string(open[k]);
+  std::string holding;
+  if (held) {
+    bool complete = true;
+    holding = " held=" + format_holdings(*held, 8192, &complete);
+    if (!complete) holding += " held_all=0";
+  }
+  append(fmt::format("t={:.3f} event=progress stored={} total={} rows={}/{} rays={} core_seconds={:.3f} open={}{}",
+                     now_seconds(), p.frames_stored, p.frames_total, p.rows_done, p.rows_total, p.stats.rays,
+                     p.stats.seconds, frames, holding));
+}
+
+void EventLog::frame_stored(int frame, double core_seconds, long rays) {
+  append(fmt::format("t={:.3f} event=frame frame={} core_seconds={:.3f} rays={}", now_seconds(), frame, core_seconds, rays));
+}
+
+void EventLog::error(const std::string& message) {
+  append(fmt::format("t={:.3f} event=error message={}", now_seconds(), percent_encode(message)));
+}
+
+void EventLog::run_ended(const char* status, int stored) {
+  if (created_ && stored == 0 && fd_ >= 0) {
+    ::close(fd_);
+    fd_ = -1;
+    ::unlink(name_.c_str());
+    return;
+  }
+  append(fmt::format("t={:.3f} event=end status={} stored={}", now_seconds(), status, stored));
+}
+
+ProgressEvents::ProgressEvents(EventLog& log, const WorkQueue& queue, const RankBoard* board,
+                               std::chrono::milliseconds interval)
+    : log_(log), queue_(queue), board_(board) {
+  thread_ = std::thread([this, interval] {
+    std::unique_lock lock(mutex_);
+    while (!stop_.wait_for(lock, interval, [this] { return stopping_; })) write();
+  });
+}
+
+void ProgressEvents::write() {
+  if (!board_) return log_.progress(queue_.progress(), queue_.open_frames());
+  const std::vector<RankHolding> held = board_->holdings();
+  log_.progress(queue_.progress(), queue_.open_frames(), &held);
+}
+
+ProgressEvents::~ProgressEvents() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  stop_.notify_all();
+  thread_.join();
+  write();
+}
+
+EventSummary read_events(const fs::path& file, std::size_t keep) {
+  EventSummary s;
+  // A log that is no regular file of lightcone's (a FIFO would block the
+  // reader for good) reads as none, as a missing one does.
+  OwnFile own;
+  try {
+    own = open_own_file(file, O_RDONLY, "read the event log");
+  } catch (const std::runtime_error&) {
+    return s;
+  }
+  if (own.fd < 0) return s;
+  __gnu_cxx::stdio_filebuf<char> buffer(own.fd, std::ios::in | std::ios::binary);  // closes the descriptor
+  std::istream in(&buffer);
+  return read_events(in, keep);
+}
+
+EventSummary read_events(std::istream& in, std::size_t keep) {
+  // Input: the log's lines from its start, or from any line's start (the
+  // monitor reads what was appended since it last read: its first line is
+  // then an event, read as one).
+  EventSummary s;
+  LineReader lines(in, max_event_line);
+  bool first = true;
+  while (const auto line = lines.next()) {
+    if (!line->complete || line->too_long) {
+      if (line->complete) ++s.bad_lines;
+      continue;
+    }
+    const auto content = checked_content(std::string(line->text));
+    if (first) {
+      first = false;
+      if (content && *content == header) continue;
+    }
+    const auto e = content ? parse_event(*content) : std::nullopt;
+    if (!e) {
+      ++s.bad_lines;
+      continue;
+    }
+    if (e->kind == "run") {
+      const int bad = s.bad_lines;
+      s = EventSummary{};
+      s.bad_lines = bad;
+      RunStart r;
+      r.time = e->time;
+      r.pid = field_long(*e, "pid");
+      r.host = e->fields.count("host") ? e->fields.at("host") : "";
+      r.ranks = static_cast<int>(field_long(*e, "ranks"));
+      r.threads = static_cast<int>(field_long(*e, "threads"));
+      r.todo = static_cast<int>(field_long(*e, "todo"));
+      r.done_before = static_cast<int>(field_long(*e, "done"));
+      const std::string size = e->fields.count("size") ? e->fields.at("size") : "";
+      std::sscanf(size.c_str(), "%dx%d", &r.width, &r.height);
+      r.script = e->fields.count("script") ? e->fields.at("script") : "";
+      r.cwd = e->fields.count("cwd") ? e->fields.at("cwd") : "";
+      if (e->fields.count("command")) {
+        std::istringstream args(e->fields.at("command"));
+        for (std::string arg; std::getline(args, arg, '\0');) r.command.push_back(std::move(arg));
+      }
+      s.run = r;
+    } else if (e->kind == "rank") {
+      if (s.ranks.size() < max_summary_ranks) s.ranks.push_back(*e);
+    } else if (e->kind == "lost") {
+      if (s.lost.size() < max_summary_ranks) s.lost.push_back(static_cast<int>(field_long(*e, "rank")));
+    } else if (e->kind == "progress") {
+      s.progress = *e;
+    } else if (e->kind == "frame") {
+      ++s.frames_stored;
+    } else if (e->kind == "error") {
+      if (s.errors.size() < keep) s.errors.push_back(*e);
+    } else if (e->kind == "end") {
+      s.end = *e;
+    }
+    s.recent.push_back(*e);
+    if (s.recent.size() > keep) s.recent.pop_front();
+  }
+  return s;
+}
+
+}  // namespace lc::farm
