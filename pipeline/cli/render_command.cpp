@@ -24,6 +24,7 @@
 #include "transport/mpi_worker.hpp"
 #include "telemetry/progress.hpp"
 #include "job/resume_plan.hpp"
+#include "store/frame_list.hpp"
 #include "stages/scene_stripe_renderer.hpp"
 #include "job/shot_survey.hpp"
 #include "stages/store_sink.hpp"

@@ -39,7 +39,7 @@ struct MeterLine {
 };
 
 // What each frame's reading depends on: its frame's inputs (the script,
-// the modules and its sky's files, by content: shot_inputs.hpp), the
+// the modules and its sky's files, by content: job/shot_survey.hpp), the
 // meter's size and the camera the shot is delivered through.  Evaluates
 // the frames (script only).
 std::map<int, std::string> reading_keys(Shot& shot, const std::vector<int>& frames, int width, int height) {

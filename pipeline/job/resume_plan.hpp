@@ -24,12 +24,4 @@ struct ResumePlan {
 ResumePlan plan_resume(const FrameStore& store, const ShotSurvey& survey, const FrameSettings& settings,
                        const std::vector<int>& frames, bool force, const std::string& shot_name);
 
-// "0-4, 7, 9-12": a sorted or unsorted list of frame numbers, compactly; at
-// most `max_items` runs, then ", ... (N frames in all)" (a preview's frames
-// every 10th would otherwise fill the screen).
-std::string format_frame_list(std::vector<int> frames, int max_items = 12);
-
-// "frame 3 was" / "frames 0-4, 7 were": the start of a sentence about frames.
-std::string frames_were(const std::vector<int>& frames);
-
 }  // namespace lc::farm

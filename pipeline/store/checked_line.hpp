@@ -1,10 +1,12 @@
 #pragma once
 // Lines that carry their own check: "<content> #<16 hex>", the hash of the
 // content, so a reader can tell a whole line from one a crash cut short or
-// a disk garbled (the journal, the event log).
+// a disk garbled (the journal, the event log); and how a field of such a
+// line spells any text (percent escapes).
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "store/content_hash.hpp"
 
@@ -21,5 +23,11 @@ inline std::optional<std::string> checked_content(const std::string& line) {
   if (line.substr(at + 2) != to_hex(hash_bytes(content))) return std::nullopt;
   return content;
 }
+
+// Text as the value of a line's field: bytes other than letters, digits and
+// "-._~/:,+" (less those in `also`, for a list's separator) as %XX; and
+// back (a malformed escape is kept as it is).
+std::string percent_encode(const std::string& text, std::string_view also = {});
+std::string percent_decode(const std::string& text);
 
 }  // namespace lc::farm

@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "store/frame_list.hpp"
 #include "store/journal.hpp"
-#include "job/resume_plan.hpp"
 
 namespace lc::farm {
 

@@ -22,7 +22,6 @@
 #include "durable_file.hpp"
 #include "store/checked_line.hpp"
 #include "store/content_hash.hpp"
-#include "telemetry/event_log.hpp"
 
 namespace lc::farm {
 

@@ -32,18 +32,6 @@ double now_seconds() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
-bool plain(unsigned char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-         std::strchr("-._~/:,+", c) != nullptr;
-}
-
-int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
-
 // "key=value key=value": nullopt when a token is not key=value.
 std::optional<Event> parse_event(const std::string& content) {
   Event e;
@@ -74,34 +62,6 @@ long field_long(const Event& e, const char* key) {
 }
 
 }  // namespace
-
-std::string percent_encode(const std::string& text, std::string_view also) {
-  std::string out;
-  for (const char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (plain(u) && also.find(c) == std::string_view::npos)
-      out += c;
-    else
-      out += fmt::format("%{:02X}", u);
-  }
-  return out;
-}
-
-std::string percent_decode(const std::string& text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '%' && i + 2 < text.size()) {
-      const int hi = hex_digit(text[i + 1]), lo = hex_digit(text[i + 2]);
-      if (hi >= 0 && lo >= 0) {
-        out += static_cast<char>(16 * hi + lo);
-        i += 2;
-        continue;
-      }
-    }
-    out += text[i];
-  }
-  return out;
-}
 
 fs::path EventLog::file_of(const fs::path& dir, const std::string& shot) { return dir / (shot + ".events"); }
 

@@ -151,10 +151,4 @@ EventSummary read_events(const std::filesystem::path& file, std::size_t keep = 2
 // The same of a log's text (or of the lines appended to it since a read).
 EventSummary read_events(std::istream& in, std::size_t keep = 200);
 
-// Text as an event field's value: bytes other than letters, digits and
-// "-._~/:,+" (less those in `also`, for a list's separator) as %XX; and
-// back (a malformed escape is kept as it is).
-std::string percent_encode(const std::string& text, std::string_view also = {});
-std::string percent_decode(const std::string& text);
-
 }  // namespace lc::farm

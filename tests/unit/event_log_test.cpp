@@ -118,13 +118,5 @@ TEST(EventLog, ARunThatStoredNothingLeavesNoLogItMade) {
   EXPECT_EQ(s.end->fields.at("status"), "error");
 }
 
-TEST(EventLog, PercentEncodingRoundTrips) {
-  const std::string text = "a b%c\n\t=#é/:,+~";
-  EXPECT_EQ(percent_encode(text).find_first_of(" \n\t=#"), std::string::npos);
-  EXPECT_EQ(percent_decode(percent_encode(text)), text);
-  EXPECT_EQ(percent_decode("100%"), "100%");
-  EXPECT_EQ(percent_decode("%zz"), "%zz");
-}
-
 }  // namespace
 }  // namespace lc::farm

@@ -230,11 +230,5 @@ TEST(FarmStore, TemporariesOfAKilledRenderAreRemoved) {
   EXPECT_TRUE(std::filesystem::exists(dir / "s.notes.txt"));
 }
 
-TEST(FarmStore, FrameListsAreCompact) {
-  EXPECT_EQ(format_frame_list({4, 0, 1, 2, 7, 9, 10}), "0-2, 4, 7, 9-10");
-  EXPECT_EQ(format_frame_list({}), "");
-  EXPECT_EQ(format_frame_list({0, 10, 20, 30, 40}, 3), "0, 10, 20, ... (5 frames in all)");
-}
-
 }  // namespace
 }  // namespace lc::farm
