@@ -17,7 +17,7 @@
 
 #include "core/json.hpp"
 #include "store/durable_file.hpp"
-#include "telemetry/event_log.hpp"
+#include "store/event_file.hpp"
 #include "store/frame_files.hpp"
 #include "store/journal.hpp"
 #include "image/image_io.hpp"
@@ -149,7 +149,7 @@ std::shared_ptr<const farm::JournalContents> journal_of(JournalCache& cache, con
 // lines that fail their check are only counted, never shown): the latest
 // run and its last EventFormat::keep events.
 std::shared_ptr<const farm::EventSummary> events_of(EventCache& cache, const fs::path& dir, const std::string& shot) {
-  const fs::path path = farm::EventLog::file_of(dir, shot);
+  const fs::path path = farm::events_file(dir, shot);
   const FolderFile file(path);
   if (file.missing()) return std::make_shared<const farm::EventSummary>();
   if (file.refused()) throw BadRequest(403, fmt::format("{} {}", path.filename().string(), file.why()));

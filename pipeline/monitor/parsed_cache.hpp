@@ -18,7 +18,7 @@
 #include <mutex>
 #include <string>
 
-#include "telemetry/event_log.hpp"
+#include "store/event_file.hpp"
 #include "store/journal.hpp"
 #include "monitor/folder_file.hpp"
 

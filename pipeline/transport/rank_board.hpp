@@ -10,16 +10,9 @@
 #include <vector>
 
 #include "schedule/work_queue.hpp"
+#include "store/event_file.hpp"
 
 namespace lc::farm {
-
-// One worker's share of the work at a moment.
-struct RankHolding {
-  int rank = 0;
-  int sets = 0;             // sets handed out and not returned
-  std::vector<int> frames;  // the frames they belong to, ascending, each once
-  bool operator==(const RankHolding&) const = default;
-};
 
 class RankBoard {
  public:
@@ -36,14 +29,5 @@ class RankBoard {
   mutable std::mutex mutex_;
   std::map<int, std::vector<WorkItem>> held_;
 };
-
-// "1:2:3+4,3:1:4" (rank:sets:frames, frames joined by '+'), the event log's
-// `held` field, and back; a malformed entry is skipped when read.  Only
-// ranks holding sets are written (one not listed holds none), and at most
-// `max_chars` of them: an event line must stay under the log's limit on a
-// farm of thousands of ranks.  `complete` says whether every one fitted.
-std::string format_holdings(const std::vector<RankHolding>& holdings, std::size_t max_chars = 8192,
-                            bool* complete = nullptr);
-std::vector<RankHolding> parse_holdings(const std::string& text);
 
 }  // namespace lc::farm

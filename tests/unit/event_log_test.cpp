@@ -33,7 +33,7 @@ TEST(EventLog, EventsRoundTripAndTheLatestRunIsKept) {
     log.rank_lost(2, "n2");
     log.run_ended("error", 2);
   }
-  const EventSummary s = read_events(EventLog::file_of(dir.path(), "shot"));
+  const EventSummary s = read_events(events_file(dir.path(), "shot"));
   ASSERT_TRUE(s.run);
   EXPECT_EQ(s.run->pid, 42);
   EXPECT_EQ(s.run->host, "node 7");
@@ -64,7 +64,7 @@ TEST(EventLog, CutAndGarbledLinesAreSkipped) {
     log.run_started({.pid = 7, .todo = 2});
     log.frame_stored(0, 1.0, 10);
   }
-  const auto file = EventLog::file_of(dir.path(), "shot");
+  const auto file = events_file(dir.path(), "shot");
   {
     std::ofstream out(file, std::ios::app);
     out << "t=1 event=frame frame=1 core_seconds=1 rays=1 #0000000000000000\n";  // a wrong check
@@ -85,7 +85,7 @@ TEST(EventLog, OnlyALimitedTailIsHeld) {
     log.run_started({.todo = 100000});
     for (int f = 0; f < 100000; ++f) log.frame_stored(f, 0.5, 1);
   }
-  const EventSummary s = read_events(EventLog::file_of(dir.path(), "shot"), 50);
+  const EventSummary s = read_events(events_file(dir.path(), "shot"), 50);
   EXPECT_EQ(s.frames_stored, 100000);
   ASSERT_EQ(s.recent.size(), 50u);
   EXPECT_EQ(s.recent.back().fields.at("frame"), "99999");
@@ -93,7 +93,7 @@ TEST(EventLog, OnlyALimitedTailIsHeld) {
 
 TEST(EventLog, ARunThatStoredNothingLeavesNoLogItMade) {
   test::ScratchDir dir;
-  const auto file = EventLog::file_of(dir.path(), "shot");
+  const auto file = events_file(dir.path(), "shot");
   {
     EventLog log(dir.path(), "shot");
     log.run_started({.todo = 3});

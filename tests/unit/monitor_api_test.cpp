@@ -189,7 +189,7 @@ TEST(MonitorApi, ARunThatStoppedWithoutAnEndIsSaidToHaveStopped) {
   const fs::path dir = scratch / "out";
   fs::create_directories(dir);
   {
-    std::ofstream out(farm::EventLog::file_of(dir, "s"));
+    std::ofstream out(farm::events_file(dir, "s"));
     const std::string run = "t=1000.000 event=run pid=1 host=h ranks=1 threads=1 todo=4 done=0 size=4x2";
     out << farm::with_check("lightcone-events 1") << "\n";
     out << farm::with_check(run) << "\n";
@@ -208,7 +208,7 @@ TEST(MonitorApi, TheEtaIsInWallTimeAndFramesLeftOutliveTheRun) {
   fs::create_directories(dir);
   const long t0 = static_cast<long>(std::time(nullptr)) - 40;
   {
-    std::ofstream out(farm::EventLog::file_of(dir, "s"));
+    std::ofstream out(farm::events_file(dir, "s"));
     out << farm::with_check("lightcone-events 1") << "\n";
     out << farm::with_check(fmt::format("t={} event=run pid=1 host=h ranks=1 threads=8 todo=5 done=0 size=4x2", t0)) << "\n";
     for (int f = 0; f < 3; ++f)  // one every 10 s
@@ -221,7 +221,7 @@ TEST(MonitorApi, TheEtaIsInWallTimeAndFramesLeftOutliveTheRun) {
   EXPECT_TRUE(has(running, "\"to_do\": 2")) << running.body;
   // 3 frames in 30 s: 6 a minute, the 2 left in 20 s (not 2 x 80 core-seconds over 8 threads).
   EXPECT_TRUE(has(running, "\"frames_per_minute\": 6, \"eta_seconds\": 20,")) << running.body;
-  std::ofstream(farm::EventLog::file_of(dir, "s"), std::ios::app)
+  std::ofstream(farm::events_file(dir, "s"), std::ios::app)
       << farm::with_check(fmt::format("t={} event=end status=interrupted stored=3", t0 + 40)) << "\n";
   const Reply interrupted = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
   EXPECT_TRUE(has(interrupted, "\"state\": \"interrupted\"")) << interrupted.body;
@@ -286,7 +286,7 @@ TEST(MonitorApi, ALinkedOrForeignJournalIsNeverQuoted) {
   }
   // A shot whose journal is its own and whose log links out.
   fs::copy_file(scratch / "passwd", scratch / "e.events");
-  fs::create_symlink(scratch / "e.events", farm::EventLog::file_of(dir, "e"));
+  fs::create_symlink(scratch / "e.events", farm::events_file(dir, "e"));
   farm::FrameStore(dir, "e").write_frame(0, tiny(), {}, farm::FrameSettings{4, 2, 1, false, false}, "00000000000000aa", {},
                                           {.rays = 8}, Look{});
   for (const std::string page : {"/api/status", "/api/events"}) {
