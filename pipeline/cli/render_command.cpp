@@ -281,7 +281,10 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     // writing frames in parallel keeps up with many workers.
     farm::FarmRun run(queue, sink, mpi ? farm::master_writer_threads : 1, [&interrupts] { return interrupts.signal(); });
     farm::RankBoard board;
-    const farm::ProgressEvents progress_events(events, queue, mpi ? &board : nullptr);
+    const farm::ProgressEvents progress_events(events, [&queue, &board, on_mpi = mpi != nullptr] {
+      return farm::ProgressReading{queue.progress(), queue.open_frames(),
+                                   on_mpi ? std::optional(board.holdings()) : std::nullopt};
+    });
     if (mpi) {
       const farm::MasterReport report = farm::run_mpi_master(*mpi, queue, run, progress, job.digest, &events, &board);
       cores = report.worker_threads;
@@ -311,7 +314,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
     interrupted = run.interrupted();
   }
   progress.finish();
-  const farm::QueueProgress p = queue.progress();
+  const farm::RunProgress p = queue.progress();
   if (error) events.error(*error);
   events.run_ended(error ? "error" : interrupted ? "interrupted" : "done", p.frames_stored);
   for (const auto& [rank, host] : lost)

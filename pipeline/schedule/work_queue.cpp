@@ -199,7 +199,7 @@ bool WorkQueue::stopped() const {
   return stopped_;
 }
 
-QueueProgress WorkQueue::progress() const {
+RunProgress WorkQueue::progress() const {
   std::lock_guard lock(mutex_);
   return progress_;
 }

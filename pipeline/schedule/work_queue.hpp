@@ -19,6 +19,7 @@
 #include "store/frame_makers.hpp"
 #include "job/stripes.hpp"
 #include "render/render_settings.hpp"
+#include "telemetry/run_progress.hpp"
 
 namespace lc::farm {
 
@@ -40,13 +41,6 @@ struct CompletedFrame {
   RenderStats stats;
   FrameMakers makers;  // the ranks that rendered its sets, with their nodes
   std::chrono::steady_clock::time_point dispatched;  // when its first set was handed out
-};
-
-struct QueueProgress {
-  long rows_total = 0, rows_done = 0;  // work, counted in image rows (ETA)
-  int frames_total = 0, frames_stored = 0;      // full frames
-  int previews_total = 0, previews_stored = 0;  // preview frames
-  RenderStats stats;                            // of every finished set
 };
 
 class WorkQueue {
@@ -95,7 +89,7 @@ class WorkQueue {
   void stop();
   bool stopped() const;
 
-  QueueProgress progress() const;
+  RunProgress progress() const;
   // The frames of the full pass handed out and not yet stored, ascending.
   std::vector<int> open_frames() const;
   const StripeLayout& layout() const { return layout_; }
@@ -138,7 +132,7 @@ class WorkQueue {
   std::map<int, std::vector<std::size_t>> left_for_;  // per owner, the current frame's indices it had, descending
   std::map<Key, OpenFrame> open_;  // handed out and not stored yet
   bool stopped_ = false;
-  QueueProgress progress_;
+  RunProgress progress_;
 };
 
 // Frames open at once for `threads` render threads (each with one set in

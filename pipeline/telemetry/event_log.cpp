@@ -105,7 +105,7 @@ void EventLog::rank_lost(int rank, const std::string& host) {
   append(fmt::format("t={:.3f} event=lost rank={} host={}", now_seconds(), rank, percent_encode(host)));
 }
 
-void EventLog::progress(const QueueProgress& p, const std::vector<int>& open, const std::vector<RankHolding>* held) {
+void EventLog::progress(const RunProgress& p, const std::vector<int>& open, const std::vector<RankHolding>* held) {
   std::string frames;
   for (std::size_t k = 0; k < open.size() && k < 64; ++k) frames += (k ? "," : "") + std::to_string(open[k]);
   std::string holding;
@@ -137,9 +137,9 @@ void EventLog::run_ended(const char* status, int stored) {
   append(fmt::format("t={:.3f} event=end status={} stored={}", now_seconds(), status, stored));
 }
 
-ProgressEvents::ProgressEvents(EventLog& log, const WorkQueue& queue, const RankBoard* board,
+ProgressEvents::ProgressEvents(EventLog& log, std::function<ProgressReading()> read,
                                std::chrono::milliseconds interval)
-    : log_(log), queue_(queue), board_(board) {
+    : log_(log), read_(std::move(read)) {
   thread_ = std::thread([this, interval] {
     std::unique_lock lock(mutex_);
     while (!stop_.wait_for(lock, interval, [this] { return stopping_; })) write();
@@ -147,9 +147,8 @@ ProgressEvents::ProgressEvents(EventLog& log, const WorkQueue& queue, const Rank
 }
 
 void ProgressEvents::write() {
-  if (!board_) return log_.progress(queue_.progress(), queue_.open_frames());
-  const std::vector<RankHolding> held = board_->holdings();
-  log_.progress(queue_.progress(), queue_.open_frames(), &held);
+  const ProgressReading r = read_();
+  log_.progress(r.progress, r.open, r.held ? &*r.held : nullptr);
 }
 
 ProgressEvents::~ProgressEvents() {

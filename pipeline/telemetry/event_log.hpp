@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <filesystem>
 #include <istream>
 #include <map>
@@ -22,9 +23,8 @@
 #include <thread>
 #include <vector>
 
-#include "schedule/work_queue.hpp"
 #include "store/event_file.hpp"
-#include "transport/rank_board.hpp"
+#include "telemetry/run_progress.hpp"
 
 namespace lc::farm {
 
@@ -48,9 +48,9 @@ class EventLog {
   // A worker did not answer the master's stop in time: it was killed or its
   // node failed (docs/monitor.md).
   void rank_lost(int rank, const std::string& host);
-  // `open`: the frames in flight (WorkQueue::open_frames); `held`: what
-  // each MPI worker holds (none for a local farm).
-  void progress(const QueueProgress& p, const std::vector<int>& open, const std::vector<RankHolding>* held = nullptr);
+  // `open`: the frames in flight; `held`: what each MPI worker holds (none
+  // for a local farm).
+  void progress(const RunProgress& p, const std::vector<int>& open, const std::vector<RankHolding>* held = nullptr);
   void frame_stored(int frame, double core_seconds, long rays);
   void error(const std::string& message);
   // The run's last line.  A log this run created for a run that stored no
@@ -67,13 +67,14 @@ class EventLog {
   bool created_ = false;  // this run made the file
 };
 
-// Writes the queue's progress (and the board's holdings, for an MPI farm)
-// to the log every `interval` from a thread of its own while alive, and
-// once more when destroyed: what a monitor shows of the frames in flight
-// and the rays traced between frames.
+// Writes a run's progress to the log every `interval` from a thread of its
+// own while alive, and once more when destroyed: what a monitor shows of
+// the frames in flight and the rays traced between frames.  `read` is
+// called on that thread and must be thread-safe (the work queue's and the
+// rank board's readers are).
 class ProgressEvents {
  public:
-  ProgressEvents(EventLog& log, const WorkQueue& queue, const RankBoard* board = nullptr,
+  ProgressEvents(EventLog& log, std::function<ProgressReading()> read,
                  std::chrono::milliseconds interval = std::chrono::seconds(2));
   ~ProgressEvents();
   ProgressEvents(const ProgressEvents&) = delete;
@@ -82,8 +83,7 @@ class ProgressEvents {
  private:
   void write();
   EventLog& log_;
-  const WorkQueue& queue_;
-  const RankBoard* board_;
+  std::function<ProgressReading()> read_;
   std::mutex mutex_;
   std::condition_variable stop_;
   bool stopping_ = false;

@@ -28,7 +28,7 @@ std::string format_count(double v) {
 
 // ETA from the average rate so far, measured in image rows (a preview row
 // costs what a full one does).
-std::string progress_line(const QueueProgress& p, double seconds) {
+std::string progress_line(const RunProgress& p, double seconds) {
   const double frac = p.rows_total > 0 ? static_cast<double>(p.rows_done) / p.rows_total : 1.0;
   std::string line = fmt::format("{}/{} frames", p.frames_stored, p.frames_total);
   if (p.previews_total > 0 && p.previews_stored < p.previews_total)
@@ -46,7 +46,7 @@ double Progress::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-void Progress::tick(const QueueProgress& p) {
+void Progress::tick(const RunProgress& p) {
   if (style_ == ProgressStyle::quiet) return;
   const auto now = std::chrono::steady_clock::now();
   const double since = std::chrono::duration<double>(now - last_).count();

@@ -9,7 +9,7 @@
 #include <functional>
 #include <string>
 
-#include "schedule/work_queue.hpp"
+#include "telemetry/run_progress.hpp"
 
 namespace lc::farm {
 
@@ -20,7 +20,7 @@ std::string format_duration(double seconds);
 // "12.3k", "4.56M": rays per second on the live line.
 std::string format_count(double value);
 // One progress line (no prefix), e.g. "12/50 frames, 31%, 45.2k rays/s, ETA 3m12s".
-std::string progress_line(const QueueProgress& p, double seconds);
+std::string progress_line(const RunProgress& p, double seconds);
 
 class Progress {
  public:
@@ -28,7 +28,7 @@ class Progress {
   // quarter second).  The clock starts here.
   Progress(ProgressStyle style, double interval, std::FILE* out = stderr);
   // Draws a line if one is due.
-  void tick(const QueueProgress& p);
+  void tick(const RunProgress& p);
   // Ends the live line (so the next message starts on a fresh one).
   void finish();
   double elapsed() const;

@@ -26,7 +26,7 @@ TEST(EventLog, EventsRoundTripAndTheLatestRunIsKept) {
     log.rank_joined(1, "n1", 4);
     log.rank_joined(2, "n2", 8);
     const std::vector<RankHolding> held{{1, 1, {2}}, {2, 0, {}}};
-    log.progress(QueueProgress{}, {2}, &held);
+    log.progress(RunProgress{}, {2}, &held);
     log.frame_stored(1, 2.25, 2304);
     log.frame_stored(2, 2.5, 2304);
     log.error("frame 3: a script error\nat line 12 (100% sure)");

@@ -179,7 +179,7 @@ TEST(FarmQueue, PreviewStripesOfEveryFrameComeFirst) {
   EXPECT_EQ(items[2], (WorkItem{1, 0, Pass::preview}));
   EXPECT_EQ(items[3], (WorkItem{1, 4, Pass::preview}));
   EXPECT_EQ(items[4], (WorkItem{0, 0, Pass::full}));
-  const QueueProgress p = q.progress();
+  const RunProgress p = q.progress();
   EXPECT_EQ(p.rows_total, 2 * 2 + 2 * 8);
   EXPECT_EQ(p.previews_total, 2);
 }

@@ -55,7 +55,7 @@ fs::path render_folder(const test::ScratchDir& scratch) {
   farm::EventLog log(dir, "s");
   log.run_started({.pid = 9, .host = "n0", .ranks = 1, .threads = 2, .todo = 5, .width = 4, .height = 2});
   for (int f = 0; f < 3; ++f) log.frame_stored(f, 1.0 + f, 8);
-  farm::QueueProgress p;
+  farm::RunProgress p;
   p.frames_stored = 3;
   p.frames_total = 5;
   log.progress(p, {3});
@@ -239,7 +239,7 @@ TEST(MonitorApi, EachWorkerSaysWhatItHoldsOrThatItWasLost) {
   log.run_started({.pid = 9, .host = "n0", .ranks = 4, .threads = 0, .todo = 5, .width = 4, .height = 2});
   for (int r = 1; r <= 3; ++r) log.rank_joined(r, "n" + std::to_string(r), 2);
   const std::vector<farm::RankHolding> held{{1, 2, {3, 4}}, {2, 0, {}}, {3, 1, {4}}};
-  log.progress(farm::QueueProgress{}, {3, 4}, &held);
+  log.progress(farm::RunProgress{}, {3, 4}, &held);
   const MonitorApi api({dir});
   const Reply running = api.get("/api/status", {{"folder", "0"}, {"shot", "s"}});
   EXPECT_TRUE(has(running, "{\"rank\": 1, \"host\": \"n1\", \"threads\": 2, \"state\": \"working\", \"sets\": 2, "
