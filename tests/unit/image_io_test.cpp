@@ -279,8 +279,9 @@ TEST(ImageIo, PngStoresSrgbCodes) {
   EXPECT_TRUE(back.layers.empty());
 }
 
-// At either depth (8 bits: png_encoder.hpp; 16: OpenImageIO's writer) the
-// PNG keeps the format's rules (png_rules.hpp), is tagged sRGB, and libpng
+// At either depth (8 bits: png_encoder.hpp, or OpenImageIO's writer in a
+// build without lightcone's own codecs; 16: OpenImageIO's writer) the PNG
+// keeps the format's rules (png_rules.hpp), is tagged sRGB, and libpng
 // decodes every pixel to the code srgb.hpp gives its colour.  Sizes odd on
 // purpose.
 TEST(ImageIo, PngKeepsTheRulesAndDecodesToItsCodesAtEitherDepth) {
