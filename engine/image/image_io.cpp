@@ -25,11 +25,19 @@
 #include <string_view>
 #include <system_error>
 
-#include "image/exr_rgb_reader.hpp"
-#include "image/png_encoder.hpp"
 #include "image/read_linear.hpp"
 #include "image/srgb.hpp"
 #include "image/srgb8_encoder.hpp"
+
+// The build option LIGHTCONE_OWN_IMAGE_CODECS (CMakeLists.txt) sets this to
+// 1 or 0 for this file alone: whether 8-bit PNGs and lightcone's own EXRs go
+// through lightcone's codecs or, as before them, through OpenImageIO.
+#if !defined(LIGHTCONE_OWN_IMAGE_CODECS)
+#error "image_io.cpp is built with LIGHTCONE_OWN_IMAGE_CODECS set to 1 or 0 (engine/CMakeLists.txt)"
+#elif LIGHTCONE_OWN_IMAGE_CODECS
+#include "image/exr_rgb_reader.hpp"
+#include "image/png_encoder.hpp"
+#endif
 
 namespace lc {
 namespace {
@@ -198,6 +206,7 @@ void write_with(const char* format, const OIIO::ImageSpec& spec, OIIO::TypeDesc 
   fail(what, blame, oiio_reason(first_line(error)));
 }
 
+#if LIGHTCONE_OWN_IMAGE_CODECS
 // Writes `bytes` (a whole file made here) to `path` through
 // CheckedFileOutput, with write_with's messages, and removes what was
 // written if it fails.
@@ -214,6 +223,7 @@ void write_bytes(std::span<const unsigned char> bytes, std::string_view what, co
   fs::remove(path, ignored);
   fail(what, blame, std::strerror(error));
 }
+#endif
 
 // Fails with a clear reason when `path` is not an existing regular file
 // (OIIO's own message for a missing file is "could not open").
@@ -317,29 +327,40 @@ void write_exr(const std::filesystem::path& path, const FrameImage& image, const
 }
 
 // Encodes to sRGB codes here (srgb.hpp); 8-bit PNGs are made by
-// png_encoder.hpp (OpenImageIO's bytes, faster), 16-bit ones stored by OIIO.
+// png_encoder.hpp (faster) when built with lightcone's own codecs, every
+// other PNG stored by OIIO.
 void write_png(const std::filesystem::path& path, const FrameImage& image, const std::filesystem::path& named,
                PngDepth depth) {
   constexpr std::string_view what = "cannot write PNG";
   check_frame(image, false, what, named.empty() ? path : named);
-  if (depth == PngDepth::sixteen) {
-    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT16);
+  // `codes` through OIIO's PNG writer, tagged sRGB.
+  const auto store = [&](OIIO::TypeDesc type, const void* codes) {
+    OIIO::ImageSpec spec(image.width, image.height, 3, type);
     spec.attribute("oiio:ColorSpace", "sRGB");  // the writer then stores an sRGB chunk
+    write_with("png", spec, type, codes, what, path, named);
+  };
+  if (depth == PngDepth::sixteen) {
     std::vector<std::uint16_t> codes(image.rgb.size());
     std::transform(image.rgb.begin(), image.rgb.end(), codes.begin(), linear_to_srgb16);
-    write_with("png", spec, OIIO::TypeDesc::UINT16, codes.data(), what, path, named);
+    store(OIIO::TypeDesc::UINT16, codes.data());
     return;
   }
   std::vector<std::uint8_t> codes(image.rgb.size());
   std::transform(image.rgb.begin(), image.rgb.end(), codes.begin(), std::cref(Srgb8Encoder::shared()));
+#if LIGHTCONE_OWN_IMAGE_CODECS
   write_bytes(encode_png8(codes, image.width, image.height), what, path, named);
+#else
+  store(OIIO::TypeDesc::UINT8, codes.data());
+#endif
 }
 
-// Lightcone's own layout directly (exr_rgb_reader.hpp); any other file
-// through OIIO: every channel as float, then R, G, B split from the layers
-// by name.
+// Lightcone's own layout directly (exr_rgb_reader.hpp) when built with
+// lightcone's own codecs; any other file through OIIO: every channel as
+// float, then R, G, B split from the layers by name.
 FrameImage read_exr(const std::filesystem::path& path) {
+#if LIGHTCONE_OWN_IMAGE_CODECS
   if (std::optional<FrameImage> own = read_rgb_exr(path)) return std::move(*own);
+#endif
   constexpr std::string_view what = "cannot read EXR";
   std::unique_ptr<OIIO::ImageInput> in = open_exr(path, what);
   const OIIO::ImageSpec spec = in->spec();

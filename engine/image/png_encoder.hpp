@@ -4,7 +4,8 @@
 // at libpng's settings, IDAT chunks of libpng's size), so every frame's PNG
 // is what it was, but its filters are chosen in a fraction of the time
 // libpng takes, a large share of writing a frame (docs/performance.md).
-// tests/unit/png_encoder_test.cpp holds it to OpenImageIO's bytes.
+// tests/unit/png_encoder_test.cpp holds it to the PNG rules and to the
+// pixels libpng decodes from it.
 #pragma once
 
 #include <cstdint>

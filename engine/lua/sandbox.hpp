@@ -114,7 +114,7 @@ class Sandbox {
 // current C function. Only call it from inside a lua_CFunction that runs
 // under a protected call (Sandbox::run_file/call). On x64 LuaJIT unwinds Lua
 // errors with the system unwinder, so C++ destructors of the frames it skips
-// do run (tested in lua_sandbox_test); still prefer to raise from a frame
+// do run (tested in sandbox_test); still prefer to raise from a frame
 // that owns no resources, since a frame built without unwind tables would
 // break that. Prefer protect() + a C++ exception in new code.
 [[noreturn]] void raise(lua_State* L, const std::string& msg);

@@ -88,7 +88,7 @@ template <class F>
 
 // Traces the rays `starts` into the records `out` (same size), lane_count at
 // a time: each record as one ray alone gives it
-// (Render.LanesGiveWhatOneRayGives).  Colours are the shade stage's.
+// (Renderer.LanesGiveWhatOneRayGives).  Colours are the shade stage's.
 template <class S>
 void trace_records(const SceneIn<S>& sc, std::span<const RayStart> starts, std::span<HitRecord> out) {
   detail::on_pinned_stack([&]() __attribute__((noinline)) {

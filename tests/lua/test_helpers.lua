@@ -1,5 +1,5 @@
 -- Helpers for the Lua tests of the shot-author library (tests/lua/*_test.lua,
--- run in the engine's sandbox by tests/unit/lua_library_test.cpp). Every
+-- run in the engine's sandbox by tests/unit/engine_api_test.cpp). Every
 -- check raises at the test's own line (error level 2), with what it expected
 -- and what it got.
 --

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "image/image.hpp"
+#include "png_rules.hpp"
 #include "scratch_dir.hpp"
 #include "test_errors.hpp"
 
@@ -276,6 +277,51 @@ TEST(ImageIo, PngStoresSrgbCodes) {
   ASSERT_EQ(back.rgb.size(), 18u);
   for (std::size_t k = 0; k < codes.size(); ++k) EXPECT_EQ(back.rgb[k], lc::srgb8_to_linear(codes[k])) << k;
   EXPECT_TRUE(back.layers.empty());
+}
+
+// At either depth (8 bits: png_encoder.hpp, or OpenImageIO's writer in a
+// build without lightcone's own codecs; 16: OpenImageIO's writer) the PNG
+// keeps the format's rules (png_rules.hpp), is tagged sRGB, and libpng
+// decodes every pixel to the code srgb.hpp gives its colour.  Sizes odd on
+// purpose.
+TEST(ImageIo, PngKeepsTheRulesAndDecodesToItsCodesAtEitherDepth) {
+  ScratchDir dir;
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1, 1}, {7, 5}, {33, 17}, {1, 9}, {129, 3}}) {
+    FrameImage im = ramp(w, h);
+    for (std::size_t k = 0; k < im.rgb.size(); k += 7) im.rgb[k] = 1.7f * static_cast<float>(k % 5) - 0.2f;
+    for (const lc::PngDepth depth : {lc::PngDepth::eight, lc::PngDepth::sixteen}) {
+      const int bits = static_cast<int>(depth);
+      const std::string at = std::to_string(w) + "x" + std::to_string(h) + " at " + std::to_string(bits) + " bits";
+      const fs::path file = dir / "frame.png";
+      lc::write_png(file, im, {}, depth);
+      std::vector<lc::test::PngChunk> chunks;
+      EXPECT_EQ(lc::test::png_rule_broken(file_bytes(file),
+                                          {static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h), bits, 2}, &chunks),
+                "")
+          << at;
+      bool srgb = false;
+      for (const lc::test::PngChunk& c : chunks) srgb |= c.type == "sRGB";
+      EXPECT_TRUE(srgb) << at;
+
+      auto in = OIIO::ImageInput::open(file.string());
+      ASSERT_TRUE(in) << OIIO::geterror();
+      ASSERT_EQ(in->spec().nchannels, 3) << at;
+      std::vector<std::uint16_t> codes(im.rgb.size());
+      if (depth == lc::PngDepth::sixteen) {
+        ASSERT_EQ(in->spec().format, OIIO::TypeDesc::UINT16) << at;
+        ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT16, codes.data())) << at;
+      } else {
+        ASSERT_EQ(in->spec().format, OIIO::TypeDesc::UINT8) << at;
+        std::vector<std::uint8_t> bytes(im.rgb.size());
+        ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, bytes.data())) << at;
+        codes.assign(bytes.begin(), bytes.end());
+      }
+      for (std::size_t k = 0; k < codes.size(); ++k) {
+        const int want = depth == lc::PngDepth::sixteen ? lc::linear_to_srgb16(im.rgb[k]) : lc::linear_to_srgb8(im.rgb[k]);
+        ASSERT_EQ(codes[k], want) << at << ", value " << k;
+      }
+    }
+  }
 }
 
 // ------------------------------------------------------ files and names ----

@@ -1,217 +1,33 @@
-// Motion blur (docs/motion_blur.md): a shutter cut into instants
-// (scene/shutter.hpp), the shot evaluated at each (Shot::frame_specs), each
-// sample of a pixel at one of them (render/sample_times.hpp), and the
-// renderer and the star stage taking each sample in its instant's scene.
-// The pictures are checked against formulas in flat space: a sphere's
-// image dragged across the view, a star's streak under a camera pan.
+// Motion blur (docs/motion_blur.md) as the pictures show it: the renderer
+// and the star stage taking each sample in its instant's scene.  The parts
+// have tests of their own: shutter_test (the instants), frame_specs_test
+// (the shot at each), sample_times_test (each sample's instant).  The
+// pictures are checked against formulas in flat space: a sphere's image
+// dragged across the view, a star's streak under a camera pan.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <fstream>
-#include <numeric>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "core/constants.hpp"
 #include "render/point_star_stage.hpp"
 #include "render/renderer.hpp"
-#include "render/sample_times.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
 #include "scratch_dir.hpp"
+#include "shot_file.hpp"
 #include "script/shot.hpp"
 #include "stars/star_field.hpp"
-#include "lua/table_reader.hpp"
-#include "test_errors.hpp"
 
 namespace lc {
 namespace {
 
 using test::ScratchDir;
-
-std::filesystem::path write_shot(const ScratchDir& dir, const std::string& text) {
-  const std::filesystem::path file = dir / "shot.lua";
-  std::ofstream(file) << text;
-  return file;
-}
-
-// --- the shutter and the sample times ------------------------------------
-
-TEST(Shutter, InstantsAreTheCentresOfEqualPartsOfTheOpenInterval) {
-  const Shutter centre{0.5, ShutterPosition::centre, 4};
-  EXPECT_EQ(centre.instants(), (std::vector<double>{-0.1875, -0.0625, 0.0625, 0.1875}));
-  const Shutter start{0.5, ShutterPosition::start, 2};
-  EXPECT_EQ(start.instants(), (std::vector<double>{0.125, 0.375}));
-  const Shutter end{1.0, ShutterPosition::end, 2};
-  EXPECT_EQ(end.instants(), (std::vector<double>{-0.75, -0.25}));
-  EXPECT_TRUE(Shutter{}.instants().empty());  // closed by default
-  // The command line over the frame's over the shot's.
-  const Shutter shot{0.5, ShutterPosition::centre, 8};
-  EXPECT_EQ(frame_shutter(shot, 0.25, {}).open, 0.25);
-  EXPECT_EQ(frame_shutter(shot, 0.25, {.open = 0.0}).open, 0.0);
-  EXPECT_EQ(frame_shutter(shot, std::nullopt, {.time_samples = 3}).time_samples, 3);
-}
-
-TEST(SampleTimes, APixelSampledInFullTakesEveryInstantAsEvenlyAsItsGridAllows) {
-  for (const auto& [N, K] : {std::pair{3, 8}, {4, 16}, {4, 5}, {2, 4}, {5, 1}}) {
-    ASSERT_GE(N * N, K);
-    const int NN = N * N;
-    std::set<std::vector<int>> orders;
-    for (int x = 0; x < 40; ++x) {
-      const int first = x % 2 == 0 ? 0 : NN - 1;
-      std::vector<int> when(static_cast<std::size_t>(NN));
-      sample_instants(x, 7, K, first, x % 2 == 1, when);
-      std::vector<int> count(static_cast<std::size_t>(K), 0);
-      for (int k : when) {
-        ASSERT_GE(k, 0);
-        ASSERT_LT(k, K);
-        ++count[static_cast<std::size_t>(k)];
-      }
-      for (int c : count) {
-        EXPECT_GE(c, NN / K) << N << " " << K;
-        EXPECT_LE(c, (NN + K - 1) / K) << N << " " << K;
-      }
-      // The first sample at the shutter's first or last instant.
-      EXPECT_EQ(when[static_cast<std::size_t>(first)], x % 2 == 0 ? 0 : K - 1);
-      // The same pixel gives the same times, whoever asks.
-      std::vector<int> again(static_cast<std::size_t>(NN));
-      sample_instants(x, 7, K, first, x % 2 == 1, again);
-      EXPECT_EQ(when, again);
-      orders.insert(when);
-    }
-    // Shuffled per pixel: neighbours do not share one pattern.
-    if (K > 1 && NN > 4) {
-      EXPECT_GT(orders.size(), 20u) << N << " " << K;
-    }
-  }
-  EXPECT_EQ(samples_per_side(2, 8), 3);
-  EXPECT_EQ(samples_per_side(4, 8), 4);
-  EXPECT_EQ(samples_per_side(1, 1), 1);
-}
-
-// --- the shot at fractional frames ----------------------------------------
-
-TEST(FrameSpecs, TheShotIsEvaluatedAtEachInstantClampedToItsFrames) {
-  ScratchDir dir;
-  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
-return {name = 's', frames = 3, width = 8, height = 8, shutter = 0.5, time_samples = 2,
-  frame = function(i)
-    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0}, time = 10 * i}
-  end})");
-  Shot shot(file);
-  const FrameSpecs mid = shot.frame_specs(1);
-  ASSERT_TRUE(mid.blurred());
-  EXPECT_EQ(mid.times, (std::vector<double>{-0.125, 0.125}));
-  EXPECT_EQ(observer_clock(mid.frame.observer), 10.0);
-  EXPECT_EQ(observer_clock(mid.instants[0].observer), 8.75);
-  EXPECT_EQ(observer_clock(mid.instants[1].observer), 11.25);
-  // Before the first frame the shot holds still.
-  const FrameSpecs first = shot.frame_specs(0);
-  EXPECT_EQ(observer_clock(first.instants[0].observer), 0.0);
-  EXPECT_EQ(observer_clock(first.instants[1].observer), 1.25);
-  // The command line closes it.
-  shot.set_shutter({.open = 0.0});
-  EXPECT_FALSE(shot.frame_specs(1).blurred());
-}
-
-TEST(FrameSpecs, AFrameThatDoesNotChangeWithinItsShutterIsNotBlurred) {
-  ScratchDir dir;
-  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
-return {name = 's', frames = 3, width = 8, height = 8, shutter = 1,
-  frame = function(i)
-    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0},
-            shutter = i == 2 and 0 or nil}
-  end})");
-  Shot shot(file);
-  const FrameSpecs specs = shot.frame_specs(1);
-  EXPECT_EQ(specs.shutter.open, 1.0);
-  EXPECT_FALSE(specs.blurred());
-  EXPECT_EQ(shot.frame_specs(2).shutter.open, 0.0);  // a frame's own shutter
-}
-
-TEST(FrameSpecs, ErrorsNameTheFractionalFrameAndTheShutter) {
-  ScratchDir dir;
-  // A script that only knows whole frames: a table indexed by i.
-  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
-local heights = {20, 21, 22}
-return {name = 's', frames = 3, width = 8, height = 8, shutter = 0.5, time_samples = 2,
-  frame = function(i)
-    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = heights[i + 1], z = 0}}
-  end})");
-  Shot shot(file);
-  const std::string e = test::error_of([&] { shot.frame_specs(1); });
-  EXPECT_EQ(e.find("shot.lua: frame 1 at 0.875: "), e.find("shot.lua")) << e;
-  EXPECT_NE(e.find("(frame 1's shutter is open: frame(i) is also called at fractional i"), std::string::npos) << e;
-  EXPECT_NE(e.find("docs/motion_blur.md"), std::string::npos) << e;
-
-  const auto change = write_shot(dir, R"(local lc = require 'lightcone'
-return {name = 's', frames = 3, width = 8, height = 8, shutter = 1,
-  frame = function(i)
-    local st = i < 1.2 and lc.minkowski{} or lc.dihole{m1 = 0.4, m2 = 0.4, d = 1}
-    return {spacetime = st, observer = lc.static_observer{x = 0, y = 20, z = 0}}
-  end})");
-  Shot changing(change);
-  const std::string c = test::error_of<std::invalid_argument>([&] { changing.frame_specs(1); });
-  EXPECT_NE(c.find("frame 1: the spacetime is minkowski at the frame but dihole at 1.3125"), std::string::npos) << c;
-
-  const auto sky_cut = write_shot(dir, R"(local lc = require 'lightcone'
-return {name = 's', frames = 3, width = 8, height = 8, shutter = 1, time_samples = 2,
-  frame = function(i)
-    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0},
-            sky = i < 1.1 and lc.starfield{} or lc.sky_checker{}}
-  end})");
-  Shot cutting(sky_cut);
-  const std::string k = test::error_of<std::invalid_argument>([&] { cutting.frame_specs(1); });
-  EXPECT_NE(k.find("frame 1: the sky is lc.starfield at the frame but lc.sky_checker at 1.25"), std::string::npos) << k;
-
-  const auto bad = write_shot(dir, R"(local lc = require 'lightcone'
-return {name = 's', frames = 3, width = 8, height = 8,
-  frame = function(i)
-    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0}, shutter = 2}
-  end})");
-  Shot too_long(bad);
-  const std::string b = test::error_of([&] { too_long.frame_specs(0); });
-  EXPECT_NE(b.find("field 'shutter' must be between 0 and 1"), std::string::npos) << b;
-  EXPECT_NE(b.find("frame 0"), std::string::npos) << b;
-}
-
-// A table indexed by a fractional i gives nil: where that was an optional
-// field, the instant took its default without a word (issue 43). A field
-// set at the frame and absent at an instant is an error naming both; the
-// frame's own exposure and shutter (an instant's are not used) may be.
-TEST(FrameSpecs, AFieldSetAtTheFrameButNotAtAnInstantIsAnError) {
-  ScratchDir dir;
-  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
-local yaws = {0, 10, 20}
-return {name = 's', frames = 3, width = 8, height = 8, shutter = 0.5, time_samples = 2,
-  frame = function(i)
-    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20, z = 0},
-            camera = lc.camera{fov = 40, yaw = yaws[i + 1]}}
-  end})");
-  Shot shot(file);
-  const std::string e = test::error_of<lua::FieldError>([&] { shot.frame_specs(1); });
-  EXPECT_EQ(e.find("shot.lua: frame 1 at 0.875: field 'camera.yaw' is set at frame 1 but not at 0.875: a table "
-                   "indexed by a fractional i gives nil"),
-            e.find("shot.lua"))
-      << e;
-  EXPECT_NE(e.find("(frame 1's shutter is open"), std::string::npos) << e;
-
-  const auto own = write_shot(dir, R"(local lc = require 'lightcone'
-local exposures = {1, 2, 3}
-return {name = 's', frames = 3, width = 8, height = 8, time_samples = 2,
-  frame = function(i)
-    return {spacetime = lc.minkowski{}, observer = lc.static_observer{x = 0, y = 20 + i, z = 0},
-            exposure = exposures[i + 1], shutter = i == 1 and 0.5 or nil}
-  end})");
-  Shot frame_only(own);
-  EXPECT_TRUE(frame_only.frame_specs(1).blurred());
-}
-
-// --- pictures ----------------------------------------------------------------
+using test::write_shot;
 
 // The frame's scene with its shutter, built at width x height.
 Scene build_frame(Shot& shot, int frame, int width, int height, ShotResources& res) {
@@ -230,7 +46,7 @@ Scene build_frame(Shot& shot, int frame, int width, int height, ShotResources& r
 TEST(MotionBlur, ASphereMovingAcrossTheViewRampsOverTheDistanceItTravels) {
   ScratchDir dir;
   const double D = 20, R = 2, v = 1.5, fov = 60;  // ~ 24 px of travel a frame at 256 px
-  const auto file = write_shot(dir, fmt::format(R"(local lc = require 'lightcone'
+  const auto file = write_shot(dir, "shot.lua", fmt::format(R"(local lc = require 'lightcone'
 return {{name = 's', frames = 3, width = 256, height = 32, supersample = 4, shutter = 1, time_samples = 16,
   frame = function(i)
     return {{spacetime = lc.minkowski{{}}, observer = lc.static_observer{{x = 0, y = {}, z = 0}},
@@ -320,7 +136,7 @@ return {{name = 's', frames = 3, width = 256, height = 32, supersample = 4, shut
 // as with the shutter closed, to the bit (and takes no more samples).
 TEST(MotionBlur, AStaticSceneRendersTheSameWithTheShutterOpen) {
   ScratchDir dir;
-  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
+  const auto file = write_shot(dir, "shot.lua", R"(local lc = require 'lightcone'
 return {name = 's', frames = 4, width = 48, height = 32, supersample = 2,
   frame = function(i)
     return {spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 30, theta = 80, phi = 0},
@@ -352,7 +168,7 @@ struct PannedStar {
 PannedStar pan_past_a_star(int time_samples) {
   ScratchDir dir;
   const double fov = 40, pan = 3.0;  // degrees a frame: ~19 px at 256 px
-  const auto file = write_shot(dir, fmt::format(R"(local lc = require 'lightcone'
+  const auto file = write_shot(dir, "shot.lua", fmt::format(R"(local lc = require 'lightcone'
 return {{name = 's', frames = 3, width = 256, height = 64, shutter = 1, time_samples = {},
   frame = function(i)
     return {{spacetime = lc.minkowski{{}}, observer = lc.static_observer{{x = 0, y = 20, z = 0}},
@@ -468,7 +284,7 @@ TEST(MotionBlur, AStarsStreakHasNoGapsBetweenFewInstants) {
 // frame is orthonormal to 1e-12.
 TEST(MotionBlur, AFallsInstantsStartFromItsWorldlineAtTheirProperTime) {
   ScratchDir dir;
-  const auto file = write_shot(dir, R"(local lc = require 'lightcone'
+  const auto file = write_shot(dir, "shot.lua", R"(local lc = require 'lightcone'
 local hole = lc.kerr{mass = 1, spin = 0.9}
 local orbit = lc.worldline{spacetime = hole, start = {t = 0, r = 40, theta = 75, phi = 180},
                            velocity = {r = -0.4, theta = -0.11, phi = 0}, duration = 180}

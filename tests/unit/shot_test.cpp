@@ -14,6 +14,7 @@
 #include "scene/scene_json.hpp"
 #include "scene/still_key.hpp"
 #include "scratch_dir.hpp"
+#include "shot_file.hpp"
 #include "test_errors.hpp"
 
 namespace {
@@ -21,15 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 using lc::test::ScratchDir;
 using lc::test::error_of;
+using lc::test::write_shot;
 
 constexpr const char* kScene =
     "{spacetime = lc.kerr{mass = 1, spin = 0.9}, observer = lc.static_observer{r = 30, theta = 80, phi = 0}}";
-
-fs::path write_shot(const ScratchDir& dir, const std::string& name, const std::string& text) {
-  const fs::path file = dir / name;
-  std::ofstream(file) << text;
-  return file;
-}
 
 // A Lua error inside frame(i) named the script's line only; in a shot of
 // many frames it must say which one failed, as the scene errors do

@@ -1,4 +1,4 @@
--- Calls C functions registered by lua_sandbox_test; no tail calls, so each
+-- Calls C functions registered by sandbox_test; no tail calls, so each
 -- call keeps this file's line on the stack (except where noted).
 return {
   throws = function() local r = throws() return r end,

@@ -47,7 +47,7 @@ std::vector<RaySample> samples(const SceneSpec& fs, int W, int H, KerrChart char
   return out;
 }
 
-TEST(Render, KerrFastPathAgreesWithKerrSchild) {
+TEST(Renderer, KerrFastPathAgreesWithKerrSchild) {
   // The Boyer–Lindquist–Mino integrator at tolerance 1e-12 against the
   // Kerr–Schild Hamiltonian at 1e-14, on the bench camera (a = 0.9 from
   // r = 30 at 80 deg: rays that graze the photon orbit, cross the disk plane
@@ -84,7 +84,7 @@ TEST(Render, KerrFastPathAgreesWithKerrSchild) {
   }
 }
 
-TEST(Render, SchwarzschildShadowAngularRadius) {
+TEST(Renderer, SchwarzschildShadowAngularRadius) {
   // A static observer at r = 30 sees the shadow edge at
   // arcsin(sqrt(27) M sqrt(1 - 2M/r) / r) = 9.6327 deg (Synge 1966).
   const double expected = std::asin(std::sqrt(27.0) * std::sqrt(1 - 2 / 30.0) / 30.0) / degree;
@@ -108,7 +108,7 @@ TEST(Render, SchwarzschildShadowAngularRadius) {
   EXPECT_NEAR(lo, px, 1.0);
 }
 
-TEST(Render, FlatSpaceDiskIsTheExactProjection) {
+TEST(Renderer, FlatSpaceDiskIsTheExactProjection) {
   // M = 0: each pixel's disk hit is where the straight line from the camera
   // meets z = 0.  At tolerance 1e-10 to 1e-7 relative (the formulation is
   // exact); at the production tolerance, chosen by image error, to 1e-4 M
@@ -155,7 +155,7 @@ TEST(Render, FlatSpaceDiskIsTheExactProjection) {
   }
 }
 
-TEST(Render, DiskSeenAlongTheAxisIsRotationallySymmetric) {
+TEST(Renderer, DiskSeenAlongTheAxisIsRotationallySymmetric) {
   // Schwarzschild, observer on the axis (theta = 0): a quarter turn about the
   // image centre maps the picture onto itself, pixel centre to pixel centre.
   const int W = 40;
@@ -180,7 +180,7 @@ TEST(Render, DiskSeenAlongTheAxisIsRotationallySymmetric) {
   EXPECT_GT(horizon, 10);
 }
 
-TEST(Render, ObserverOnTheSouthAxisSeesTheNorthViewUpsideDown) {
+TEST(Renderer, ObserverOnTheSouthAxisSeesTheNorthViewUpsideDown) {
   // Reflection through the equatorial plane maps Kerr (a kept), the disk
   // and an observer on the axis at theta = 0 onto one at theta = 180 deg,
   // and the camera's up (-e_theta) onto its opposite: the image is the same
@@ -222,7 +222,7 @@ RaySample centre_ray(SceneSpec fs, double yaw, KerrChart chart) {
   return sample_at(build_scene(fs, 1, 1, res, o), 0.5, 0.5);
 }
 
-TEST(Render, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
+TEST(Renderer, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
   // docs/layers.md: hit.r and hit.t are the event where the ray ended, t
   // minus the observer's.  Radial rays have it in closed form: in Kerr along
   // the spin axis (Carter's K = a^2 E^2) dt/dr = (r^2 + a^2)/Delta, so
@@ -304,7 +304,7 @@ std::vector<std::pair<std::string, SceneSpec>> scenes_of_every_path() {
   return out;
 }
 
-TEST(Render, LanesGiveWhatOneRayGives) {
+TEST(Renderer, LanesGiveWhatOneRayGives) {
   // The renderer traces rays lane_count at a time (render/trace.hpp) and
   // `lightcone trace` one alone: the same arithmetic, written once for
   // both.  (1) A ray's sample must not depend on the rays beside it in its
@@ -346,7 +346,7 @@ TEST(Render, LanesGiveWhatOneRayGives) {
   }
 }
 
-TEST(Render, SphereInFlatSpaceHasItsAngularSize) {
+TEST(Renderer, SphereInFlatSpaceHasItsAngularSize) {
   SceneSpec fs;
   fs.spacetime = Dihole(0.0, 0.0, 1.0);
   fs.observer = StaticObserver::Params{{0, 0, 80, 0}};
@@ -402,7 +402,7 @@ Scene falling_sphere_scene(const Spacetime& spacetime, const Vec3& velocity, dou
   return build_scene(fs, 8, 8, res);
 }
 
-TEST(Render, SphereSimultaneityIsSolvedNearAMovingSphere) {
+TEST(Renderer, SphereSimultaneityIsSolvedNearAMovingSphere) {
   // The sphere of the paper's dihole sequence swings through the holes at
   // up to ~0.8 c.  A point X on its surface, on the slice simultaneous with
   // its centre at C (g(X - C, u) = 0, the local linearisation of docs/architecture.md), must
@@ -461,7 +461,7 @@ double farthest_surface_point(const S& st, const Sphere& sphere, double t0, doub
   return seen;
 }
 
-TEST(Render, SphereTubeHoldsTheSphere) {
+TEST(Renderer, SphereTubeHoldsTheSphere) {
   {
     ShotResources res;
     const Scene scene = falling_sphere_scene(Dihole(0.4, 0.4, 1.0), {0, 0, 0}, 1.0, res);
@@ -487,7 +487,7 @@ TEST(Render, SphereTubeHoldsTheSphere) {
   }
 }
 
-TEST(Render, MovingSphereKeepsACircularOutline) {
+TEST(Renderer, MovingSphereKeepsACircularOutline) {
   // Penrose (1959), Terrell (1959): a sphere moving at any speed is seen with
   // a circular outline, although in the frame of the observer it is
   // flattened by 1/gamma = 0.8 at v = 0.6.  This needs the sphere taken on its
@@ -534,7 +534,7 @@ TEST(Render, MovingSphereKeepsACircularOutline) {
   EXPECT_NEAR(width / height, w0 / h0, 0.01) << "moving " << width << "x" << height << ", at rest " << w0 << "x" << h0;
 }
 
-TEST(Render, MovingObserverSeesAberration) {
+TEST(Renderer, MovingObserverSeesAberration) {
   // An observer moving at v towards where it looks sees a direction that is
   // at angle theta from the motion in the rest frame at theta' with
   // cos theta' = (cos theta + v) / (1 + v cos theta) — through its boosted
@@ -569,7 +569,7 @@ TEST(Render, MovingObserverSeesAberration) {
   }
 }
 
-TEST(Render, ThreadCountDoesNotChangeTheImage) {
+TEST(Renderer, ThreadCountDoesNotChangeTheImage) {
   const int W = 24, H = 18;
   ShotResources res;
   RenderSettings rs{W, H, 2, true};
@@ -580,7 +580,7 @@ TEST(Render, ThreadCountDoesNotChangeTheImage) {
   for (std::size_t k = 0; k < one.layers.size(); ++k) EXPECT_EQ(one.layers[k].values, three.layers[k].values);
 }
 
-TEST(Render, AdaptiveSupersamplingRefinesWhereSamplesDiffer) {
+TEST(Renderer, AdaptiveSupersamplingRefinesWhereSamplesDiffer) {
   // 2x2 adaptive against the full grid on the disk scene: one sample per
   // pixel where it agrees with its row neighbours' (the pixel is then flat
   // to the threshold), the full grid at the disk's and shadow's edges.
@@ -606,7 +606,7 @@ TEST(Render, AdaptiveSupersamplingRefinesWhereSamplesDiffer) {
   EXPECT_EQ(a1.rgb, f1.rgb);
 }
 
-TEST(Render, RefusesObserversThatCannotExist) {
+TEST(Renderer, RefusesObserversThatCannotExist) {
   ShotResources res;
   EXPECT_THROW(build_scene(kerr_scene(1, 0.9, 1.8, 90, 40, false), 8, 8, res), std::invalid_argument);  // ergoregion
   EXPECT_THROW(build_scene(kerr_scene(1, 0.9, 1.2, 90, 40, false), 8, 8, res), std::invalid_argument);  // horizon

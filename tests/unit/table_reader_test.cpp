@@ -19,9 +19,9 @@ using lc::lua::FieldError;
 using lc::lua::TableReader;
 using lc::test::error_of;
 
-class LuaTableReader : public ::testing::Test {
+class TableReaderTest : public ::testing::Test {
  protected:
-  LuaTableReader() : sandbox_({}), L(sandbox_.state()) {}
+  TableReaderTest() : sandbox_({}), L(sandbox_.state()) {}
 
   // Pushes the value of a Lua expression (test-only loading of a string).
   void push(const std::string& expression) {
@@ -34,7 +34,7 @@ class LuaTableReader : public ::testing::Test {
   lua_State* L;
 };
 
-TEST_F(LuaTableReader, RejectsNonTables) {
+TEST_F(TableReaderTest, RejectsNonTables) {
   push("3");
   EXPECT_EQ(error_of<FieldError>([&] { TableReader r(L, -1, "spec.lua:4: spacetime"); }),
             "spec.lua:4: spacetime: expected a table, got number 3");
@@ -43,7 +43,7 @@ TEST_F(LuaTableReader, RejectsNonTables) {
   EXPECT_EQ(lua_gettop(L), 2);
 }
 
-TEST_F(LuaTableReader, TypedGetters) {
+TEST_F(TableReaderTest, TypedGetters) {
   push("{mass = 1.5, frames = 900, name = 'dihole', preview = true, none = false}");
   TableReader r(L, -1, "shot");
   EXPECT_EQ(r.number("mass"), 1.5);
@@ -68,7 +68,7 @@ TEST_F(LuaTableReader, TypedGetters) {
   r.finish();
 }
 
-TEST_F(LuaTableReader, WrongTypeAndMissingMessages) {
+TEST_F(TableReaderTest, WrongTypeAndMissingMessages) {
   push("{mass = '1', name = 3, flag = 1, sub = 5, f = function() end}");
   TableReader r(L, -1, "spec.lua:4: spacetime");
   EXPECT_EQ(error_of<FieldError>([&] { r.number("mass"); }),
@@ -88,7 +88,7 @@ TEST_F(LuaTableReader, WrongTypeAndMissingMessages) {
   EXPECT_EQ(error_of<FieldError>([&] { r.table("missing"); }), "spec.lua:4: spacetime: missing field 'missing'");
 }
 
-TEST_F(LuaTableReader, MissingFieldPointsAtANearMiss) {
+TEST_F(TableReaderTest, MissingFieldPointsAtANearMiss) {
   push("{mass = 1, spinn = 0.5, colour = 2}");
   TableReader r(L, -1, "kerr");
   r.number("mass");
@@ -96,7 +96,7 @@ TEST_F(LuaTableReader, MissingFieldPointsAtANearMiss) {
   EXPECT_EQ(error_of<FieldError>([&] { r.number("radius"); }), "kerr: missing field 'radius'");
 }
 
-TEST_F(LuaTableReader, NumbersMustBeFinite) {
+TEST_F(TableReaderTest, NumbersMustBeFinite) {
   push("{a = 0/0, b = 1/0, c = -1/0, d = -(0/0)}");
   TableReader r(L, -1, "observer");
   EXPECT_EQ(error_of<FieldError>([&] { r.number("a"); }),
@@ -109,7 +109,7 @@ TEST_F(LuaTableReader, NumbersMustBeFinite) {
             "observer: field 'd' is nan (numbers must be finite)");
 }
 
-TEST_F(LuaTableReader, IntegerChecks) {
+TEST_F(TableReaderTest, IntegerChecks) {
   push("{half = 2.5, big = 2^63, low = -2^63, exact = 2^53, neg = -7, text = '3', huge = 1e300}");
   TableReader r(L, -1, "shot");
   EXPECT_EQ(error_of<FieldError>([&] { r.integer("half"); }),
@@ -124,7 +124,7 @@ TEST_F(LuaTableReader, IntegerChecks) {
             "shot: field 'text' must be an integer, got string \"3\"");
 }
 
-TEST_F(LuaTableReader, NestedContexts) {
+TEST_F(TableReaderTest, NestedContexts) {
   push("{observer = {position = {r = 'far', theta = 1}}, objects = {{radius = 1}, {radius = 'x'}}}");
   TableReader shot(L, -1, "shot 'dihole' frame 12");
   TableReader observer = shot.table("observer");
@@ -143,7 +143,7 @@ TEST_F(LuaTableReader, NestedContexts) {
             "shot 'dihole' frame 12.objects[2]: field 'radius' must be a number, got string \"x\"");
 }
 
-TEST_F(LuaTableReader, ArrayElements) {
+TEST_F(TableReaderTest, ArrayElements) {
   push("{1, 2.5, 'x', {a = 1}, 7}");
   TableReader r(L, -1, "path");
   EXPECT_EQ(r.length(), 5u);
@@ -161,7 +161,7 @@ TEST_F(LuaTableReader, ArrayElements) {
   r.finish();  // the array part is always accepted
 }
 
-TEST_F(LuaTableReader, FinishSuggestsNearestKnownField) {
+TEST_F(TableReaderTest, FinishSuggestsNearestKnownField) {
   push("{mass = 1, spinn = 0.9}");
   TableReader r(L, -1, "spec.lua:4: spacetime");
   r.number("mass");
@@ -172,7 +172,7 @@ TEST_F(LuaTableReader, FinishSuggestsNearestKnownField) {
 
 // An unknown field most likely stands for a known one the table lacks:
 // frame_count for frames, though frame is a field too.
-TEST_F(LuaTableReader, FinishPrefersMissingFields) {
+TEST_F(TableReaderTest, FinishPrefersMissingFields) {
   push("{frame = 1, frame_count = 2, width = 3, widht = 4}");
   TableReader r(L, -1, "shot");
   r.optional_number("frames");
@@ -186,7 +186,7 @@ TEST_F(LuaTableReader, FinishPrefersMissingFields) {
 
 // A missing field's hint names the nearest unread key, whatever order
 // lua_next gives, and never one that only shares a letter count.
-TEST_F(LuaTableReader, MissingFieldHintsTheNearestKey) {
+TEST_F(TableReaderTest, MissingFieldHintsTheNearestKey) {
   push("{outer = 10}");
   TableReader disk(L, -1, "disk");
   EXPECT_EQ(error_of<FieldError>([&] { disk.number("inner"); }), "disk: missing field 'inner'");
@@ -203,13 +203,13 @@ TEST_F(LuaTableReader, MissingFieldHintsTheNearestKey) {
 
 // A script's table may have a key of any length: messages show 64
 // characters of it.
-TEST_F(LuaTableReader, LongUnknownKeysAreShortened) {
+TEST_F(TableReaderTest, LongUnknownKeysAreShortened) {
   push("{[string.rep('k', 1e6)] = 1}");
   TableReader r(L, -1, "camera");
   EXPECT_EQ(error_of<FieldError>([&] { r.finish(); }), "camera: unknown field '" + std::string(64, 'k') + "...'");
 }
 
-TEST_F(LuaTableReader, FinishWithoutCloseMatchAndSorted) {
+TEST_F(TableReaderTest, FinishWithoutCloseMatchAndSorted) {
   push("{mass = 1, colour = 'red', zzz = 1, mas = 2, ams = 3}");
   TableReader r(L, -1, "kerr");
   r.number("mass");
@@ -218,7 +218,7 @@ TEST_F(LuaTableReader, FinishWithoutCloseMatchAndSorted) {
             "unknown field 'mas' (did you mean 'mass'?); unknown field 'zzz'");
 }
 
-TEST_F(LuaTableReader, FinishAcceptsKnownAndEngineKeys) {
+TEST_F(TableReaderTest, FinishAcceptsKnownAndEngineKeys) {
   push("{mass = 1, __kind = 'kerr', __where = 'a.lua:1', frame = function() end, extra = 2}");
   TableReader r(L, -1, "shot");
   r.number("mass");
@@ -234,7 +234,7 @@ TEST_F(LuaTableReader, FinishAcceptsKnownAndEngineKeys) {
   m.finish();
 }
 
-TEST_F(LuaTableReader, FinishRejectsStrayNonStringKeys) {
+TEST_F(TableReaderTest, FinishRejectsStrayNonStringKeys) {
   push("{1, 2, [10] = 3, [true] = 4, [2.5] = 5, [{}] = 6}");
   TableReader r(L, -1, "list");
   const std::string msg = error_of<FieldError>([&] { r.finish(); });
@@ -245,7 +245,7 @@ TEST_F(LuaTableReader, FinishRejectsStrayNonStringKeys) {
   EXPECT_NE(msg.find("unexpected key of type table"), std::string::npos) << msg;
 }
 
-TEST_F(LuaTableReader, MetamethodsNeverRun) {
+TEST_F(TableReaderTest, MetamethodsNeverRun) {
   push("setmetatable({}, {__index = function() error('must not run') end})");
   TableReader r(L, -1, "spec");
   EXPECT_EQ(error_of<FieldError>([&] { r.number("mass"); }),
@@ -257,7 +257,7 @@ TEST_F(LuaTableReader, MetamethodsNeverRun) {
 // Fields a metatable's __index would give were ignored without a word
 // (issue 43): the reader reads own fields only, so it refuses them, naming
 // the field; a table whose __index gives nothing it reads is fine.
-TEST_F(LuaTableReader, FieldsInheritedThroughIndexAreRefused) {
+TEST_F(TableReaderTest, FieldsInheritedThroughIndexAreRefused) {
   push("setmetatable({mass = 1}, {__index = setmetatable({}, {__index = {spin = 0.5}})})");
   TableReader r(L, -1, "spacetime");
   EXPECT_EQ(r.number("mass"), 1);
@@ -279,7 +279,7 @@ TEST_F(LuaTableReader, FieldsInheritedThroughIndexAreRefused) {
   EXPECT_EQ(lua_gettop(L), 4);
 }
 
-TEST_F(LuaTableReader, NoStackLeaks) {
+TEST_F(TableReaderTest, NoStackLeaks) {
   push("{a = 1, b = 'x', c = {d = {1, 2}, u = 1}, e = 0/0, u = 2}");
   const int top = lua_gettop(L);
   {
@@ -305,7 +305,7 @@ TEST_F(LuaTableReader, NoStackLeaks) {
 }
 
 // The readers pin their tables with registry references and release them.
-TEST_F(LuaTableReader, ReferencesPinAndRelease) {
+TEST_F(TableReaderTest, ReferencesPinAndRelease) {
   // Sees whether a table is alive: a weak table made through the C API
   // (the sandbox refuses them to scripts, whose frames must not follow the
   // collector's timing; this test is about that timing).
@@ -344,7 +344,7 @@ TEST_F(LuaTableReader, ReferencesPinAndRelease) {
   EXPECT_EQ(lua_gettop(L), weak);
 }
 
-TEST_F(LuaTableReader, ChildrenOutliveParentsAndMovesWork) {
+TEST_F(TableReaderTest, ChildrenOutliveParentsAndMovesWork) {
   push("{camera = {fov = 60}}");
   std::optional<TableReader> camera;
   {
@@ -363,7 +363,7 @@ TEST_F(LuaTableReader, ChildrenOutliveParentsAndMovesWork) {
   EXPECT_EQ(assigned.number("fov"), 60);
 }
 
-TEST(LuaNearest, Distances) {
+TEST(TableReaderNearest, Distances) {
   const std::vector<std::string> keys = {"mass", "spin", "fov", "inclination", "r_out"};
   EXPECT_EQ(lc::lua::nearest("spinn", keys), "spin");
   EXPECT_EQ(lc::lua::nearest("sipn", keys), "spin");        // transposition
@@ -381,7 +381,7 @@ TEST(LuaNearest, Distances) {
 
 // 'outer' is no misspelling of 'inner' (two of five letters differ); a
 // name that extends a field's (frame_count, inner_radius) likely means it.
-TEST(LuaNearest, ShortWordsAndSharedBeginnings) {
+TEST(TableReaderNearest, ShortWordsAndSharedBeginnings) {
   const std::vector<std::string> disk = {"inner", "outer", "rings", "sectors"};
   EXPECT_EQ(lc::lua::nearest("outer", {std::vector<std::string>{"inner"}}), "");
   EXPECT_EQ(lc::lua::nearest("iner", disk), "inner");

@@ -70,7 +70,7 @@ std::string bytecode_of(const char* source) {
   return out;
 }
 
-TEST(LuaSandbox, ForbiddenGlobalsAreNil) {
+TEST(Sandbox, ForbiddenGlobalsAreNil) {
   Sandbox sandbox({});
   lua_State* L = sandbox.state();
   for (const char* name : {"io", "os", "ffi", "debug", "jit", "package", "load", "loadstring",
@@ -94,7 +94,7 @@ TEST(LuaSandbox, ForbiddenGlobalsAreNil) {
   EXPECT_EQ(lua_gettop(L), 0);
 }
 
-TEST(LuaSandbox, PrintWritesToStandardError) {
+TEST(Sandbox, PrintWritesToStandardError) {
   // Standard output may carry data (a CSV); print must not corrupt it.
   ScratchDir dir;
   const auto file = dir.path() / "print.lua";
@@ -107,7 +107,7 @@ TEST(LuaSandbox, PrintWritesToStandardError) {
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "hello\t42\tnil\n");
 }
 
-TEST(LuaSandbox, BytecodeRefusedAsMainFile) {
+TEST(Sandbox, BytecodeRefusedAsMainFile) {
   ScratchDir dir;
   const std::string bc = bytecode_of("return 1");
   ASSERT_FALSE(bc.empty());
@@ -119,7 +119,7 @@ TEST(LuaSandbox, BytecodeRefusedAsMainFile) {
   EXPECT_EQ(lua_gettop(sandbox.state()), 0);
 }
 
-TEST(LuaSandbox, BytecodeRefusedViaRequire) {
+TEST(Sandbox, BytecodeRefusedViaRequire) {
   ScratchDir dir;
   write_file(dir.path() / "compiled.lua", bytecode_of("return 1"));
   write_file(dir.path() / "main.lua", "local m = require('compiled')\nreturn m\n");
@@ -129,7 +129,7 @@ TEST(LuaSandbox, BytecodeRefusedViaRequire) {
   EXPECT_NE(msg.find("bytecode, which is refused"), std::string::npos) << msg;
 }
 
-TEST(LuaSandbox, EndlessLoopStoppedByTimeLimit) {
+TEST(Sandbox, EndlessLoopStoppedByTimeLimit) {
   Sandbox sandbox({}, SandboxLimits{.seconds = 0.2, .set_by = "the test"});
   const auto t0 = std::chrono::steady_clock::now();
   const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "endless_loop.lua"); });
@@ -144,7 +144,7 @@ TEST(LuaSandbox, EndlessLoopStoppedByTimeLimit) {
   EXPECT_TRUE(lua_toboolean(sandbox.state(), -1));
 }
 
-TEST(LuaSandbox, TimeLimitCannotBeSwallowedByPcall) {
+TEST(Sandbox, TimeLimitCannotBeSwallowedByPcall) {
   for (const char* script : {"swallow_loop.lua", "coroutine_loop.lua"}) {
     Sandbox sandbox({}, SandboxLimits{.seconds = 0.2});
     const auto t0 = std::chrono::steady_clock::now();
@@ -155,7 +155,7 @@ TEST(LuaSandbox, TimeLimitCannotBeSwallowedByPcall) {
   }
 }
 
-TEST(LuaSandbox, MemoryBombStoppedByCap) {
+TEST(Sandbox, MemoryBombStoppedByCap) {
   Sandbox sandbox({}, SandboxLimits{.memory_bytes = 32u << 20});
   const fs::path file = kData / "memory_bomb.lua";
   const auto t0 = std::chrono::steady_clock::now();
@@ -168,7 +168,7 @@ TEST(LuaSandbox, MemoryBombStoppedByCap) {
   EXPECT_TRUE(lua_toboolean(sandbox.state(), -1));
 }
 
-TEST(LuaSandbox, SyntaxErrorReportsFileAndLine) {
+TEST(Sandbox, SyntaxErrorReportsFileAndLine) {
   Sandbox sandbox({});
   const fs::path file = kData / "syntax_error.lua";
   const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file); });
@@ -177,7 +177,7 @@ TEST(LuaSandbox, SyntaxErrorReportsFileAndLine) {
   EXPECT_EQ(lua_gettop(sandbox.state()), 0);
 }
 
-TEST(LuaSandbox, RuntimeErrorReportsFileLineAndTraceback) {
+TEST(Sandbox, RuntimeErrorReportsFileLineAndTraceback) {
   Sandbox sandbox({});
   lua_pushinteger(sandbox.state(), 7);  // the caller's stack is left alone
   const fs::path file = kData / "runtime_error.lua";
@@ -191,7 +191,7 @@ TEST(LuaSandbox, RuntimeErrorReportsFileLineAndTraceback) {
   EXPECT_EQ(lua_gettop(sandbox.state()), 1);
 }
 
-TEST(LuaSandbox, NonStringErrorValuesGiveSensibleMessages) {
+TEST(Sandbox, NonStringErrorValuesGiveSensibleMessages) {
   Sandbox sandbox({});
   std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "error_table.lua"); });
   EXPECT_NE(msg.find("error_table.lua:3: error object is a table value"), std::string::npos) << msg;
@@ -199,7 +199,7 @@ TEST(LuaSandbox, NonStringErrorValuesGiveSensibleMessages) {
   EXPECT_EQ(msg.rfind("custom failure object", 0), 0u) << msg;
 }
 
-TEST(LuaSandbox, MissingFileNamesPathAndReason) {
+TEST(Sandbox, MissingFileNamesPathAndReason) {
   Sandbox sandbox({});
   const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "no_such_shot.lua"); });
   EXPECT_NE(msg.find((kData / "no_such_shot.lua").string()), std::string::npos) << msg;
@@ -209,7 +209,7 @@ TEST(LuaSandbox, MissingFileNamesPathAndReason) {
   EXPECT_TRUE(sandbox.loaded_files().empty());
 }
 
-TEST(LuaSandbox, RunFileResultCounts) {
+TEST(Sandbox, RunFileResultCounts) {
   Sandbox sandbox({});
   lua_State* L = sandbox.state();
   sandbox.run_file(kData / "returns_values.lua", LUA_MULTRET);
@@ -222,7 +222,7 @@ TEST(LuaSandbox, RunFileResultCounts) {
   EXPECT_EQ(lua_gettop(L), 0);
 }
 
-TEST(LuaSandbox, RequireSearchesDirsInOrderAndCaches) {
+TEST(Sandbox, RequireSearchesDirsInOrderAndCaches) {
   Sandbox sandbox({kDir1, kDir2});
   lua_State* L = sandbox.state();
   sandbox.run_file(kData / "require_main.lua");
@@ -250,7 +250,7 @@ TEST(LuaSandbox, RequireSearchesDirsInOrderAndCaches) {
   EXPECT_EQ(sandbox.loaded_files(), expected);
 }
 
-TEST(LuaSandbox, RequireMissingModuleListsSearchedPaths) {
+TEST(Sandbox, RequireMissingModuleListsSearchedPaths) {
   Sandbox sandbox({kDir1, kDir2});
   const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "require_missing.lua"); });
   const std::string expected = fmt::format(
@@ -259,7 +259,7 @@ TEST(LuaSandbox, RequireMissingModuleListsSearchedPaths) {
   EXPECT_EQ(msg.rfind(expected, 0), 0u) << msg;
 }
 
-TEST(LuaSandbox, RequireRefusesPathsAndBadNames) {
+TEST(Sandbox, RequireRefusesPathsAndBadNames) {
   Sandbox sandbox({kDir1, kDir2});
   sandbox.run_file(kData / "require_bad_names.lua");
   const std::string out = top_string(sandbox.state());
@@ -283,7 +283,7 @@ TEST(LuaSandbox, RequireRefusesPathsAndBadNames) {
   EXPECT_EQ(lines[10], "false " + file + ":8: require expects a module name string, got number");
 }
 
-TEST(LuaSandbox, RequireCycleIsReported) {
+TEST(Sandbox, RequireCycleIsReported) {
   Sandbox sandbox({kDir1});
   std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "require_cycle_lines.lua"); });
   EXPECT_EQ(msg.rfind((kDir1 / "cyc_d.lua").string() + ":3: require cycle: cyc_c -> cyc_d -> cyc_c\n",
@@ -304,7 +304,7 @@ TEST(LuaSandbox, RequireCycleIsReported) {
   EXPECT_EQ(msg.find("[C]: at 0x"), std::string::npos) << msg;
 }
 
-TEST(LuaSandbox, ErrorInModuleKeepsModuleLineAndRequiringLine) {
+TEST(Sandbox, ErrorInModuleKeepsModuleLineAndRequiringLine) {
   Sandbox sandbox({kDir1});
   const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "require_bad_module.lua"); });
   EXPECT_EQ(msg.rfind((kDir1 / "bad_module.lua").string() + ":3: attempt to index local 't'", 0), 0u)
@@ -314,7 +314,7 @@ TEST(LuaSandbox, ErrorInModuleKeepsModuleLineAndRequiringLine) {
   EXPECT_EQ(msg.find("stack traceback:"), msg.rfind("stack traceback:")) << msg;
 }
 
-TEST(LuaSandbox, FailedRequireIsRetriedNotACycle) {
+TEST(Sandbox, FailedRequireIsRetriedNotACycle) {
   Sandbox sandbox({kDir1});
   sandbox.run_file(kData / "require_retry.lua");
   const std::string out = top_string(sandbox.state());
@@ -323,7 +323,7 @@ TEST(LuaSandbox, FailedRequireIsRetriedNotACycle) {
   EXPECT_EQ(out.find("cycle"), std::string::npos) << out;
 }
 
-TEST(LuaSandbox, MemoryBombInModuleReportsMemory) {
+TEST(Sandbox, MemoryBombInModuleReportsMemory) {
   Sandbox sandbox({kDir1}, SandboxLimits{.memory_bytes = 32u << 20});
   const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(kData / "require_bomb.lua"); });
   EXPECT_NE(msg.find("require_bomb.lua: memory limit of 32 MiB exceeded"), std::string::npos) << msg;
@@ -368,9 +368,9 @@ int l_dtor_probe(lua_State* L) {
   lc::lua::raise(L, "probe " + std::to_string(alive.size()));
 }
 
-class LuaSandboxC : public ::testing::Test {
+class SandboxCFunctions : public ::testing::Test {
  protected:
-  LuaSandboxC() : sandbox_({}) {
+  SandboxCFunctions() : sandbox_({}) {
     lua_State* L = sandbox_.state();
     lua_register(L, "throws", l_throws);
     lua_register(L, "kerr", l_kerr);
@@ -391,13 +391,13 @@ class LuaSandboxC : public ::testing::Test {
   Sandbox sandbox_;
 };
 
-TEST_F(LuaSandboxC, ProtectTurnsExceptionIntoErrorAtScriptLine) {
+TEST_F(SandboxCFunctions, ProtectTurnsExceptionIntoErrorAtScriptLine) {
   const std::string msg = error_of<ScriptError>([&] { call("throws"); });
   EXPECT_EQ(msg.rfind(line(4) + ": mass must be positive\nstack traceback:", 0), 0u) << msg;
   EXPECT_EQ(lua_gettop(sandbox_.state()), 1);
 }
 
-TEST_F(LuaSandboxC, TableReaderErrorsInsideCFunctionAreLocatedOnce) {
+TEST_F(SandboxCFunctions, TableReaderErrorsInsideCFunctionAreLocatedOnce) {
   std::string msg = error_of<ScriptError>([&] { call("kerr_missing"); });
   EXPECT_EQ(msg.rfind(line(5) + ": kerr: missing field 'mass'\n", 0), 0u) << msg;
   msg = error_of<ScriptError>([&] { call("kerr_typo"); });
@@ -407,12 +407,12 @@ TEST_F(LuaSandboxC, TableReaderErrorsInsideCFunctionAreLocatedOnce) {
   EXPECT_EQ(lua_tonumber(sandbox_.state(), -1), 2.5);
 }
 
-TEST_F(LuaSandboxC, RaiseReportsCallerLine) {
+TEST_F(SandboxCFunctions, RaiseReportsCallerLine) {
   const std::string msg = error_of<ScriptError>([&] { call("raises"); });
   EXPECT_EQ(msg.rfind(line(8) + ": raised from C", 0), 0u) << msg;
 }
 
-TEST_F(LuaSandboxC, WhereReportsCallerLine) {
+TEST_F(SandboxCFunctions, WhereReportsCallerLine) {
   call("where");
   EXPECT_EQ(top_string(sandbox_.state()), line(9));
   EXPECT_EQ(Sandbox::where(sandbox_.state(), 0), "?");  // no Lua function running
@@ -422,7 +422,7 @@ TEST_F(LuaSandboxC, WhereReportsCallerLine) {
 // function: `return throws()` leaves no line of the calling function. The
 // message then names the nearest Lua line below (the call of the enclosing
 // function), or has no location when the engine called that function.
-TEST_F(LuaSandboxC, TailCallsLoseTheCallingLine) {
+TEST_F(SandboxCFunctions, TailCallsLoseTheCallingLine) {
   std::string msg = error_of<ScriptError>([&] { call("tail"); });
   EXPECT_EQ(msg.rfind("mass must be positive\nstack traceback:", 0), 0u) << msg;
   msg = error_of<ScriptError>([&] { call("tail_nested"); });
@@ -435,7 +435,7 @@ TEST_F(LuaSandboxC, TailCallsLoseTheCallingLine) {
 // What LuaJIT does on x64 (external unwinding): a Lua error raised in a C
 // function runs the C++ destructors of the frames it unwinds. valgrind
 // confirms the string in l_dtor_probe is freed.
-TEST_F(LuaSandboxC, LuaErrorRunsCppDestructors) {
+TEST_F(SandboxCFunctions, LuaErrorRunsCppDestructors) {
   destructor_runs = 0;
   const std::string msg = error_of<ScriptError>([&] { call("probe"); });
   EXPECT_EQ(msg.rfind(line(10) + ": probe 60", 0), 0u) << msg;
@@ -463,7 +463,7 @@ TEST(LuaJitUnwinding, CatchAllCatchesLuaErrors) {
   lua_close(L);
 }
 
-TEST(LuaSandbox, CallIsRepeatableAndCheap) {
+TEST(Sandbox, CallIsRepeatableAndCheap) {
   Sandbox sandbox({});
   lua_State* L = sandbox.state();
   sandbox.run_file(kData / "frames.lua");
@@ -486,7 +486,7 @@ TEST(LuaSandbox, CallIsRepeatableAndCheap) {
   std::printf("[          ] call(frame) incl. result read: %.0f ns\n", per_call * 1e9);
 }
 
-TEST(LuaSandbox, CallErrorsAndLimitsArePerCall) {
+TEST(Sandbox, CallErrorsAndLimitsArePerCall) {
   Sandbox sandbox({}, SandboxLimits{.memory_bytes = 32u << 20, .seconds = 0.2});
   lua_State* L = sandbox.state();
   const fs::path file = kData / "frames.lua";
@@ -533,12 +533,12 @@ TEST(LuaSandbox, CallErrorsAndLimitsArePerCall) {
   EXPECT_EQ(lua_gettop(L), 1);
 }
 
-TEST(LuaSandbox, CallWithoutFunctionIsAnError) {
+TEST(Sandbox, CallWithoutFunctionIsAnError) {
   Sandbox sandbox({});
   EXPECT_THROW(sandbox.call(2, 0), ScriptError);
 }
 
-TEST(LuaSandbox, MovedSandboxKeepsWorking) {
+TEST(Sandbox, MovedSandboxKeepsWorking) {
   Sandbox a({kDir1, kDir2}, SandboxLimits{.seconds = 0.2});
   a.run_file(kData / "require_retry.lua");
   Sandbox b = std::move(a);
@@ -601,7 +601,7 @@ const std::vector<std::pair<std::string, std::string>> kNestingScripts = {
     {"print", "local t = setmetatable({}, {__tostring = print})\nprint(t)\n"},
 };
 
-TEST(LuaSandbox, NestedCallsThroughCFunctionsFailCleanly) {
+TEST(Sandbox, NestedCallsThroughCFunctionsFailCleanly) {
   ScratchDir dir;
   for (const auto& [name, code] : kNestingScripts) {
     const fs::path file = script(dir, name + ".lua", code);
@@ -649,7 +649,7 @@ const std::vector<Overflow> kOverflowScripts = {
      2},
 };
 
-TEST(LuaSandbox, StackOverflowNamesTheScriptLine) {
+TEST(Sandbox, StackOverflowNamesTheScriptLine) {
   ScratchDir dir;
   for (const auto& [name, code, line] : kOverflowScripts) {
     const fs::path file = script(dir, name + ".lua", code);
@@ -674,7 +674,7 @@ TEST(LuaSandbox, StackOverflowNamesTheScriptLine) {
 // The same inside a function the engine calls (a shot's frame(i)), and in a
 // required module: the module's line, and the requiring line in the
 // traceback.
-TEST(LuaSandbox, StackOverflowInCallsAndModulesNamesTheLine) {
+TEST(Sandbox, StackOverflowInCallsAndModulesNamesTheLine) {
   ScratchDir dir;
   const fs::path shot = script(dir, "shot.lua",
                                "local function f(n) return 1 + f(n + 1) end\nreturn function(i)\n  local v = f(i)\n  return v\nend\n");
@@ -700,7 +700,7 @@ TEST(LuaSandbox, StackOverflowInCallsAndModulesNamesTheLine) {
 // script nesting 190 levels runs, one nesting 210 fails, on the main thread
 // as on a 2 MiB one. On a thread with less room the C stack check fails it
 // first, still cleanly; on one without the sandbox's reserve nothing starts.
-TEST(LuaSandbox, NestingLimitIsTheSameOnEveryThread) {
+TEST(Sandbox, NestingLimitIsTheSameOnEveryThread) {
   ScratchDir dir;
   const auto nesting = [&](int levels) {
     return script(dir, fmt::format("nest{}.lua", levels),
@@ -746,7 +746,7 @@ TEST(LuaSandbox, NestingLimitIsTheSameOnEveryThread) {
 
 // LuaJIT before 2023 does not check the Lua stack when pcall is a value's
 // own __call metamethod (it overran it: SIGSEGV).
-TEST(LuaSandbox, PcallAsCallMetamethodDoesNotCrash) {
+TEST(Sandbox, PcallAsCallMetamethodDoesNotCrash) {
   ScratchDir dir;
   const fs::path file = script(dir, "pcall_call.lua",
                                "local ok, e = pcall(setmetatable({}, {__call = pcall}))\n"
@@ -774,7 +774,7 @@ double loop_rate() {
 // reported form: xpcall(loop, loop)). Here the handlers do ~5 s of work and
 // then return, so the defect shows as a late failure, not a hang; now the
 // limit (0.5 s) holds, however the calls are nested.
-TEST(LuaSandbox, TimeLimitHoldsInErrorHandlers) {
+TEST(Sandbox, TimeLimitHoldsInErrorHandlers) {
   ScratchDir dir;
   const double work = 5 * loop_rate();
   const std::string head = fmt::format(
@@ -809,7 +809,7 @@ TEST(LuaSandbox, TimeLimitHoldsInErrorHandlers) {
 
 // tostring tail-calls a __tostring metamethod without running an
 // instruction: `__tostring = tostring` looped where the hook never fired.
-TEST(LuaSandbox, TimeLimitHoldsInTostringLoops) {
+TEST(Sandbox, TimeLimitHoldsInTostringLoops) {
   ScratchDir dir;
   const fs::path file =
       script(dir, "tostring_loop.lua", "local t = setmetatable({}, {__tostring = tostring})\nlocal s = tostring(t)\n");
@@ -824,7 +824,7 @@ TEST(LuaSandbox, TimeLimitHoldsInTostringLoops) {
 // the evaluation's: a loop there ended, at the time limit, as "error in
 // error handling". It gets 0.1 s; what went wrong is said at the line that
 // raised the object.
-TEST(LuaSandbox, ErrorObjectTostringIsBudgeted) {
+TEST(Sandbox, ErrorObjectTostringIsBudgeted) {
   ScratchDir dir;
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"function() while true do end end", "its __tostring did not return within 0.1 s"},
@@ -849,7 +849,7 @@ TEST(LuaSandbox, ErrorObjectTostringIsBudgeted) {
 
 // A script may raise a string of hundreds of MiB; the message keeps 4096
 // bytes of it.
-TEST(LuaSandbox, LongErrorMessagesAreCut) {
+TEST(Sandbox, LongErrorMessagesAreCut) {
   ScratchDir dir;
   const fs::path file = script(dir, "long.lua", "error(string.rep('x', 1e6))\n");
   Sandbox sandbox({});
@@ -864,7 +864,7 @@ TEST(LuaSandbox, LongErrorMessagesAreCut) {
 }
 
 // The guarded functions behave as LuaJIT's for scripts within the limits.
-TEST(LuaSandbox, GuardedLibraryFunctionsBehaveAsLuaJits) {
+TEST(Sandbox, GuardedLibraryFunctionsBehaveAsLuaJits) {
   ScratchDir dir;
   const fs::path file = script(dir, "library.lua", R"lua(local out = {}
 local gen = coroutine.wrap(function(a) local b = coroutine.yield(a + 1) return b * 2 end)
@@ -920,7 +920,7 @@ return table.concat(out, "\n")
 // require only reads regular files whose real path lies in its folders: a
 // link in the shot's folder to a file elsewhere was parsed, and a line of
 // it quoted in the syntax error.
-TEST(LuaSandbox, RequireRefusesLinksOutOfItsFolders) {
+TEST(Sandbox, RequireRefusesLinksOutOfItsFolders) {
   ScratchDir dir;
   fs::create_directories(dir / "shot" / "lib");
   fs::create_directories(dir / "elsewhere");
@@ -952,7 +952,7 @@ TEST(LuaSandbox, RequireRefusesLinksOutOfItsFolders) {
 // something wrote to it (as /dev/zero never ends; the e2e tests use it).
 // After 5 s a helper thread keeps opening the FIFO while the test still
 // waits, so that a regression fails instead of hanging.
-TEST(LuaSandbox, ScriptsAndModulesAreRegularFiles) {
+TEST(Sandbox, ScriptsAndModulesAreRegularFiles) {
   ScratchDir dir;
   const lc::test::UnblockedFifo unblocked(dir / "fifo.lua");
   const fs::path& fifo = unblocked.path();
@@ -976,7 +976,7 @@ TEST(LuaSandbox, ScriptsAndModulesAreRegularFiles) {
 // addresses (issue 43): every frame runs in a fresh state, and LuaJIT seeds
 // each one's string hash anew. pairs walks integers, other numbers,
 // strings by bytes, then booleans; the same in every state.
-TEST(LuaSandbox, PairsWalksTheSameOrderInEveryState) {
+TEST(Sandbox, PairsWalksTheSameOrderInEveryState) {
   ScratchDir dir;
   const fs::path file = script(dir, "order.lua", R"(
 local t = {approach = 10, hold = 0.5, pan = 3, zoom = 1, [true] = 1, [false] = 0, [2.5] = 1, [-1] = 1,
@@ -1003,7 +1003,7 @@ return table.concat(out, " ") .. "|" .. table.concat(walked, " ") .. "|" .. tabl
 
 // The walk takes the keys when pairs is called: values may change, keys
 // cleared are skipped; next goes on after any key, a cleared one too.
-TEST(LuaSandbox, PairsAndNextWhileTheTableChanges) {
+TEST(Sandbox, PairsAndNextWhileTheTableChanges) {
   ScratchDir dir;
   const fs::path file = script(dir, "change.lua", R"(
 local t = {a = 1, b = 2, c = 3, d = 4}
@@ -1027,7 +1027,7 @@ return table.concat(seen, " ") .. "|" .. after_cleared .. "|" .. tostring(empty)
 
 // Keys whose only order is an address cannot be walked the same way twice:
 // refused at the script's line, advising an array.
-TEST(LuaSandbox, PairsRefusesKeysOrderedOnlyByTheirAddress) {
+TEST(Sandbox, PairsRefusesKeysOrderedOnlyByTheirAddress) {
   ScratchDir dir;
   const fs::path file = script(dir, "keys.lua", "local t = {a = 1}\nt[{}] = 2\nfor k in pairs(t) do end\n");
   Sandbox sandbox({});
@@ -1045,7 +1045,7 @@ TEST(LuaSandbox, PairsRefusesKeysOrderedOnlyByTheirAddress) {
 
 // tostring and string.format show a value's identity, numbered in the
 // order the script first asks, where LuaJIT shows its address.
-TEST(LuaSandbox, IdentitiesInsteadOfAddresses) {
+TEST(Sandbox, IdentitiesInsteadOfAddresses) {
   ScratchDir dir;
   const fs::path file = script(dir, "ids.lua", R"(
 local a, b = {}, {}
@@ -1067,7 +1067,7 @@ return table.concat({tostring(b), tostring(a), tostring(b), tostring(print), tos
 // A weak table's contents follow the collector's timing, which follows the
 // state's hash seed: setmetatable refuses a metatable with __mode at the
 // script's line; other metatables are set as before.
-TEST(LuaSandbox, WeakTablesAreRefused) {
+TEST(Sandbox, WeakTablesAreRefused) {
   ScratchDir dir;
   Sandbox sandbox({});
   const fs::path weak = script(dir, "weak.lua", "local cache = {}\nsetmetatable(cache, {__mode = 'v'})\n");
@@ -1085,7 +1085,7 @@ TEST(LuaSandbox, WeakTablesAreRefused) {
 // read from its folder alone; what a mounted module requires while it
 // loads comes from that folder first (its siblings), else as usual; a
 // sibling is not the module of the same name elsewhere.
-TEST(LuaSandbox, MountedModulesAreReadFromTheirFolder) {
+TEST(Sandbox, MountedModulesAreReadFromTheirFolder) {
   ScratchDir dir;
   fs::create_directories(dir / "shots");
   fs::create_directories(dir / "own");
@@ -1109,7 +1109,7 @@ TEST(LuaSandbox, MountedModulesAreReadFromTheirFolder) {
 
 // A module name of any length: the message keeps its reason (the name is
 // cut, not the message).
-TEST(LuaSandbox, RequireOfAVeryLongNameKeepsTheReason) {
+TEST(Sandbox, RequireOfAVeryLongNameKeepsTheReason) {
   ScratchDir dir;
   const fs::path file = script(dir, "long.lua", "require(string.rep('a', 5000))\n");
   Sandbox sandbox({dir.path()});

@@ -103,16 +103,16 @@ std::string describe(const Case& c) {
 
 // The harness in the sandbox (its string functions) and in a plain LuaJIT
 // state (LuaJIT's own), each leaving `run` at stack index 1.
-class LuaStringPatterns : public ::testing::Test {
+class StringPatterns : public ::testing::Test {
  protected:
-  LuaStringPatterns() : sandbox_({}, SandboxLimits{.memory_bytes = 64u << 20, .seconds = 10}), plain_(luaL_newstate()) {
+  StringPatterns() : sandbox_({}, SandboxLimits{.memory_bytes = 64u << 20, .seconds = 10}), plain_(luaL_newstate()) {
     luaL_openlibs(plain_);
     for (lua_State* L : {sandbox_.state(), plain_}) {
       EXPECT_EQ(luaL_loadbuffer(L, kHarness, std::strlen(kHarness), "=harness"), 0);
       lua_call(L, 0, 1);
     }
   }
-  ~LuaStringPatterns() override { lua_close(plain_); }
+  ~StringPatterns() override { lua_close(plain_); }
 
   // What run(...) says in the sandbox (first) and in plain LuaJIT.
   std::pair<std::string, std::string> run(const Case& c) {
@@ -142,7 +142,7 @@ class LuaStringPatterns : public ::testing::Test {
 };
 
 // The sandbox's functions are not LuaJIT's (whose names say "builtin").
-TEST_F(LuaStringPatterns, SandboxHasItsOwnFunctions) {
+TEST_F(StringPatterns, SandboxHasItsOwnFunctions) {
   for (lua_State* L : {sandbox_.state(), plain_}) {
     for (const char* name : {"find", "match", "gmatch", "gsub"}) {
       lua_getglobal(L, "string");
@@ -159,7 +159,7 @@ TEST_F(LuaStringPatterns, SandboxHasItsOwnFunctions) {
             "3|boolean:true|string:key|string:value");
 }
 
-TEST_F(LuaStringPatterns, SameAsLuaJitOnChosenCases) {
+TEST_F(StringPatterns, SameAsLuaJitOnChosenCases) {
   using S = std::string;
   const std::vector<Case> cases = {
       // find: plain and pattern searches, start positions as LuaJIT converts them
@@ -224,7 +224,7 @@ TEST_F(LuaStringPatterns, SameAsLuaJitOnChosenCases) {
 
 // Random patterns over a small alphabet, malformed ones included, on short
 // subjects (so no pattern backtracks for long).
-TEST_F(LuaStringPatterns, SameAsLuaJitOnRandomPatterns) {
+TEST_F(StringPatterns, SameAsLuaJitOnRandomPatterns) {
   std::mt19937 rng(20240612);
   const std::vector<std::string> atoms = {"a", "b", "x", ".", "%a", "%d", "%s", "%w", "%p", "%x", "%z", "%A", "%%",
                                           "%(", "[ab]", "[^a]", "[a-c]", "[%]x]", "[%a%d]", "%b()", "%f[%w]",
@@ -260,7 +260,7 @@ std::string script_error(Sandbox& sandbox, const fs::path& file) {
 // in LuaJIT's own matcher on the machine this was written on; 60 and 60, the
 // form reported, through more than the universe has time for). Each string
 // function stops at the time limit, at the script's line.
-TEST(LuaStringPatternsLimits, PathologicalPatternsStopAtTheTimeLimit) {
+TEST(StringPatternsLimits, PathologicalPatternsStopAtTheTimeLimit) {
   ScratchDir dir;
   const std::vector<std::pair<std::string, std::string>> calls = {
       {"match", "local r = s:match(p)"},
@@ -285,7 +285,7 @@ TEST(LuaStringPatternsLimits, PathologicalPatternsStopAtTheTimeLimit) {
 
 // gsub's result lives in the capped Lua heap; string.rep and table.concat
 // are capped too (LuaJIT builds them there).
-TEST(LuaStringPatternsLimits, BuiltStringsCountAgainstTheMemoryCap) {
+TEST(StringPatternsLimits, BuiltStringsCountAgainstTheMemoryCap) {
   ScratchDir dir;
   const std::vector<std::string> scripts = {
       "local s = string.rep('a', 1e6)\nlocal r = s:gsub('.', string.rep('x', 1000))\n",

@@ -66,9 +66,9 @@ std::string test_name(const std::string& file) {
   return name;
 }
 
-class LuaLibraryScript : public ::testing::TestWithParam<std::string> {};
+class EngineApiScript : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(LuaLibraryScript, ReturnsTrue) {
+TEST_P(EngineApiScript, ReturnsTrue) {
   const fs::path file = kLuaTests / GetParam();
   Sandbox sandbox = make_sandbox();
   try {
@@ -83,13 +83,13 @@ TEST_P(LuaLibraryScript, ReturnsTrue) {
   lua_pop(L, 1);
 }
 
-INSTANTIATE_TEST_SUITE_P(LuaLibrary, LuaLibraryScript, ::testing::ValuesIn(lua_test_files()),
+INSTANTIATE_TEST_SUITE_P(EngineApi, EngineApiScript, ::testing::ValuesIn(lua_test_files()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return test_name(info.param);
                          });
 
 // An empty directory listing would instantiate nothing and pass silently.
-TEST(LuaLibrary, FindsTheLuaTests) {
+TEST(EngineApi, FindsTheLuaTests) {
   const std::vector<std::string> names = lua_test_files();
   for (const char* expected : {"ease_test.lua", "lerp_test.lua", "keyframes_test.lua",
                                "timeline_test.lua", "circle_pan_test.lua", "errors_test.lua",
@@ -112,7 +112,7 @@ bool located_at(const std::string& msg, const fs::path& file, int line, const st
 
 // A library error in a script's main chunk leaves the sandbox as a
 // ScriptError located at the script's line, with a traceback.
-TEST(LuaLibrary, ErrorInMainChunkNamesTheScriptLine) {
+TEST(EngineApi, ErrorInMainChunkNamesTheScriptLine) {
   Sandbox sandbox = make_sandbox();
   const fs::path file = kFixtures / "error_at_top.lua";
   const std::string msg = error_of<ScriptError>([&] { sandbox.run_file(file, 1); });
@@ -132,7 +132,7 @@ void call_frame(Sandbox& sandbox, int shot_index, int i) {
 
 // A library error inside frame(i), as the renderer evaluates it, names the
 // line of the shot's frame function.
-TEST(LuaLibrary, ErrorInFrameFunctionNamesTheShotLine) {
+TEST(EngineApi, ErrorInFrameFunctionNamesTheShotLine) {
   Sandbox sandbox = make_sandbox();
   const fs::path file = kFixtures / "error_in_frame.lua";
   sandbox.run_file(file, 1);
@@ -150,7 +150,7 @@ TEST(LuaLibrary, ErrorInFrameFunctionNamesTheShotLine) {
 // `frame = function(i) return lc.circle_pan(...) end` is a tail call: LuaJIT
 // keeps no frame for the shot's function, so no line of the shot is on the
 // stack. The message still says what is wrong, and why it names no line.
-TEST(LuaLibrary, ErrorInTailCallSaysTheLineIsUnknown) {
+TEST(EngineApi, ErrorInTailCallSaysTheLineIsUnknown) {
   Sandbox sandbox = make_sandbox();
   sandbox.run_file(kFixtures / "tail_call_frame.lua", 1);
   const std::string msg = error_of<ScriptError>([&] { call_frame(sandbox, 1, 3); });
@@ -194,7 +194,7 @@ FrameValues read_frame(lua_State* L) {
 
 // Two processes evaluating the same shot in different orders (each frame
 // once, as the farm does) get identical values, bit for bit.
-TEST(LuaLibrary, FramesDoNotDependOnEvaluationOrder) {
+TEST(EngineApi, FramesDoNotDependOnEvaluationOrder) {
   const fs::path file = kFixtures / "accr_disk_shot.lua";
   Sandbox a = make_sandbox();
   Sandbox b = make_sandbox();
