@@ -215,7 +215,7 @@ int main(int argc, char** argv) {
                        "side, dashed from its bottom side");
   plot_cmd->add_option("--horizon", plot.horizon, "Radius of the black disc drawn for the hole (default: none)")->check(number());
 
-  lc::RenderCommand render;
+  lc::RenderRequest render;
   auto* render_cmd = app.add_subcommand(
       "render", "Render frames of a shot to EXR and PNG with every core (or under mpirun, on every rank); resumes");
   render_cmd->add_option("shot", render.shot, "Shot script (docs/shots.md)")->required()->check(CLI::ExistingFile);

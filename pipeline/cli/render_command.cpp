@@ -28,7 +28,7 @@
 #include "stages/scene_stripe_renderer.hpp"
 #include "job/shot_survey.hpp"
 #include "stages/store_sink.hpp"
-#include "job/test_pause.hpp"
+#include "stages/pausing_stripe_renderer.hpp"
 #include "transport/threads.hpp"
 #include "job/frame_range.hpp"
 #include "job/image_size.hpp"
@@ -125,7 +125,7 @@ std::vector<int> preview_rows(const farm::WorkQueue& queue) {
 }
 
 // Says what resuming keeps and redoes.
-void report_plan(const farm::ResumePlan& plan, std::size_t asked, const RenderCommand& cmd) {
+void report_plan(const farm::ResumePlan& plan, std::size_t asked, const RenderRequest& cmd) {
   if (!plan.done.empty())
     fmt::print(stderr, "render: resuming: {} of {} frames already finished in {} ({})\n", plan.done.size(), asked,
                cmd.out.string(), farm::format_frame_list(plan.done));
@@ -175,7 +175,7 @@ void meter_exposures(farm::ShotSurvey& survey, Shot& shot, const RenderSettings&
 
 // The local farm, or the master of an MPI farm (mpi non-null): everything
 // but the rendering itself.
-int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
+int render_as_master(const RenderRequest& cmd, const farm::MpiSession* mpi) {
   // A Ctrl-C or kill from here on stops the render once the frames in hand
   // are stored (the farm run watches for it), not mid-write; the guard
   // outlives the workers' stop, which waits for them.
@@ -201,9 +201,9 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
   // the render before it starts): ~3 ms a frame, minutes on a long shot, so
   // said as it goes and stopped by a signal (nothing is written yet).
   farm::ShotSurvey survey;
-  const auto signalled = [&interrupts] { return interrupts.signal(); };
+  const auto check_signal = [&interrupts] { interrupts.check(); };
   try {
-    farm::StepProgress step("evaluating the frames", job.frames.size(), cmd.progress, signalled);
+    farm::StepProgress step("evaluating the frames", job.frames.size(), cmd.progress, check_signal);
     survey = farm::survey_shot(*job.shot, job.frames, [&step](std::size_t done) { step(done); });
   } catch (const Interrupted& e) {
     fmt::print(stderr, "render: interrupted by {} while evaluating the frames; nothing was rendered\n",
@@ -246,7 +246,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
                       .cwd = std::filesystem::current_path().string()});
   if (info.auto_exposure) {
     try {
-      farm::StepProgress step("auto exposure: metering", 0, cmd.progress, signalled);
+      farm::StepProgress step("auto exposure: metering", 0, cmd.progress, check_signal);
       meter_exposures(survey, *job.shot, job.rs, cmd.out, mpi ? farm::usable_cpus() : threads, plan.todo,
                       [&step](std::size_t done, std::size_t total) { step(done, total); });
     } catch (const Interrupted& e) {
@@ -360,7 +360,7 @@ int render_as_master(const RenderCommand& cmd, const farm::MpiSession* mpi) {
 
 // A worker rank: loads the same job, renders what the master hands out.
 // Prints nothing: the master reports, errors included.
-int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
+int render_as_worker(const RenderRequest& cmd, const farm::MpiSession& mpi) {
   // Under mpirun a Ctrl-C reaches every rank as SIGTERM: the worker tells
   // the master and waits for its stop, so neither hangs nor is cut off.
   InterruptGuard interrupts;
@@ -396,12 +396,12 @@ int render_as_worker(const RenderCommand& cmd, const farm::MpiSession& mpi) {
 
 }  // namespace
 
-int run_render(const RenderCommand& cmd) {
+int run_render(const RenderRequest& cmd) {
   farm::MpiSession mpi;
   return render_in_session(cmd, mpi);
 }
 
-int render_in_session(const RenderCommand& cmd, const farm::MpiSession& mpi) {
+int render_in_session(const RenderRequest& cmd, const farm::MpiSession& mpi) {
   // A file-size limit (ulimit -f) must fail the write with EFBIG and a
   // message, not kill the process with SIGXFSZ.
   std::signal(SIGXFSZ, SIG_IGN);

@@ -72,7 +72,7 @@ int render_all(const ShowcasePlan& plan, const ShowcaseLayout& layout, const Sho
   const bool master = mpi.rank() == 0;
   for (std::size_t k = 0; k < plan.sequences.size(); ++k) {
     const SequencePlan& s = plan.sequences[k];
-    RenderCommand rc;
+    RenderRequest rc;
     rc.shot = s.shot;
     rc.out = layout.frames(s.name);
     rc.frame_list = s.frames;

@@ -50,7 +50,7 @@ ShutterOverride shutter_override(std::optional<double> open, const std::optional
 
 }  // namespace
 
-RenderJob load_render_job(const RenderCommand& cmd) {
+RenderJob load_render_job(const RenderRequest& cmd) {
   RenderJob job;
   if (cmd.stripes && (*cmd.stripes < 1 || *cmd.stripes > 16384))
     throw std::invalid_argument(fmt::format("--stripes {}: must be between 1 and 16384", *cmd.stripes));

@@ -11,7 +11,7 @@
 #include "job/stripes.hpp"
 #include "frame_range.hpp"
 #include "render/renderer.hpp"
-#include "cli/render_command.hpp"
+#include "job/render_request.hpp"
 #include "camera/delivery.hpp"
 #include "script/shot.hpp"
 
@@ -33,6 +33,6 @@ struct RenderJob {
 // Loads the shot, checks the flags and reads the test hook.  Throws
 // std::invalid_argument naming the flag (or the hook's variable), or the
 // script's own error.
-RenderJob load_render_job(const RenderCommand& cmd);
+RenderJob load_render_job(const RenderRequest& cmd);
 
 }  // namespace lc

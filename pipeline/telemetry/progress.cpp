@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include "cli/interrupt.hpp"
 
 namespace lc::farm {
 
@@ -70,15 +69,14 @@ void Progress::finish() {
   std::fflush(out_);
 }
 
-StepProgress::StepProgress(std::string what, std::size_t total, double interval, std::function<int()> signal,
+StepProgress::StepProgress(std::string what, std::size_t total, double interval, std::function<void()> check,
                            double first, std::FILE* out)
     : what_(std::move(what)), total_(total), interval_(interval), first_(std::min(first, interval)),
-      signal_(std::move(signal)), out_(out), start_(std::chrono::steady_clock::now()),
+      check_(std::move(check)), out_(out), start_(std::chrono::steady_clock::now()),
       last_(start_) {}
 
 void StepProgress::operator()(std::size_t done) {
-  if (signal_)
-    if (const int sig = signal_()) throw Interrupted(sig);
+  if (check_) check_();
   if (interval_ <= 0) return;
   const auto now = std::chrono::steady_clock::now();
   const double due = said_ ? interval_ : first_;

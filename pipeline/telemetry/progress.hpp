@@ -45,15 +45,14 @@ class Progress {
 // frames, metering its exposure), which takes minutes on a long shot: a
 // plain line "render: <what>: <done>/<total> frames, <p>%, <s> s" on
 // stderr, the first once `first` seconds have passed and then every
-// `interval` seconds (0: none); and a stop at a signal, checked at each
-// step: `signal` (InterruptGuard's) non-zero throws Interrupted
-// (interrupt.hpp).  Not thread-safe.
+// `interval` seconds (0: none); and `check` called at each step, which may
+// throw to stop the step (the render's throws Interrupted after a signal,
+// cli/interrupt.hpp).  Not thread-safe.
 class StepProgress {
  public:
-  StepProgress(std::string what, std::size_t total, double interval, std::function<int()> signal, double first = 2.0,
+  StepProgress(std::string what, std::size_t total, double interval, std::function<void()> check, double first = 2.0,
                std::FILE* out = stderr);
-  // `done` of the total are done: says so if due; throws Interrupted after
-  // a signal.
+  // `done` of the total are done: says so if due; then checks.
   void operator()(std::size_t done);
   // The same where the total has grown to `total`.
   void operator()(std::size_t done, std::size_t total) {
@@ -67,7 +66,7 @@ class StepProgress {
   std::string what_;
   std::size_t total_;
   double interval_, first_;
-  std::function<int()> signal_;
+  std::function<void()> check_;
   std::FILE* out_;
   std::chrono::steady_clock::time_point start_, last_;
   bool said_ = false;

@@ -290,7 +290,7 @@ TEST(Delivery, TheFlagWordsAskForTheSameDelivery) {
 // The job's digest (what an MPI master and its workers compare) and its
 // frame size follow the delivery.
 TEST(Delivery, TheRenderJobTakesTheDelivery) {
-  RenderCommand cmd;
+  RenderRequest cmd;
   cmd.shot = std::string(LIGHTCONE_TEST_DATA) + "/farm/farm_orbit.lua";
   cmd.out = "unused";
   cmd.frames = "0";

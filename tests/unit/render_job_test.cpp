@@ -31,8 +31,8 @@ class ScopedEnv {
   std::string old_;
 };
 
-RenderCommand orbit_command() {
-  RenderCommand cmd;
+RenderRequest orbit_command() {
+  RenderRequest cmd;
   cmd.shot = std::string(LIGHTCONE_TEST_DATA) + "/farm/farm_orbit.lua";
   cmd.out = "unused";
   cmd.frames = "0:1";
@@ -41,7 +41,7 @@ RenderCommand orbit_command() {
 
 TEST(RenderJob, HoldsTheFramesTheLayoutAndTheTestPause) {
   ScopedEnv pause("LIGHTCONE_TEST_PAUSE_AFTER", "7");
-  RenderCommand cmd = orbit_command();
+  RenderRequest cmd = orbit_command();
   cmd.stripes = 4;
   const RenderJob job = load_render_job(cmd);
   ASSERT_TRUE(job.shot);
@@ -67,7 +67,7 @@ TEST(RenderJob, ABadTestPauseIsRefusedNamingTheVariable) {
 }
 
 TEST(RenderJob, ABadFlagIsRefusedNamingIt) {
-  RenderCommand cmd = orbit_command();
+  RenderRequest cmd = orbit_command();
   cmd.stripes = 0;
   try {
     load_render_job(cmd);

@@ -1,0 +1,3 @@
+#pragma once
+// A render header (architecture_test fixture): core below it is allowed.
+#include "core/bad.hpp"

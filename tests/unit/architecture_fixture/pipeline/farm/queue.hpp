@@ -1,0 +1,2 @@
+#pragma once
+// A deliberate violation for architecture_test: a folder with no level.

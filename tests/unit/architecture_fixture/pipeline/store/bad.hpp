@@ -1,0 +1,3 @@
+#pragma once
+// A deliberate violation for architecture_test: storage includes a command.
+#include "cli/some_command.hpp"
