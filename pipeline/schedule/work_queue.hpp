@@ -1,47 +1,25 @@
 #pragma once
 // The queue of working sets (one stripe of one frame) over every frame of a
-// job, and the assembly of finished stripes into frames.  Whoever is idle —
-// a local thread or, through the MPI master, a worker rank — takes the next
-// set.  Sets come out frame by frame, so only a few frames are open at once;
-// with a preview pass, every k-th stripe of every frame comes first.
-// Thread-safe.
+// job: the joint of the hand-out order (schedule/hand_out.hpp) and the
+// assembly of finished stripes into frames (schedule/frame_assembly.hpp)
+// under one lock, with the one rule that needs both, the limit on open
+// frames.  Whoever is idle — a local thread or, through the MPI master, a
+// worker rank — takes the next set.  Thread-safe.
 
-#include <chrono>
 #include <condition_variable>
-#include <map>
-#include <memory>
 #include <mutex>
 #include <optional>
-#include <string>
 #include <string_view>
 #include <vector>
 
-#include "store/frame_makers.hpp"
 #include "job/stripes.hpp"
 #include "render/render_settings.hpp"
+#include "schedule/frame_assembly.hpp"
+#include "schedule/hand_out.hpp"
+#include "schedule/work_item.hpp"
 #include "telemetry/run_progress.hpp"
 
 namespace lc::farm {
-
-enum class Pass { preview, full };
-
-struct WorkItem {
-  int frame = 0;
-  int stripe = 0;
-  Pass pass = Pass::full;
-  bool operator==(const WorkItem&) const = default;
-};
-
-// A frame whose stripes have all arrived; the stripes of a preview are those
-// with stripe % preview_every == 0, the other rows are zero.
-struct CompletedFrame {
-  Pass pass = Pass::full;
-  int frame = 0;
-  FrameImage image;
-  RenderStats stats;
-  FrameMakers makers;  // the ranks that rendered its sets, with their nodes
-  std::chrono::steady_clock::time_point dispatched;  // when its first set was handed out
-};
 
 class WorkQueue {
  public:
@@ -92,47 +70,22 @@ class WorkQueue {
   RunProgress progress() const;
   // The frames of the full pass handed out and not yet stored, ascending.
   std::vector<int> open_frames() const;
-  const StripeLayout& layout() const { return layout_; }
-  const RenderSettings& settings() const { return rs_; }
+  const StripeLayout& layout() const { return hand_out_.layout(); }
+  const RenderSettings& settings() const { return assembly_.settings(); }
   // The stripes a frame of `pass` consists of.
-  const std::vector<int>& stripes_of(Pass pass) const { return pass == Pass::preview ? preview_stripes_ : all_stripes_; }
+  const std::vector<int>& stripes_of(Pass pass) const { return hand_out_.stripes_of(pass); }
 
  private:
-  struct OpenFrame {
-    std::unique_ptr<FrameImage> canvas;
-    std::vector<char> done;  // per stripe index
-    int remaining = 0;
-    RenderStats stats;
-    std::chrono::steady_clock::time_point opened;   // its first set handed out
-    std::map<int, std::pair<std::string, int>> by;  // rank -> its node and the sets it rendered
-  };
-  using Key = std::pair<int, int>;  // (pass, frame)
-  static Key key(Pass p, int frame) { return {static_cast<int>(p), frame}; }
+  // The next set for `taker` (-1: in order), opening its frame if it is the
+  // first; nullopt when stopped, drained or throttled.
   std::optional<WorkItem> take_locked(int taker);
-  // The index (into the pass's stripes) of the current frame's next set for
-  // `taker` (-1: in order).
-  std::size_t pick_locked(int taker);
 
-  RenderSettings rs_;
-  StripeLayout layout_;
-  std::vector<int> frames_;
   Options options_;
-  std::vector<int> preview_stripes_, all_stripes_;
-
   mutable std::mutex mutex_;
   std::condition_variable slot_freed_;
-  // Cursor: pass (0 preview, 1 full), index into frames_; within the frame
-  // (open once its first set is out) the sets handed out so far.
-  int cur_pass_ = 0;
-  std::size_t cur_frame_ = 0;
-  bool frame_started_ = false;
-  std::vector<char> handed_;   // per index into the pass's stripes
-  std::size_t handed_count_ = 0, lowest_ = 0;  // lowest_: no set below it is left
-  std::vector<int> owner_;     // per stripe: the taker it went to last (-1: none)
-  std::map<int, std::vector<std::size_t>> left_for_;  // per owner, the current frame's indices it had, descending
-  std::map<Key, OpenFrame> open_;  // handed out and not stored yet
+  HandOut hand_out_;
+  FrameAssembly assembly_;
   bool stopped_ = false;
-  RunProgress progress_;
 };
 
 // Frames open at once for `threads` render threads (each with one set in

@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "stages/scene_cache.hpp"
+#include "job/stripes.hpp"
 #include "stages/stripe_renderer.hpp"
 #include "render/sample_memo.hpp"
 

@@ -5,7 +5,8 @@
 // farm alone.  Without the scene, so the farm's loops build without the
 // registries.
 
-#include "schedule/work_queue.hpp"
+#include "render/render_settings.hpp"
+#include "schedule/work_item.hpp"
 
 namespace lc::farm {
 

@@ -17,7 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "schedule/work_queue.hpp"
+#include "render/render_settings.hpp"
+#include "schedule/work_item.hpp"
 
 namespace lc::farm {
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "transport/mpi_session.hpp"
+#include "job/stripes.hpp"
 #include "stages/stripe_renderer.hpp"
 
 namespace lc::farm {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "schedule/work_queue.hpp"
+#include "schedule/work_item.hpp"
 #include "store/event_file.hpp"
 
 namespace lc::farm {

@@ -1,5 +1,5 @@
-// The farm's work queue and stripe layout: interleaved rows cover the image
-// exactly once, every working set is handed out exactly once, frames
+// The work queue (schedule/work_queue.hpp), the joint of the hand-out and
+// the frame assembly: every working set is handed out exactly once, frames
 // complete when their last stripe arrives, previews come first, the number
 // of open frames is bounded, and threads sharing the queue agree.
 
@@ -13,7 +13,6 @@
 
 #include "schedule/farm_run.hpp"
 #include "store/frame_store.hpp"
-#include "transport/mpi_messages.hpp"
 #include "schedule/work_queue.hpp"
 
 namespace lc::farm {
@@ -26,36 +25,8 @@ RenderSettings settings(int w, int h) {
   return rs;
 }
 
-TEST(FarmStripes, InterleavedRowsCoverTheImageOnce) {
-  for (int height : {1, 7, 32, 720})
-    for (int stripes : {1, 3, 32, 512, 1000}) {
-      const StripeLayout layout(height, stripes);
-      EXPECT_LE(layout.stripes(), height);
-      std::vector<int> seen(height, 0);
-      for (int s = 0; s < layout.stripes(); ++s) {
-        const auto rows = layout.rows(s);
-        EXPECT_FALSE(rows.empty());
-        EXPECT_EQ(static_cast<int>(rows.size()), layout.row_count(s));
-        EXPECT_TRUE(std::is_sorted(rows.begin(), rows.end()));
-        for (int j : rows) {
-          ++seen[j];
-          EXPECT_EQ(layout.stripe_of(j), s);
-        }
-      }
-      EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }))
-          << height << " rows, " << stripes << " stripes";
-    }
-}
-
-TEST(FarmStripes, PaperLayout) {
-  const StripeLayout layout(720, 512);  // 1280x720 in 512 stripes
-  EXPECT_EQ(layout.rows(0), (std::vector<int>{0, 512}));
-  EXPECT_EQ(layout.rows(207), (std::vector<int>{207, 719}));
-  EXPECT_EQ(layout.rows(208), (std::vector<int>{208}));
-}
-
 // Hands out everything single-threaded and checks each set appears once.
-TEST(FarmQueue, EverySetOnceInFrameOrder) {
+TEST(WorkQueue, EverySetOnceInFrameOrder) {
   WorkQueue q(settings(4, 10), StripeLayout(10, 5), {3, 7, 9}, {.preview_every = 0, .max_open_frames = 100});
   std::vector<WorkItem> items;
   while (auto i = q.take()) items.push_back(*i);
@@ -68,7 +39,7 @@ TEST(FarmQueue, EverySetOnceInFrameOrder) {
   }
 }
 
-TEST(FarmQueue, WorkersGetBackTheStripesTheyHadBefore) {
+TEST(WorkQueue, WorkersGetBackTheStripesTheyHadBefore) {
   // Two MPI workers (ranks 1 and 2) asking in turns share frame 0; in frame
   // 1 each gets the stripes it had, whoever asks first and however often,
   // so its sample memo holds their rows.  What one leaves, the other takes.
@@ -104,7 +75,7 @@ TEST(FarmQueue, WorkersGetBackTheStripesTheyHadBefore) {
   EXPECT_TRUE(q.drained());
 }
 
-TEST(FarmQueue, FrameCompletesWithItsLastStripeAndHoldsItsRows) {
+TEST(WorkQueue, FrameCompletesWithItsLastStripeAndHoldsItsRows) {
   WorkQueue q(settings(3, 4), StripeLayout(4, 2), {0}, {});
   const auto a = *q.take(), b = *q.take();
   // Write each stripe's row numbers into its rows, in reverse order of hand-out.
@@ -126,7 +97,7 @@ TEST(FarmQueue, FrameCompletesWithItsLastStripeAndHoldsItsRows) {
 // A completed frame names the ranks whose sets made it, with their nodes,
 // and when its first set was handed out (the journal's wall time starts
 // there); of more ranks than are listed, those that rendered the most.
-TEST(FarmQueue, AFrameNamesTheRanksThatRenderedItAndWhenItWasDispatched) {
+TEST(WorkQueue, AFrameNamesTheRanksThatRenderedItAndWhenItWasDispatched) {
   WorkQueue q(settings(2, 4), StripeLayout(4, 4), {0}, {});
   const auto before = std::chrono::steady_clock::now();
   const auto a = *q.take_for(2), b = *q.take_for(1), c = *q.take_for(2), d = *q.take_for(2);
@@ -160,7 +131,7 @@ TEST(FarmQueue, AFrameNamesTheRanksThatRenderedItAndWhenItWasDispatched) {
   EXPECT_EQ(last->makers.ranks.back(), (FrameMakers::Rank{ranks, "n" + std::to_string(ranks)}));
 }
 
-TEST(FarmQueue, DuplicateOrUnknownSetIsRefused) {
+TEST(WorkQueue, DuplicateOrUnknownSetIsRefused) {
   WorkQueue q(settings(2, 4), StripeLayout(4, 2), {0}, {});
   const auto a = *q.take();
   q.finish(a, {});
@@ -168,7 +139,7 @@ TEST(FarmQueue, DuplicateOrUnknownSetIsRefused) {
   EXPECT_THROW(q.finish({5, 0, Pass::full}, {}), std::logic_error);
 }
 
-TEST(FarmQueue, PreviewStripesOfEveryFrameComeFirst) {
+TEST(WorkQueue, PreviewStripesOfEveryFrameComeFirst) {
   WorkQueue q(settings(2, 8), StripeLayout(8, 8), {0, 1}, {.preview_every = 4, .max_open_frames = 100});
   EXPECT_EQ(q.stripes_of(Pass::preview), (std::vector<int>{0, 4}));
   std::vector<WorkItem> items;
@@ -184,7 +155,7 @@ TEST(FarmQueue, PreviewStripesOfEveryFrameComeFirst) {
   EXPECT_EQ(p.previews_total, 2);
 }
 
-TEST(FarmQueue, OpenFramesAreBounded) {
+TEST(WorkQueue, OpenFramesAreBounded) {
   WorkQueue q(settings(2, 2), StripeLayout(2, 2), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 2});
   std::vector<WorkItem> items;
   while (auto i = q.take()) items.push_back(*i);
@@ -197,7 +168,7 @@ TEST(FarmQueue, OpenFramesAreBounded) {
   EXPECT_EQ(q.take()->frame, 2);
 }
 
-TEST(FarmQueue, StopEndsTakeWait) {
+TEST(WorkQueue, StopEndsTakeWait) {
   WorkQueue q(settings(2, 2), StripeLayout(2, 1), {0, 1}, {.preview_every = 0, .max_open_frames = 1});
   ASSERT_TRUE(q.take().has_value());
   std::thread waiter([&] { EXPECT_FALSE(q.take_wait().has_value()); });
@@ -220,7 +191,7 @@ class RecordingSink final : public FrameSink {
 
 // Four threads drain a queue through a FarmRun; every pixel is written by
 // exactly one set, every frame stored once.
-TEST(FarmQueue, ThreadsShareTheQueue) {
+TEST(WorkQueue, ThreadsShareTheQueue) {
   const int W = 5, H = 23;
   WorkQueue q(settings(W, H), StripeLayout(H, 6), {0, 1, 2, 3, 4, 5, 6, 7}, {.preview_every = 3, .max_open_frames = 3});
   RecordingSink sink;
@@ -260,7 +231,7 @@ TEST(FarmQueue, ThreadsShareTheQueue) {
 
 // A signal noticed by the run stops the queue but is no error: the frame
 // completed before it is still stored, the one half done is not.
-TEST(FarmQueue, AnInterruptedRunStoresWhatIsComplete) {
+TEST(WorkQueue, AnInterruptedRunStoresWhatIsComplete) {
   WorkQueue q(settings(2, 4), StripeLayout(4, 2), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 3});
   RecordingSink sink;
   int signal = 0;
@@ -281,69 +252,6 @@ TEST(FarmQueue, AnInterruptedRunStoresWhatIsComplete) {
     EXPECT_FALSE(run.error().has_value());
   }
   EXPECT_EQ(sink.frames, (std::vector<int>{0}));
-}
-
-TEST(FarmMessages, ResultRoundTripsRowsAndLayers) {
-  RenderSettings rs = settings(3, 5);
-  rs.layers = true;
-  FrameImage src = make_frame(rs), dst = make_frame(rs);
-  for (std::size_t i = 0; i < src.rgb.size(); ++i) src.rgb[i] = static_cast<float>(i) + 0.5f;
-  for (auto& l : src.layers)
-    for (std::size_t i = 0; i < l.values.size(); ++i) l.values[i] = -static_cast<float>(i);
-  const StripeLayout layout(5, 2);
-  const WorkItem item{4, 1, Pass::full};
-  const Bytes b = pack_result(item, {7, 8, 9}, src, layout.rows(1));
-  EXPECT_EQ(result_item(b), item);
-  const RenderStats st = unpack_result(b, dst, layout.rows(1));
-  EXPECT_EQ(st.rays, 7);
-  EXPECT_EQ(st.gave_up, 9);
-  for (int j = 0; j < 5; ++j)
-    for (int i = 0; i < 3; ++i) {
-      const std::size_t p = static_cast<std::size_t>(j * 3 + i);
-      EXPECT_EQ(dst.rgb[3 * p], j % 2 == 1 ? src.rgb[3 * p] : 0.0f);
-      EXPECT_EQ(dst.layers[4].values[p], j % 2 == 1 ? src.layers[4].values[p] : 0.0f);
-    }
-  EXPECT_THROW(unpack_result(b, dst, layout.rows(0)), std::runtime_error);  // 3 rows, not 2
-  EXPECT_EQ(unpack_items(pack_items({{1, 2, Pass::preview}, {3, 4, Pass::full}})),
-            (std::vector<WorkItem>{{1, 2, Pass::preview}, {3, 4, Pass::full}}));
-}
-
-// Alpha travels only with a set that has a pixel not opaque: an opaque
-// set's message is exactly as large as before alpha existed.
-TEST(FarmMessages, AlphaTravelsOnlyWhereSomePixelIsNotOpaque) {
-  const RenderSettings rs = settings(4, 4);
-  FrameImage src = make_frame(rs), dst = make_frame(rs);
-  const StripeLayout layout(4, 2);  // stripe 0: rows 0, 2; stripe 1: rows 1, 3
-  src.alpha[4 * 1 + 2] = 0.25f;     // row 1: stripe 1
-  const Bytes opaque = pack_result({0, 0, Pass::full}, {}, src, layout.rows(0));
-  const Bytes clear = pack_result({0, 1, Pass::full}, {}, src, layout.rows(1));
-  EXPECT_EQ(clear.size() - opaque.size(), 2 * 4 * sizeof(float));
-  unpack_result(opaque, dst, layout.rows(0));
-  unpack_result(clear, dst, layout.rows(1));
-  EXPECT_EQ(dst.alpha, src.alpha);
-  FrameImage no_room = make_frame(rs);
-  no_room.alpha.clear();
-  EXPECT_THROW(unpack_result(clear, no_room, layout.rows(1)), std::runtime_error);
-}
-
-TEST(FarmPreview, MissingRowsComeFromTheNearestRenderedRow) {
-  FrameImage img;
-  img.width = 1;
-  img.height = 9;
-  img.rgb.assign(27, 0.0f);
-  img.alpha.assign(9, 1.0f);
-  for (int j : {0, 4, 8}) img.rgb[3 * j] = img.alpha[j] = static_cast<float>(j) / 8;
-  fill_missing_rows(img, {0, 4, 8});
-  std::vector<float> r;
-  for (int j = 0; j < 9; ++j) r.push_back(img.rgb[3 * j] * 8);
-  EXPECT_EQ(r, (std::vector<float>{0, 0, 0, 4, 4, 4, 4, 8, 8}));  // ties go to the row above
-  for (int j = 0; j < 9; ++j) EXPECT_EQ(img.alpha[j], img.rgb[3 * j]);  // alpha comes from the same row
-  FrameImage one = img;
-  one.alpha.clear();
-  one.rgb.assign(27, 0.0f);
-  one.rgb[3 * 5] = 5;
-  fill_missing_rows(one, {5});
-  for (int j = 0; j < 9; ++j) EXPECT_EQ(one.rgb[3 * j], 5.0f);
 }
 
 }  // namespace
