@@ -24,7 +24,7 @@ std::string hash_error(const std::filesystem::path& file) {
   return lc::test::error_of([&] { hash_file(file); });
 }
 
-TEST(FarmContentHash, HashesRegularFilesOnly) {
+TEST(ContentHash, HashesRegularFilesOnly) {
   ScratchDir dir;
   std::ofstream(dir / "a.png") << "abc";
   EXPECT_EQ(hash_file(dir / "a.png"), lc::farm::hash_bytes("abc"));

@@ -1,6 +1,7 @@
 // The frame store: one render per directory (the lock names its holder),
 // what resume trusts (journal line + files of the recorded sizes), and the
-// cleanup of temporaries a killed render left behind.
+// cleanup of temporaries a killed render left behind, and a preview's
+// missing rows filled from the nearest rendered one.
 
 #include <chrono>
 #include <csignal>
@@ -27,7 +28,7 @@ namespace {
 
 FrameImage tiny() { return test::tiny_frame(); }
 
-TEST(FarmStore, SecondStoreOnTheDirectoryIsRefusedNamingThePid) {
+TEST(FrameStore, SecondStoreOnTheDirectoryIsRefusedNamingThePid) {
   test::ScratchDir dir;
   FrameStore first(dir / "out", "s");
   try {
@@ -40,7 +41,7 @@ TEST(FarmStore, SecondStoreOnTheDirectoryIsRefusedNamingThePid) {
   }
 }
 
-TEST(FarmStore, LockIsReleasedAndRemoved) {
+TEST(FrameStore, LockIsReleasedAndRemoved) {
   test::ScratchDir dir;
   { FrameStore first(dir / "out", "s"); }
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / DirLock::file_name));
@@ -62,7 +63,7 @@ void with_file_limit(rlim_t bytes, F&& f) {
   std::signal(SIGXFSZ, old_handler);
 }
 
-TEST(FarmStore, ALockFileItMadeAndCouldNotUseIsRemovedOneThatWasThereIsLeft) {
+TEST(FrameStore, ALockFileItMadeAndCouldNotUseIsRemovedOneThatWasThereIsLeft) {
   // A full disk left an empty lightcone.lock behind (issue 43).
   test::ScratchDir dir;
   std::filesystem::create_directories(dir / "out");
@@ -80,7 +81,7 @@ TEST(FarmStore, ALockFileItMadeAndCouldNotUseIsRemovedOneThatWasThereIsLeft) {
   EXPECT_TRUE(std::filesystem::exists(lock));
 }
 
-TEST(FarmStore, ItsOwnFilesAreNeverLinksOrFifos) {
+TEST(FrameStore, ItsOwnFilesAreNeverLinksOrFifos) {
   // A link under the lock's or the journal's name was written through; a
   // FIFO under the journal's name hung the render that held the lock.
   test::ScratchDir dir;
@@ -101,7 +102,7 @@ TEST(FarmStore, ItsOwnFilesAreNeverLinksOrFifos) {
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "not lightcone's");
 }
 
-TEST(FarmStore, ResumeTrustsJournalAndFileSizes) {
+TEST(FrameStore, ResumeTrustsJournalAndFileSizes) {
   test::ScratchDir dir;
   const FrameSettings st{4, 2, 1, false};
   {
@@ -127,7 +128,7 @@ TEST(FarmStore, ResumeTrustsJournalAndFileSizes) {
 // A stored frame's line records who rendered it and the wall time from
 // its dispatch until its files were stored; a journal an earlier lightcone
 // wrote (lines without them) still resumes: its frames are done.
-TEST(FarmStore, AFrameRecordsWhoMadeItAndAnOlderJournalStillResumes) {
+TEST(FrameStore, AFrameRecordsWhoMadeItAndAnOlderJournalStillResumes) {
   test::ScratchDir dir;
   const FrameSettings st{4, 2, 1, false};
   const auto dispatched = std::chrono::steady_clock::now() - std::chrono::milliseconds(1500);
@@ -170,7 +171,7 @@ TEST(FarmStore, AFrameRecordsWhoMadeItAndAnOlderJournalStillResumes) {
   EXPECT_GE(resumed.frames.at(1).cost.wall_seconds, 0.0);
 }
 
-TEST(FarmStore, RefusalNamesTheChangedInputAndForceRendersOnlyThose) {
+TEST(FrameStore, RefusalNamesTheChangedInputAndForceRendersOnlyThose) {
   test::ScratchDir dir;
   const FrameSettings st{4, 2, 1, false};
   {
@@ -200,7 +201,7 @@ TEST(FarmStore, RefusalNamesTheChangedInputAndForceRendersOnlyThose) {
 
 // A file the journal never recorded (a catalogue now at another path) is
 // named, not "other inputs" (issue 43).
-TEST(FarmStore, RefusalNamesAFileTheFramesDidNotRead) {
+TEST(FrameStore, RefusalNamesAFileTheFramesDidNotRead) {
   test::ScratchDir dir;
   const FrameSettings st{4, 2, 1, false};
   {
@@ -219,7 +220,7 @@ TEST(FarmStore, RefusalNamesAFileTheFramesDidNotRead) {
       << e;
 }
 
-TEST(FarmStore, TemporariesOfAKilledRenderAreRemoved) {
+TEST(FrameStore, TemporariesOfAKilledRenderAreRemoved) {
   test::ScratchDir dir;
   std::ofstream(dir / "s.0003.exr.tmp-12345") << "half";
   std::ofstream(dir / "other.0003.exr.tmp-12345") << "not ours";
@@ -228,6 +229,26 @@ TEST(FarmStore, TemporariesOfAKilledRenderAreRemoved) {
   EXPECT_FALSE(std::filesystem::exists(dir / "s.0003.exr.tmp-12345"));
   EXPECT_TRUE(std::filesystem::exists(dir / "other.0003.exr.tmp-12345"));
   EXPECT_TRUE(std::filesystem::exists(dir / "s.notes.txt"));
+}
+
+TEST(FrameStore, MissingRowsComeFromTheNearestRenderedRow) {
+  FrameImage img;
+  img.width = 1;
+  img.height = 9;
+  img.rgb.assign(27, 0.0f);
+  img.alpha.assign(9, 1.0f);
+  for (int j : {0, 4, 8}) img.rgb[3 * j] = img.alpha[j] = static_cast<float>(j) / 8;
+  fill_missing_rows(img, {0, 4, 8});
+  std::vector<float> r;
+  for (int j = 0; j < 9; ++j) r.push_back(img.rgb[3 * j] * 8);
+  EXPECT_EQ(r, (std::vector<float>{0, 0, 0, 4, 4, 4, 4, 8, 8}));  // ties go to the row above
+  for (int j = 0; j < 9; ++j) EXPECT_EQ(img.alpha[j], img.rgb[3 * j]);  // alpha comes from the same row
+  FrameImage one = img;
+  one.alpha.clear();
+  one.rgb.assign(27, 0.0f);
+  one.rgb[3 * 5] = 5;
+  fill_missing_rows(one, {5});
+  for (int j = 0; j < 9; ++j) EXPECT_EQ(one.rgb[3 * j], 5.0f);
 }
 
 }  // namespace

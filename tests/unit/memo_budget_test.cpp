@@ -11,7 +11,7 @@
 namespace lc::farm {
 namespace {
 
-TEST(FarmMemoBudget, TheFilmFitsAndAnAbsurdFrameIsRefused) {
+TEST(MemoBudget, TheFilmFitsAndAnAbsurdFrameIsRefused) {
   const RenderSettings film{1280, 720, 2, false};
   // 44 bytes a sample: colour, the six layers (the first is the hit kind)
   // and the frame times it holds for; and 32 a pixel for its sky point
@@ -34,7 +34,7 @@ namespace {
 // A frame's peak, 108 bytes a pixel (docs/performance.md, change 43),
 // against what the machine has: a 16384^2 frame needs ~29 GB, refused on a
 // 24 GB machine with both figures and what to change; a film frame fits.
-TEST(FarmMemoBudget, AFrameLargerThanTheMemoryIsRefusedWithItsFigures) {
+TEST(MemoBudget, AFrameLargerThanTheMemoryIsRefusedWithItsFigures) {
   const MemoryBound machine{24ull << 30, "MemAvailable"};
   EXPECT_FALSE(frame_memory_refusal(RenderSettings{1920, 1080, 2, false}, machine).has_value());
   const auto why = frame_memory_refusal(RenderSettings{16384, 16384, 8, false}, machine);

@@ -31,7 +31,7 @@ using lc::test::error_of;
 using lc::test::ScratchDir;
 using Names = std::vector<std::string>;
 
-TEST(encode_writer, FileAppearsOnlyAfterFinish) {
+TEST(VideoWriter, FileAppearsOnlyAfterFinish) {
   ScratchDir d;
   const fs::path out = d / "clip.mp4";
   lc::VideoWriter w(out, 16, 8, lc::EncodeOptions{});
@@ -44,7 +44,7 @@ TEST(encode_writer, FileAppearsOnlyAfterFinish) {
   EXPECT_EQ(w.frames(), 3);
 }
 
-TEST(encode_writer, AbandonedWriterLeavesNothing) {
+TEST(VideoWriter, AbandonedWriterLeavesNothing) {
   ScratchDir d;
   {
     lc::VideoWriter w(d / "clip.mp4", 16, 8, lc::EncodeOptions{});
@@ -53,7 +53,7 @@ TEST(encode_writer, AbandonedWriterLeavesNothing) {
   EXPECT_TRUE(d.names().empty());
 }
 
-TEST(encode_writer, OddSizeIsPaddedToEven) {
+TEST(VideoWriter, OddSizeIsPaddedToEven) {
   ScratchDir d;
   lc::VideoWriter w(d / "odd.mp4", 15, 9, lc::EncodeOptions{});
   EXPECT_EQ(w.encoded_width(), 16);
@@ -62,7 +62,7 @@ TEST(encode_writer, OddSizeIsPaddedToEven) {
   w.finish();
 }
 
-TEST(encode_writer, WrongFrameSizeAndNoFramesAreRefused) {
+TEST(VideoWriter, WrongFrameSizeAndNoFramesAreRefused) {
   ScratchDir d;
   lc::VideoWriter w(d / "clip.mp4", 16, 8, lc::EncodeOptions{});
   const std::string m = error_of<std::invalid_argument>([&] { w.add(lc::Rgb8Image::filled(8, 8, 0, 0, 0)); });
@@ -71,7 +71,7 @@ TEST(encode_writer, WrongFrameSizeAndNoFramesAreRefused) {
   EXPECT_NE(none.find("no frames"), std::string::npos) << none;
 }
 
-TEST(encode_writer, UnwritableOutputIsNamed) {
+TEST(VideoWriter, UnwritableOutputIsNamed) {
   ScratchDir d;
   const fs::path out = d / "missing" / "clip.mp4";
   const std::string m = error_of<std::runtime_error>([&] { lc::VideoWriter(out, 16, 8, lc::EncodeOptions{}); });
@@ -82,7 +82,7 @@ TEST(encode_writer, UnwritableOutputIsNamed) {
   EXPECT_NE(dir.find("is a directory"), std::string::npos) << dir;
 }
 
-TEST(encode_writer, OptionsAreCheckedAgainstTheCodec) {
+TEST(VideoWriter, OptionsAreCheckedAgainstTheCodec) {
   using lc::Codec;
   EXPECT_EQ(lc::parse_codec("hevc"), Codec::hevc);
   EXPECT_NE(error_of<std::invalid_argument>([] { lc::parse_codec("h265"); }).find("--codec h265"), std::string::npos);
@@ -108,7 +108,7 @@ TEST(encode_writer, OptionsAreCheckedAgainstTheCodec) {
             std::string::npos);
 }
 
-TEST(encode_writer, FrameRatesAreExactFractions) {
+TEST(VideoWriter, FrameRatesAreExactFractions) {
   using lc::FrameRate;
   EXPECT_EQ(lc::parse_frame_rate("30", "--fps"), (FrameRate{30, 1}));
   EXPECT_EQ(lc::parse_frame_rate("30000/1001", "--fps"), (FrameRate{30000, 1001}));
@@ -151,7 +151,7 @@ TEST(encode_writer, FrameRatesAreExactFractions) {
   EXPECT_EQ(lc::frame_rate_near(-1.0), (FrameRate{0, 1}));
 }
 
-TEST(encode_writer, SizesTheEncodersCannotTakeAreRefusedBeforeOpening) {
+TEST(VideoWriter, SizesTheEncodersCannotTakeAreRefusedBeforeOpening) {
   using lc::Codec;
   // FFmpeg's av_image_check_size: (W+128)(H+128) < INT_MAX/8.
   EXPECT_FALSE(lc::size_refusal(Codec::h264, 16384, 16128));
@@ -187,7 +187,7 @@ TEST(encode_writer, SizesTheEncodersCannotTakeAreRefusedBeforeOpening) {
   EXPECT_TRUE(d.names().empty());
 }
 
-TEST(encode_writer, StillHoldsForTheFramesAsked) {
+TEST(VideoWriter, StillHoldsForTheFramesAsked) {
   ScratchDir d;
   int calls = 0, last_total = 0;
   const lc::EncodeResult r =
@@ -206,7 +206,7 @@ TEST(encode_writer, StillHoldsForTheFramesAsked) {
 // The showcase's videos and sheets are its folder's own files (issue 43):
 // a link planted under one of their names is replaced, never written
 // through; a user's -o still writes through a link, as a shell's `>`.
-TEST(encode_writer, AnOwnNameIsReplacedNotWrittenThroughALink) {
+TEST(VideoWriter, AnOwnNameIsReplacedNotWrittenThroughALink) {
   ScratchDir d;
   std::ofstream(d / "outside.txt") << "not lightcone's";
   const auto outside_unchanged = [&] {
@@ -237,7 +237,7 @@ TEST(encode_writer, AnOwnNameIsReplacedNotWrittenThroughALink) {
   EXPECT_FALSE(fs::is_symlink(d / "s.sheet.png"));
 }
 
-TEST(encode_writer, ProgressMayAbandonTheEncoding) {
+TEST(VideoWriter, ProgressMayAbandonTheEncoding) {
   // How a Ctrl-C reaches the encoder: the progress callback throws.
   ScratchDir d;
   struct Stop {};

@@ -16,7 +16,7 @@ namespace {
 
 const Look rendered{.exposure = -34.2, .view = View::gamut_safe, .white_balance = 5000, .saturation = 1.2, .bloom = 0.2};
 
-TEST(Develop, AnExposureShiftIsFromTheRendersExposureSoRunningAgainChangesNothing) {
+TEST(DevelopCommand, AnExposureShiftIsFromTheRendersExposureSoRunningAgainChangesNothing) {
   const Look once = developed_look(rendered, rendered, {}, 0.5);
   EXPECT_EQ(once.exposure, -33.7);  // as the decimals add, not -33.699999999999996
   const Look twice = developed_look(once, rendered, {}, 0.5);
@@ -26,7 +26,7 @@ TEST(Develop, AnExposureShiftIsFromTheRendersExposureSoRunningAgainChangesNothin
   EXPECT_EQ(developed_look(once, rendered, {}, -1.0).exposure, -35.2);
 }
 
-TEST(Develop, OtherFlagsStartFromTheLookLastAppliedAndKeepItsShift) {
+TEST(DevelopCommand, OtherFlagsStartFromTheLookLastAppliedAndKeepItsShift) {
   const Look shifted = developed_look(rendered, rendered, {}, 1.0);
   const Look filmic = developed_look(shifted, rendered, {{"view", "filmic"}}, std::nullopt);
   EXPECT_EQ(filmic.exposure, -33.2);
@@ -38,7 +38,7 @@ TEST(Develop, OtherFlagsStartFromTheLookLastAppliedAndKeepItsShift) {
   EXPECT_EQ(developed_look(shifted, rendered, {{"exposure", "-30"}}, 0.25).exposure, -29.75);
 }
 
-TEST(Develop, AShiftOutOfRangeNamesTheFlag) {
+TEST(DevelopCommand, AShiftOutOfRangeNamesTheFlag) {
   try {
     developed_look(rendered, rendered, {}, -40.0);
     FAIL() << "accepted an exposure of -74 stops";
