@@ -61,9 +61,16 @@ struct HitRecord {
   static constexpr std::uint32_t no_object = 0xffffffffu;
 };
 
-// A record and how the shade stage saw it: the sample's colour (linear
-// RGB) and, for a sky ray, where it went with the light model's ratios
-// there (for point stars; the renderer fills the point in its pixel).
+// What the shade stage makes of a record (render/shade.hpp): the sample's
+// colour (linear RGB) and, for a sky ray, where it went with the light
+// model's ratios there (for point stars; the renderer fills the point in
+// its pixel).
+struct Shading {
+  Color color{0.0f, 0.0f, 0.0f};
+  SkyPoint sky;
+};
+
+// A record and how the shade stage saw it.
 struct RaySample : HitRecord {
   Color color{0.0f, 0.0f, 0.0f};
   SkyPoint sky;

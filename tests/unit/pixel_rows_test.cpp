@@ -41,19 +41,19 @@ using KeptRecords = std::map<std::pair<int, std::size_t>, HitRecord>;
 struct KeepingTracer {
   KeptRecords* kept;
   template <class S>
-  void operator()(const SceneIn<S>& sc, int j, std::span<const std::size_t> which, std::span<const RayStart> starts,
-                  std::span<HitRecord> out) const {
+  void operator()(const SceneIn<S>& sc, std::span<const pixel_rows::SampleItem> items,
+                  std::span<const RayStart> starts, std::span<HitRecord> out) const {
     trace_records(sc, starts, out);
-    for (std::size_t n = 0; n < which.size(); ++n) (*kept)[{j, which[n]}] = out[n];
+    for (std::size_t n = 0; n < items.size(); ++n) (*kept)[{items[n].row, items[n].slot}] = out[n];
   }
 };
 // The trace stage replaced by the kept records: nothing is traced.
 struct ReplayTracer {
   const KeptRecords* kept;
   template <class S>
-  void operator()(const SceneIn<S>&, int j, std::span<const std::size_t> which, std::span<const RayStart>,
+  void operator()(const SceneIn<S>&, std::span<const pixel_rows::SampleItem> items, std::span<const RayStart>,
                   std::span<HitRecord> out) const {
-    for (std::size_t n = 0; n < which.size(); ++n) out[n] = kept->at({j, which[n]});
+    for (std::size_t n = 0; n < items.size(); ++n) out[n] = kept->at({items[n].row, items[n].slot});
   }
 };
 
