@@ -70,8 +70,12 @@ struct Shading {
   SkyPoint sky;
 };
 
-// A record and how the shade stage saw it.
-struct RaySample : HitRecord {
+// A record and how the shade stage saw it, for the tools that trace one ray
+// at a time (render/trace.hpp's trace_sample and trace_batch).  It holds
+// its record rather than being one, so a record is never copied into it by
+// slicing and a new field of either stays where it belongs.
+struct RaySample {
+  HitRecord hit;
   Color color{0.0f, 0.0f, 0.0f};
   SkyPoint sky;
 };

@@ -80,7 +80,7 @@ inline HitRecord no_ray_record() {
 // The same as a sample, for the tools that trace one pixel.
 inline RaySample no_ray_sample() {
   RaySample s;
-  static_cast<HitRecord&>(s) = no_ray_record();
+  s.hit = no_ray_record();
   return s;
 }
 

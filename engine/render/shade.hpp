@@ -38,10 +38,10 @@ Shading shade(const SceneIn<S>& sc, const HitRecord& hit) {
   return out;
 }
 
-// Fills s.color and s.sky from the record part of s (shade above).
+// Fills s.color and s.sky from its record (shade above).
 template <class S>
 void shade(const SceneIn<S>& sc, RaySample& s) {
-  const Shading sh = shade(sc, static_cast<const HitRecord&>(s));
+  const Shading sh = shade(sc, s.hit);
   s.color = sh.color;
   s.sky = sh.sky;
 }
