@@ -75,6 +75,7 @@ struct RowGrid {
     const auto [a, b] = first_sample(i);
     return static_cast<std::size_t>(b) * N + a;
   }
+  // The slots of pixel i's centre ray and of its star ray at instant k.
   std::size_t centre_slot(std::size_t i) const { return W * NN + i; }
   std::size_t star_slot(int k, std::size_t i) const { return W * NN + W + static_cast<std::size_t>(k) * W + i; }
   // Slots of a row whose frame has `instants` instants.
@@ -205,6 +206,7 @@ struct FrameScenes {
 
   // The index of the frame's own scene (= the number of instants).
   int own() const { return static_cast<int>(frame.instants.size()); }
+  // The scene an item of scene index k sees (SampleItem::scene).
   const SceneIn<S>& scene_at(int k) const { return k < own() ? frame.instants[static_cast<std::size_t>(k)] : frame; }
   // f(k, scene k, its camera) for every scene, the frame's own last.
   template <class F>
@@ -232,6 +234,7 @@ struct RowTimes {
                       static_cast<int>(grid.first_index(i)), grid.first_sample(i).first != 0,
                       std::span<int>(scene.data() + i * grid.NN, grid.NN));
   }
+  // The scene of pixel i's first sample (its ray for point stars).
   int of_first(const RowGrid& grid, std::size_t i) const { return scene[i * grid.NN + grid.first_index(i)]; }
 };
 
@@ -300,6 +303,8 @@ class RowItems {
   }
 
  private:
+  // An item of row j, pixel i at `slot`, through image point p at the
+  // moment of the scene it sees.
   void add(int j, std::size_t i, std::size_t slot, CameraSample p, int scene, bool sky) {
     p.time = scenes_.scene_at(scene).moment;
     items_.push_back({p, j, i, slot, scene, sky});
@@ -332,9 +337,12 @@ struct TraceRays {
 template <class S, class C, class Tracer>
 class RayStages {
  public:
+  // Rays counted into `stats`; scenes and tracer outlive the stages.
   RayStages(const FrameScenes<S, C>& scenes, const Tracer& tracer, RenderStats& stats)
       : scenes_(scenes), tracer_(tracer), stats_(stats) {}
 
+  // The samples of `items` into out[item.slot]; scene by scene, since a
+  // batch of rays is traced in one scene.
   void operator()(std::span<SampleItem> items, std::vector<FrameSample>& out) {
     scenes_.each([&](int k, const SceneIn<S>& at, const auto& camera) {
       generate(k, at, camera, items, out);
@@ -407,6 +415,8 @@ class RayStages {
 template <class Next>
 class MemoStage {
  public:
+  // Row j of `memo` (none: every item goes on) for the frame sc, whose
+  // rows are `width` pixels; `next` and `stats` outlive the stage.
   template <class S>
   MemoStage(SampleMemo* memo, const SceneIn<S>& sc, int j, std::size_t width, Next& next, RenderStats& stats)
       : next_(next), stats_(stats), width_(width) {
