@@ -26,7 +26,7 @@ AccuracyReport compare_samples(const std::vector<RaySample>& reference, const st
   for (long p = 0; p < rep.pixels; ++p) {
     const RaySample& a = reference[p];
     const RaySample& b = test[p];
-    if (a.kind != b.kind) {
+    if (a.hit.kind != b.hit.kind) {
       ++rep.kind_mismatches;
       continue;
     }
@@ -34,14 +34,14 @@ AccuracyReport compare_samples(const std::vector<RaySample>& reference, const st
     const Disk::Params* d = nullptr;
     for (const ObjectSpec& o : scene.objects)
       if (!d) d = std::get_if<Disk::Params>(&o);
-    if (a.kind == Disk::hit_kind && d) {
+    if (a.hit.kind == Disk::hit_kind && d) {
       auto cell = [&](const RaySample& s) {
-        return std::pair{static_cast<long>(std::floor((s.r - d->inner) / (d->outer - d->inner) * d->rings)),
-                         static_cast<long>(std::floor(s.phi / two_pi * d->sectors))};
+        return std::pair{static_cast<long>(std::floor((s.hit.r - d->inner) / (d->outer - d->inner) * d->rings)),
+                         static_cast<long>(std::floor(s.hit.phi / two_pi * d->sectors))};
       };
       if (cell(a) != cell(b)) ++rep.cell_mismatches;
-      dr.push_back(std::abs(a.r - b.r));
-      dphi.push_back(std::abs(std::remainder(a.phi - b.phi, two_pi)));
+      dr.push_back(std::abs(a.hit.r - b.hit.r));
+      dphi.push_back(std::abs(std::remainder(a.hit.phi - b.hit.phi, two_pi)));
       ++rep.disk_pixels;
     } else if (a.color != b.color) {
       ++rep.cell_mismatches;

@@ -66,7 +66,7 @@ class HamiltonianRay {
 
   const Vec4& momentum() const { return p0_; }
   // Whether the objects work out for how long another frame could reuse
-  // the ray (RayHit::reuse_window); if not, a ray that comes near a moving
+  // the ray (HitRecord::reuse_window); if not, a ray that comes near a moving
   // object's path gets 0 at once and the others stay unlimited.
   void track_reuse_windows(bool track) { track_windows_ = track && track_windows_; }
   // What run_rays starts the ray with.

@@ -61,10 +61,21 @@ struct HitRecord {
   static constexpr std::uint32_t no_object = 0xffffffffu;
 };
 
-// A record and how the shade stage saw it: the sample's colour (linear
-// RGB) and, for a sky ray, where it went with the light model's ratios
-// there (for point stars; the renderer fills the point in its pixel).
-struct RaySample : HitRecord {
+// What the shade stage makes of a record (render/shade.hpp): the sample's
+// colour (linear RGB) and, for a sky ray, where it went with the light
+// model's ratios there (for point stars; the renderer fills the point in
+// its pixel).
+struct Shading {
+  Color color{0.0f, 0.0f, 0.0f};
+  SkyPoint sky;
+};
+
+// A record and how the shade stage saw it, for the tools that trace one ray
+// at a time (render/trace.hpp's trace_sample and trace_batch).  It holds
+// its record rather than being one, so a record is never copied into it by
+// slicing and a new field of either stays where it belongs.
+struct RaySample {
+  HitRecord hit;
   Color color{0.0f, 0.0f, 0.0f};
   SkyPoint sky;
 };

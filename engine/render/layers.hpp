@@ -64,14 +64,23 @@ struct FrameSample {
   HitKind kind = HitKind::gave_up;
   SkyPoint sky{};
 };
-inline FrameSample frame_sample(const RaySample& s) { return {s.color, layer_values(s), s.kind, s.sky}; }
+inline FrameSample frame_sample(const HitRecord& hit, const Shading& s) {
+  return {s.color, layer_values(hit), hit.kind, s.sky};
+}
 
-// The sample of an image point the camera has no ray through: black, kind
-// no_ray, never traced.
+// The record of an image point the camera has no ray through: kind no_ray,
+// never traced (and so black: Shading's defaults).
+inline HitRecord no_ray_record() {
+  HitRecord r;
+  r.kind = HitKind::no_ray;
+  r.reason = StopReason::no_ray;
+  return r;
+}
+
+// The same as a sample, for the tools that trace one pixel.
 inline RaySample no_ray_sample() {
   RaySample s;
-  s.kind = HitKind::no_ray;
-  s.reason = StopReason::no_ray;
+  s.hit = no_ray_record();
   return s;
 }
 

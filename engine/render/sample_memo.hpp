@@ -5,16 +5,17 @@
 // stays clear of moving objects' paths: the same ray, traced the same way,
 // with its time shifted.  Such samples are kept per row, and a later frame
 // of the same key takes them instead of tracing them again while its time
-// is within the sample's reuse window (RayHit::reuse_window: for as long as
+// is within the sample's reuse window (HitRecord::reuse_window: for as long as
 // every moving object it came near stays clear of it; a ray that entered
 // an object's tube is always traced).  Holds and a static observer
 // watching a moving sphere (docs/performance.md, changes 25 and 34) cost
 // only the rays that can change.
 //
-// Kept per (row, sample index) for one RenderSettings: sample g of a row is
-// pixel g / (N N)'s grid sample g % (N N), and W N N + i the centre ray of
-// pixel i that the layers take.  Thread-safe: one thread holds a row at a
-// time.
+// Kept per (row, slot) for one RenderSettings, the slots of a row's samples
+// (render/pixel_rows.hpp, RowGrid): slot g is pixel g / (N N)'s grid sample
+// g % (N N), and W N N + i the centre ray of pixel i that the layers take.
+// The renderer reads and fills it in one stage in front of its ray stages
+// (pixel_rows::MemoStage).  Thread-safe: one thread holds a row at a time.
 
 #include <cmath>
 #include <cstdint>
@@ -78,7 +79,7 @@ class SampleMemo {
       slot_->sky[i] = p;
     }
     // Sample g of this frame, kept for frames within `window` of its time
-    // (RayHit::reuse_window; <= 0: not kept).  The window is stored in
+    // (HitRecord::reuse_window; <= 0: not kept).  The window is stored in
     // floats, rounded inwards.
     void put(std::size_t g, const FrameSample& s, float window) {
       Kept k{s.color, s.layers, 1.0f, 0.0f};

@@ -15,27 +15,35 @@
 
 namespace lc {
 
-// Fills s.color and s.sky (where a sky ray went and the light model's
-// ratios there; untouched fields of a non-sky ray say "not the sky") from
-// the record part of s.  Only rays that reached the first end have a sky
+// The colour of the record `hit` in the scene sc, and for a sky ray where it
+// went with the light model's ratios there (untouched fields of a non-sky
+// ray say "not the sky").  Only rays that reached the first end have a sky
 // point: point stars (the star stage) are drawn on the scene's own sky,
 // never across a throat into another end's directions.
 template <class S>
-void shade(const SceneIn<S>& sc, RaySample& s) {
-  s.color = {0.0f, 0.0f, 0.0f};
-  s.sky = SkyPoint{};
-  if (s.kind == HitKind::sky) {
-    const SeenShift shift = sc.light.seen(s.g, s.g_gravity);
-    s.color = shift.texture(sc.sky_of(s.spacetime_end).color(s.sky_theta, s.sky_phi));
-    if (s.spacetime_end != 0) return;
-    s.sky.theta = s.sky_theta;
-    s.sky.phi = s.sky_phi;
-    s.sky.color = static_cast<float>(shift.color);
-    s.sky.beaming = static_cast<float>(shift.beaming);
-  } else if (s.object != HitRecord::no_object) {
-    with_object(sc.objects, s.object,
-                [&](const auto& o) { s.color = o.color_at(s.surface, sc.light.seen(s.g, s.g_gravity)); });
+Shading shade(const SceneIn<S>& sc, const HitRecord& hit) {
+  Shading out;
+  if (hit.kind == HitKind::sky) {
+    const SeenShift shift = sc.light.seen(hit.g, hit.g_gravity);
+    out.color = shift.texture(sc.sky_of(hit.spacetime_end).color(hit.sky_theta, hit.sky_phi));
+    if (hit.spacetime_end != 0) return out;
+    out.sky.theta = hit.sky_theta;
+    out.sky.phi = hit.sky_phi;
+    out.sky.color = static_cast<float>(shift.color);
+    out.sky.beaming = static_cast<float>(shift.beaming);
+  } else if (hit.object != HitRecord::no_object) {
+    with_object(sc.objects, hit.object,
+                [&](const auto& o) { out.color = o.color_at(hit.surface, sc.light.seen(hit.g, hit.g_gravity)); });
   }
+  return out;
+}
+
+// Fills s.color and s.sky from its record (shade above).
+template <class S>
+void shade(const SceneIn<S>& sc, RaySample& s) {
+  const Shading sh = shade(sc, s.hit);
+  s.color = sh.color;
+  s.sky = sh.sky;
 }
 
 }  // namespace lc

@@ -104,8 +104,7 @@ void trace_records(const SceneIn<S>& sc, std::span<const RayStart> starts, std::
 template <class S, class OnStep>
 RaySample trace_sample(const SceneIn<S>& sc, const RayStart& start, OnStep&& on_step) {
   RaySample out;
-  HitRecord& record = out;
-  detail::trace_rays<1>(sc, std::span<const RayStart>(&start, 1), std::span<HitRecord>(&record, 1), on_step);
+  detail::trace_rays<1>(sc, std::span<const RayStart>(&start, 1), std::span<HitRecord>(&out.hit, 1), on_step);
   shade(sc, out);
   return out;
 }
@@ -125,11 +124,11 @@ void trace_batch(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<Ray
   std::vector<HitRecord> records(dirs.size());
   for (std::size_t k = 0; k < dirs.size(); ++k) {
     starts[k] = {&sc.eye, dirs[k]};
-    records[k].reuse_window = out[k].reuse_window;
+    records[k].reuse_window = out[k].hit.reuse_window;
   }
   trace_records(sc, std::span<const RayStart>(starts), std::span<HitRecord>(records));
   for (std::size_t k = 0; k < dirs.size(); ++k) {
-    static_cast<HitRecord&>(out[k]) = records[k];
+    out[k].hit = records[k];
     shade(sc, out[k]);
   }
 }

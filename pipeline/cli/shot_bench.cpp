@@ -38,7 +38,7 @@ std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int 
           const std::span<RaySample> row(out.data() + j * width, static_cast<std::size_t>(width));
           trace_batch(sc, std::span<const Vec3>(row_dirs), row);
           long local = 0;
-          for (const RaySample& s : row) local += s.steps;
+          for (const RaySample& s : row) local += s.hit.steps;
           counted[worker] += local;
         },
         scene);

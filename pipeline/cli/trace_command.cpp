@@ -32,10 +32,11 @@ std::string json_float(float v) { return std::isfinite(v) ? fmt::format("{}", v)
 // `end`: the spacetime's end a sky ray escaped to (empty for other rays).
 std::string text_report(int f, int i, int j, const RaySample& s, std::string_view end) {
   std::string values;
-  for (const LayerSpec& l : layers) values += fmt::format("{}{} {:.9g}", values.empty() ? "" : ", ", l.name, l.value(s));
+  for (const LayerSpec& l : layers)
+    values += fmt::format("{}{} {:.9g}", values.empty() ? "" : ", ", l.name, l.value(s.hit));
   return fmt::format("trace: frame {} pixel {},{}: hit {}{}, stop reason {}, {} steps; {}; colour {:.4g} {:.4g} {:.4g}\n",
-                     f, i, j, hit_kind_name(s.kind), end.empty() ? "" : fmt::format(" at {}", end), to_string(s.reason),
-                     s.steps, values, s.color[0], s.color[1], s.color[2]);
+                     f, i, j, hit_kind_name(s.hit.kind), end.empty() ? "" : fmt::format(" at {}", end),
+                     to_string(s.hit.reason), s.hit.steps, values, s.color[0], s.color[1], s.color[2]);
 }
 
 // The same as one JSON object, for scripts: every number exact (layers and
@@ -43,13 +44,14 @@ std::string text_report(int f, int i, int j, const RaySample& s, std::string_vie
 std::string json_report(int f, int i, int j, const RaySample& s, std::string_view end) {
   std::string values;
   for (const LayerSpec& l : layers)
-    values += fmt::format("{}{}: {}", values.empty() ? "" : ", ", json_string(std::string(l.name)), json_float(l.value(s)));
+    values += fmt::format("{}{}: {}", values.empty() ? "" : ", ", json_string(std::string(l.name)),
+                          json_float(l.value(s.hit)));
   return fmt::format(
       "{{\"frame\": {}, \"pixel\": [{}, {}], \"hit\": {}, \"end\": {}, \"stop_reason\": {}, \"steps\": {}, "
       "\"layers\": {{{}}}, \"colour\": [{}, {}, {}]}}\n",
-      f, i, j, json_string(std::string(hit_kind_name(s.kind))), end.empty() ? "null" : json_string(std::string(end)),
-      json_string(std::string(to_string(s.reason))), s.steps, values, json_float(s.color[0]), json_float(s.color[1]),
-      json_float(s.color[2]));
+      f, i, j, json_string(std::string(hit_kind_name(s.hit.kind))), end.empty() ? "null" : json_string(std::string(end)),
+      json_string(std::string(to_string(s.hit.reason))), s.hit.steps, values, json_float(s.color[0]),
+      json_float(s.color[1]), json_float(s.color[2]));
 }
 
 }  // namespace
@@ -95,14 +97,14 @@ int run_trace(const TraceCommand& cmd) {
         // the observer).
         EyePool eyes;
         RaySample r = trace_sample(sc, eyes.start(sc, *ray), [&](const RayState& y, double sigma) { record(y, sigma); });
-        record(r.end, r.lambda_end);
-        if (r.kind == HitKind::sky) end = std::decay_t<decltype(sc.spacetime)>::ends[r.spacetime_end].name;
+        record(r.hit.end, r.hit.lambda_end);
+        if (r.hit.kind == HitKind::sky) end = std::decay_t<decltype(sc.spacetime)>::ends[r.hit.spacetime_end].name;
         return r;
       },
       scene);
-  path.reason = s.reason;
+  path.reason = s.hit.reason;
   path.end = end;
-  path.steps = s.steps;
+  path.steps = s.hit.steps;
   // With --json standard output is the report's, so the path goes only
   // to a file named with -o.
   if (!cmd.json || cmd.output) {

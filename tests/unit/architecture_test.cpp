@@ -171,7 +171,7 @@ TEST(Architecture, TheSamplePathTableNamesTheStageFiles) {
       EXPECT_TRUE(fs::exists(root / "engine" / (*f)[1].str())) << "stage " << stage << ": engine/" << (*f)[1] << " does not exist";
     EXPECT_GT(named, 0) << "stage " << stage << " names no file";
   }
-  for (const char* s : {"plan", "generate", "trace", "shade", "reconstruct"})
+  for (const char* s : {"plan", "recall", "generate", "trace", "shade", "keep", "reconstruct"})
     EXPECT_TRUE(stages.count(s)) << "the sample-path table has no stage '" << s << "'";
 }
 

@@ -212,9 +212,9 @@ TEST(Ends, RaysThroughTheThroatSeeTheOtherSky) {
   for (double f : {0.0, 0.5, 0.98}) {
     for (const RaySample& s : traced(sc, at_angle(f * edge))) {
       SCOPED_TRACE(f);
-      EXPECT_EQ(s.kind, HitKind::sky);
-      EXPECT_EQ(s.reason, StopReason::escaped);
-      EXPECT_EQ(s.spacetime_end, 1);
+      EXPECT_EQ(s.hit.kind, HitKind::sky);
+      EXPECT_EQ(s.hit.reason, StopReason::escaped);
+      EXPECT_EQ(s.hit.spacetime_end, 1);
       EXPECT_NEAR(s.color[0], 0.75f, 1e-6f);
       EXPECT_LT(s.sky.theta, 0.0) << "no point stars across the throat";
     }
@@ -222,7 +222,7 @@ TEST(Ends, RaysThroughTheThroatSeeTheOtherSky) {
   for (double f : {1.02, 1.5, 3.0}) {
     for (const RaySample& s : traced(sc, at_angle(f * edge))) {
       SCOPED_TRACE(f);
-      EXPECT_EQ(s.spacetime_end, 0);
+      EXPECT_EQ(s.hit.spacetime_end, 0);
       EXPECT_NEAR(s.color[0], 0.25f, 1e-6f);
       EXPECT_GE(s.sky.theta, 0.0);
     }
@@ -231,13 +231,13 @@ TEST(Ends, RaysThroughTheThroatSeeTheOtherSky) {
   // side's chart (the inversion keeps the axis), to the escape radius's
   // remaining bending (none, on the axis) and the ray tolerance.
   const RaySample radial = traced(sc, {{-1.0, 0.0, 0.0}})[0];
-  EXPECT_EQ(radial.spacetime_end, 1);
-  EXPECT_NEAR(radial.sky_theta, pi / 2, 1e-6);
-  EXPECT_NEAR(std::remainder(radial.sky_phi, two_pi), 0.0, 1e-6);
+  EXPECT_EQ(radial.hit.spacetime_end, 1);
+  EXPECT_NEAR(radial.hit.sky_theta, pi / 2, 1e-6);
+  EXPECT_NEAR(std::remainder(radial.hit.sky_phi, two_pi), 0.0, 1e-6);
   // Away from the throat: this side's sky straight ahead.
   const RaySample away = traced(sc, {{1.0, 0.0, 0.0}})[0];
-  EXPECT_EQ(away.spacetime_end, 0);
-  EXPECT_NEAR(away.sky_theta, pi / 2, 1e-6);
+  EXPECT_EQ(away.hit.spacetime_end, 0);
+  EXPECT_NEAR(away.hit.sky_theta, pi / 2, 1e-6);
 }
 
 // Beyond the throat (rho = 0.2 b, l = -2.4 b) an observer may stand: it
@@ -248,9 +248,9 @@ TEST(Ends, AnObserverBeyondTheThroatSeesTheSkiesTheOtherWayRound) {
   EXPECT_TRUE(Wormhole(1.0).why_no_observer({0.0, 0.2, 0.0, 0.0}).empty());
   const SceneIn<Wormhole> sc = wormhole_scene(0.2, res);
   const std::vector<RaySample> s = traced(sc, {{1.0, 0.0, 0.0}, {-1.0, 0.0, 0.0}});
-  EXPECT_EQ(s[0].spacetime_end, 0);
+  EXPECT_EQ(s[0].hit.spacetime_end, 0);
   EXPECT_NEAR(s[0].color[0], 0.25f, 1e-6f);
-  EXPECT_EQ(s[1].spacetime_end, 1);
+  EXPECT_EQ(s[1].hit.spacetime_end, 1);
   EXPECT_NEAR(s[1].color[0], 0.75f, 1e-6f);
 }
 
@@ -260,7 +260,7 @@ TEST(Ends, AnEndWithoutASkyOfItsOwnSeesTheScenesSky) {
   SceneIn<Wormhole> sc = wormhole_scene(10.0 + std::sqrt(101.0), res);
   sc.end_skies.clear();
   const RaySample s = traced(sc, {{-1.0, 0.0, 0.0}})[0];
-  EXPECT_EQ(s.spacetime_end, 1);
+  EXPECT_EQ(s.hit.spacetime_end, 1);
   EXPECT_NEAR(s.color[0], 0.25f, 1e-6f);
 }
 

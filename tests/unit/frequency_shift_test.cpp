@@ -103,15 +103,16 @@ int check_disk_against_cunningham(double a, double theta_deg, KerrChart chart) {
             return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), [](const RayState&, double) {});
           },
           scene);
-      if (s.kind != Disk::hit_kind) continue;
-      const auto& y = s.end;
+      if (s.hit.kind != Disk::hit_kind) continue;
+      const auto& y = s.hit.end;
       const double p_t = y[4], p_phi = y[1] * y[6] - y[2] * y[5];
       const double lambda = -p_phi / p_t;
-      const double r = s.r, omega = 1 / (r * std::sqrt(r) + a);
+      const double r = s.hit.r, omega = 1 / (r * std::sqrt(r) + a);
       const Equatorial g = equatorial_metric(1, a, r);
       const double expected = std::sqrt(-g.tt - 2 * omega * g.tp - omega * omega * g.pp) / (1 - omega * lambda) /
                               std::sqrt(-gtt_obs);
-      EXPECT_NEAR(s.g, expected, 1e-9 * expected) << "a " << a << " theta " << theta_deg << " pixel " << i << "," << j;
+      EXPECT_NEAR(s.hit.g, expected, 1e-9 * expected)
+          << "a " << a << " theta " << theta_deg << " pixel " << i << "," << j;
       ++checked;
     }
   return checked;
@@ -144,11 +145,11 @@ TEST(FrequencyShift, TheSkyIsBlueshiftedByTheStaticObserversLapse) {
       for (int i = 0; i < 4; ++i) {
         const RaySample s = std::visit(
             [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{}); }, scene);
-        if (s.kind == HitKind::horizon) {
-          EXPECT_EQ(s.g, 0.0);
+        if (s.hit.kind == HitKind::horizon) {
+          EXPECT_EQ(s.hit.g, 0.0);
         }
-        if (s.kind != HitKind::sky) continue;
-        EXPECT_NEAR(s.g, 1 / std::sqrt(1 - 2.0 / 10), 1e-12);
+        if (s.hit.kind != HitKind::sky) continue;
+        EXPECT_NEAR(s.hit.g, 1 / std::sqrt(1 - 2.0 / 10), 1e-12);
         ++sky;
       }
     EXPECT_GT(sky, 8);
@@ -160,8 +161,8 @@ TEST(FrequencyShift, TheSkyIsBlueshiftedByTheStaticObserversLapse) {
   const Scene scene = build_scene(di, 1, 1, res);
   const RaySample s =
       std::visit([&](const auto& sc) { return trace_sample(sc, sc.camera.direction(0.5, 0.5), NoPath{}); }, scene);
-  ASSERT_EQ(s.kind, HitKind::sky);
-  EXPECT_NEAR(s.g, Dihole(0.4, 0.4, 1.0).potential({0, 6, 2, 1}), 1e-12);
+  ASSERT_EQ(s.hit.kind, HitKind::sky);
+  EXPECT_NEAR(s.hit.g, Dihole(0.4, 0.4, 1.0).potential({0, 6, 2, 1}), 1e-12);
 }
 
 // The sample of the ray through the centre of a 2x2 image of fs.
@@ -184,8 +185,8 @@ TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
   sp.placement.at = Vec4{0, 0, 0, 0};
   rest.objects.push_back(sp);
   const RaySample at_rest = centre_sample(rest);
-  ASSERT_EQ(at_rest.kind, Sphere::hit_kind);
-  EXPECT_EQ(at_rest.g, 1.0);
+  ASSERT_EQ(at_rest.hit.kind, Sphere::hit_kind);
+  EXPECT_EQ(at_rest.hit.g, 1.0);
 
   // Moving at v = 0.6 straight at the observer: sqrt((1 + v) / (1 - v)) = 2
   // (tolerance 1e-9: the worldline's 4-velocity is integrated, constant in
@@ -194,8 +195,8 @@ TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
     SceneSpec moving = fs;
     moving.objects.push_back(test::falling_sphere(Minkowski{}, {-300, 0, -180 * v / 0.6, 0}, {0, v, 0}, 400, 1.0));
     const RaySample s = centre_sample(moving);
-    ASSERT_EQ(s.kind, Sphere::hit_kind) << "v " << v;
-    EXPECT_NEAR(s.g, std::sqrt((1 + v) / (1 - v)), 1e-9) << "v " << v;
+    ASSERT_EQ(s.hit.kind, Sphere::hit_kind) << "v " << v;
+    EXPECT_NEAR(s.hit.g, std::sqrt((1 + v) / (1 - v)), 1e-9) << "v " << v;
   }
 
   // An observer moving at 0.6 towards where it looks sees the sky ahead
@@ -217,8 +218,8 @@ TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
     ride.proper_time = 0;
     runner.observer = ride;
     const RaySample s = centre_sample(runner);
-    ASSERT_EQ(s.kind, HitKind::sky);
-    EXPECT_NEAR(s.g, expected, 1e-12);
+    ASSERT_EQ(s.hit.kind, HitKind::sky);
+    EXPECT_NEAR(s.hit.g, expected, 1e-12);
   }
 }
 
@@ -297,8 +298,8 @@ TEST(GlowingDisk, InPhysicalUnitsItsLightIsInCandelasPerSquareMetre) {
     for (int i = 0; i < 12; ++i) {
       const RaySample s = std::visit(
           [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{}); }, scene);
-      if (s.kind != Disk::hit_kind) continue;
-      const double expected = 683 * blackbody_xyz(flux.temperature(s.r, 4.3e6, 1e-8)).Y;
+      if (s.hit.kind != Disk::hit_kind) continue;
+      const double expected = 683 * blackbody_xyz(flux.temperature(s.hit.r, 4.3e6, 1e-8)).Y;
       EXPECT_NEAR(luminance(s.color), expected, 1e-3 * expected) << i << "," << j;
       ++disk;
     }

@@ -28,7 +28,7 @@ TEST(Layers, AFrameCarriesEveryLayerInTableOrder) {
   const FrameImage f = make_frame(RenderSettings{4, 2, 1, true});
   ASSERT_EQ(f.layers.size(), layer_count);
   for (std::size_t k = 0; k < layer_count; ++k) EXPECT_EQ(f.layers[k].name, layers[k].name);
-  RaySample s;
+  HitRecord s;
   s.kind = HitKind::horizon;
   s.r = 2.5;
   s.order = 3;

@@ -103,7 +103,7 @@ TEST(Light, AStaticObserversSkyShiftIsAllGravitational) {
       fs.light = light;
       int sky = 0;
       for (const RaySample& s : samples(fs, 4, chart))
-        if (s.kind == HitKind::sky) {
+        if (s.hit.kind == HitKind::sky) {
           expect_beamed(s.color, k, "sky");
           ++sky;
         }
@@ -136,14 +136,14 @@ TEST(Light, AZamoOnTheAxisSeesTheDiskShiftedByTheLapses) {
     fs.light = shifted(0, 1, 1, 0);
     int disk = 0;
     for (const RaySample& s : samples(fs, 12, chart))
-      if (s.kind == Disk::hit_kind) {
-        expect_beamed(s.color, alpha_disk(s.r) / alpha_obs, "gravitational");
+      if (s.hit.kind == Disk::hit_kind) {
+        expect_beamed(s.color, alpha_disk(s.hit.r) / alpha_obs, "gravitational");
         ++disk;
       }
     EXPECT_GT(disk, 30);
     fs.light = shifted(0, 1, 0, 1);
     for (const RaySample& s : samples(fs, 12, chart))
-      if (s.kind == Disk::hit_kind) expect_beamed(s.color, s.g * alpha_obs / alpha_disk(s.r), "kinematic");
+      if (s.hit.kind == Disk::hit_kind) expect_beamed(s.color, s.hit.g * alpha_obs / alpha_disk(s.hit.r), "kinematic");
   }
 }
 
@@ -173,8 +173,8 @@ TEST(Light, ARunnersShiftIsAllKinematic) {
   fs.objects.push_back(ball);
   fs.light = shifted(0, 1, 0, 1);
   const RaySample hit = samples(fs, 1)[0];
-  ASSERT_EQ(hit.kind, Sphere::hit_kind);
-  EXPECT_NEAR(hit.g, 2.0, 1e-9);
+  ASSERT_EQ(hit.hit.kind, Sphere::hit_kind);
+  EXPECT_NEAR(hit.hit.g, 2.0, 1e-9);
   expect_beamed(hit.color, 2.0, "kinematic");
   fs.light = shifted(0, 1, 1, 0);
   expect_beamed(samples(fs, 1)[0].color, 1.0, "gravitational");
@@ -191,7 +191,7 @@ TEST(Light, ShiftedTexturesAreSeenThroughTheSpectra) {
   const Color expected = SpectralShift()(plain, 1 / std::sqrt(1 - 2.0 / 10));
   for (const KerrChart chart : {KerrChart::boyer_lindquist_mino, KerrChart::kerr_schild})
     for (const RaySample& s : samples(fs, 3, chart))
-      if (s.kind == HitKind::sky)
+      if (s.hit.kind == HitKind::sky)
         for (int i = 0; i < 3; ++i) EXPECT_NEAR(s.color[i], expected[i], 1e-6 * expected[i]);
 }
 

@@ -8,9 +8,13 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -41,19 +45,19 @@ using KeptRecords = std::map<std::pair<int, std::size_t>, HitRecord>;
 struct KeepingTracer {
   KeptRecords* kept;
   template <class S>
-  void operator()(const SceneIn<S>& sc, int j, std::span<const std::size_t> which, std::span<const RayStart> starts,
-                  std::span<HitRecord> out) const {
+  void operator()(const SceneIn<S>& sc, std::span<const pixel_rows::SampleItem> items,
+                  std::span<const RayStart> starts, std::span<HitRecord> out) const {
     trace_records(sc, starts, out);
-    for (std::size_t n = 0; n < which.size(); ++n) (*kept)[{j, which[n]}] = out[n];
+    for (std::size_t n = 0; n < items.size(); ++n) (*kept)[{items[n].row, items[n].slot}] = out[n];
   }
 };
 // The trace stage replaced by the kept records: nothing is traced.
 struct ReplayTracer {
   const KeptRecords* kept;
   template <class S>
-  void operator()(const SceneIn<S>&, int j, std::span<const std::size_t> which, std::span<const RayStart>,
+  void operator()(const SceneIn<S>&, std::span<const pixel_rows::SampleItem> items, std::span<const RayStart>,
                   std::span<HitRecord> out) const {
-    for (std::size_t n = 0; n < which.size(); ++n) out[n] = kept->at({j, which[n]});
+    for (std::size_t n = 0; n < items.size(); ++n) out[n] = kept->at({items[n].row, items[n].slot});
   }
 };
 
@@ -217,6 +221,31 @@ TEST(PixelRows, AMovedEyeSeesTheImageShiftAsFlatSpaceSays) {
     EXPECT_NEAR(first + 0.5, column_of(centre - half), 1.0) << "d = " << d;
     EXPECT_NEAR(last + 0.5, column_of(centre + half), 1.0) << "d = " << d;
   }
+}
+
+// The row loop is the stages called in order, on one screen, and a blurred
+// frame has no branch of its own in it (only its items differ), so that a
+// new per-sample feature becomes a field of SampleItem or a stage rather
+// than one more branch of the loop (issue 44: it was 101 lines, `blurred`
+// tested in seven places).
+TEST(PixelRows, TheRowLoopFitsOnAScreenWithNoBranchForBlur) {
+  std::ifstream in(std::filesystem::path(LIGHTCONE_SOURCE_DIR) / "engine/render/pixel_rows.hpp");
+  ASSERT_TRUE(in) << "engine/render/pixel_rows.hpp";
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t from = text.find("RenderStats render_rows_with(");
+  ASSERT_NE(from, std::string::npos) << "render_rows_with is not in render/pixel_rows.hpp";
+  const std::size_t to = text.find("\n}\n", from);
+  ASSERT_NE(to, std::string::npos);
+  int lines = 0;
+  for (std::size_t at = from; at < to;) {
+    const std::size_t end = text.find('\n', at);
+    const std::string line = text.substr(at, end - at);
+    const std::string code = line.substr(0, line.find("//"));
+    EXPECT_EQ(code.find("blur"), std::string::npos) << "the row loop branches on blur: " << line;
+    ++lines;
+    at = end + 1;
+  }
+  EXPECT_LE(lines + 1, 40) << "the row loop no longer fits on a screen";
 }
 
 }  // namespace

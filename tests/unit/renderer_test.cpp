@@ -71,9 +71,10 @@ TEST(Renderer, KerrFastPathAgreesWithKerrSchild) {
     RecordProperty(theta == 0 ? "axis_dr_max" : "inclined_dr_max", std::to_string(a.dr_max));
     double worst_t = 0;
     for (std::size_t k = 0; k < ks.size(); ++k) {
-      if (ks[k].kind == Disk::hit_kind || ks[k].kind == HitKind::horizon) worst_t = std::max(worst_t, std::abs(ks[k].t - bl[k].t));
-      EXPECT_EQ(ks[k].order, bl[k].order) << "pixel " << k;
-      if (ks[k].kind == HitKind::sky) {
+      if (ks[k].hit.kind == Disk::hit_kind || ks[k].hit.kind == HitKind::horizon)
+        worst_t = std::max(worst_t, std::abs(ks[k].hit.t - bl[k].hit.t));
+      EXPECT_EQ(ks[k].hit.order, bl[k].hit.order) << "pixel " << k;
+      if (ks[k].hit.kind == HitKind::sky) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(ks[k].color[c], bl[k].color[c], 1e-6) << "pixel " << k;
       }
     }
@@ -95,11 +96,11 @@ TEST(Renderer, SchwarzschildShadowAngularRadius) {
   // Along the centre row, the angle from the axis of pixel coordinate px is
   // atan((2 px / W - 1) tan(15 deg)).  Bisect for the edge, then compare.
   double lo = W / 2.0, hi = W;  // centre: horizon; right edge: sky
-  ASSERT_EQ(sample_at(scene, lo, 0.5).kind, HitKind::horizon);
-  ASSERT_EQ(sample_at(scene, hi, 0.5).kind, HitKind::sky);
+  ASSERT_EQ(sample_at(scene, lo, 0.5).hit.kind, HitKind::horizon);
+  ASSERT_EQ(sample_at(scene, hi, 0.5).hit.kind, HitKind::sky);
   for (int it = 0; it < 40; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (sample_at(scene, mid, 0.5).kind == HitKind::horizon ? lo : hi) = mid;
+    (sample_at(scene, mid, 0.5).hit.kind == HitKind::horizon ? lo : hi) = mid;
   }
   const double angle = std::atan((2 * lo / W - 1) * std::tan(15 * degree)) / degree;
   EXPECT_NEAR(angle, expected, 2e-4);  // the integrator decides the edge to ~1e-6 rad
@@ -133,23 +134,23 @@ TEST(Renderer, FlatSpaceDiskIsTheExactProjection) {
                         n[0] * er[2] + n[1] * et[2] + n[2] * ep[2]};
         const RaySample s = sample_at(scene, i + 0.5, j + 0.5);
         if (d[2] >= 0) {
-          EXPECT_EQ(s.kind, HitKind::sky);
+          EXPECT_EQ(s.hit.kind, HitKind::sky);
           continue;
         }
         const double k = -cam[2] / d[2];
         const double x = cam[0] + k * d[0], y = cam[1] + k * d[1];
         const double r = std::hypot(x, y);
         if (r < 6 || r > 15) {
-          EXPECT_EQ(s.kind, HitKind::sky) << i << "," << j;
+          EXPECT_EQ(s.hit.kind, HitKind::sky) << i << "," << j;
           continue;
         }
         ++disk_pixels;
-        ASSERT_EQ(s.kind, Disk::hit_kind) << i << "," << j;
-        EXPECT_NEAR(s.r, r, bound * r) << "tolerance " << tolerance;
+        ASSERT_EQ(s.hit.kind, Disk::hit_kind) << i << "," << j;
+        EXPECT_NEAR(s.hit.r, r, bound * r) << "tolerance " << tolerance;
         double phi = std::atan2(y, x);
         if (phi < 0) phi += two_pi;
-        EXPECT_NEAR(std::remainder(s.phi - phi, two_pi), 0.0, bound) << "tolerance " << tolerance;
-        EXPECT_EQ(s.order, 0);
+        EXPECT_NEAR(std::remainder(s.hit.phi - phi, two_pi), 0.0, bound) << "tolerance " << tolerance;
+        EXPECT_EQ(s.hit.order, 0);
       }
     EXPECT_GT(disk_pixels, 200);
   }
@@ -239,15 +240,16 @@ TEST(Renderer, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
     SceneSpec fs = kerr_scene(1, a, 30, a == 0.0 ? 90 : 0, 60, false);
     for (const KerrChart chart : {KerrChart::boyer_lindquist_mino, KerrChart::kerr_schild}) {
       const RaySample away = centre_ray(fs, 180, chart);
-      ASSERT_EQ(away.kind, HitKind::sky) << "a " << a;
-      EXPECT_GE(away.r, default_escape_radius * (1 - 1e-12)) << "a " << a;
-      EXPECT_NEAR(away.t, -(light_time(away.r) - light_time(30)), 2e-6 * std::abs(away.t)) << "a " << a << " chart " << int(chart);
-      EXPECT_LT(away.t, -(away.r - 30)) << "light is not faster than in flat space";
+      ASSERT_EQ(away.hit.kind, HitKind::sky) << "a " << a;
+      EXPECT_GE(away.hit.r, default_escape_radius * (1 - 1e-12)) << "a " << a;
+      EXPECT_NEAR(away.hit.t, -(light_time(away.hit.r) - light_time(30)), 2e-6 * std::abs(away.hit.t))
+          << "a " << a << " chart " << int(chart);
+      EXPECT_LT(away.hit.t, -(away.hit.r - 30)) << "light is not faster than in flat space";
       const RaySample in = centre_ray(fs, 0, chart);
-      ASSERT_EQ(in.kind, HitKind::horizon) << "a " << a;
-      EXPECT_LE(in.r, hole.capture_radius() * (1 + 1e-12)) << "a " << a;  // located to 1e-12
-      EXPECT_GT(in.r, hole.horizon_radius()) << "a " << a;
-      EXPECT_NEAR(in.t, -(light_time(30) - light_time(in.r)), 1e-5) << "a " << a << " chart " << int(chart);
+      ASSERT_EQ(in.hit.kind, HitKind::horizon) << "a " << a;
+      EXPECT_LE(in.hit.r, hole.capture_radius() * (1 + 1e-12)) << "a " << a;  // located to 1e-12
+      EXPECT_GT(in.hit.r, hole.horizon_radius()) << "a " << a;
+      EXPECT_NEAR(in.hit.t, -(light_time(30) - light_time(in.hit.r)), 1e-5) << "a " << a << " chart " << int(chart);
     }
   }
   // The paper's dihole (m = 0.4 at z = +-1).  Along y through the middle:
@@ -259,11 +261,11 @@ TEST(Renderer, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
   di.spacetime = Dihole(m, m, 1.0);
   di.observer = StaticObserver::Params{{0, 0, 80, 0}};
   const RaySample away = centre_ray(di, 180, KerrChart::kerr_schild);
-  ASSERT_EQ(away.kind, HitKind::sky);
-  EXPECT_NEAR(away.t, -(along_y(away.r) - along_y(80)), 2e-6 * std::abs(away.t));
+  ASSERT_EQ(away.hit.kind, HitKind::sky);
+  EXPECT_NEAR(away.hit.t, -(along_y(away.hit.r) - along_y(80)), 2e-6 * std::abs(away.hit.t));
   const RaySample through = centre_ray(di, 0, KerrChart::kerr_schild);
-  ASSERT_EQ(through.kind, HitKind::sky);
-  EXPECT_NEAR(through.t, -(along_y(80) + along_y(through.r)), 2e-6 * std::abs(through.t));
+  ASSERT_EQ(through.hit.kind, HitKind::sky);
+  EXPECT_NEAR(through.hit.t, -(along_y(80) + along_y(through.hit.r)), 2e-6 * std::abs(through.hit.t));
   // Down the z axis into the upper hole: U = 1 + m/(z - 1) + m/(z + 1).
   auto along_z = [&](double z) {
     return z - m * m / (z - 1) - m * m / (z + 1) + 2 * m * std::log(z - 1) + 2 * m * std::log(z + 1) +
@@ -271,15 +273,15 @@ TEST(Renderer, LayersPutSkyAndHorizonEventsWhereAndWhenRadialRaysAre) {
   };
   di.observer = StaticObserver::Params{{0, 0, 0, 80}};
   const RaySample down = centre_ray(di, 0, KerrChart::kerr_schild);
-  ASSERT_EQ(down.kind, HitKind::horizon);
-  EXPECT_LT(down.r, 1.0 + m);
-  EXPECT_NEAR(down.t, -(along_z(80) - along_z(down.r)), 1e-5);
+  ASSERT_EQ(down.hit.kind, HitKind::horizon);
+  EXPECT_LT(down.hit.r, 1.0 + m);
+  EXPECT_NEAR(down.hit.t, -(along_z(80) - along_z(down.hit.r)), 1e-5);
   // Flat space: t = -distance.
   SceneSpec flat = di;
   flat.spacetime = Minkowski{};
   const RaySample straight = centre_ray(flat, 180, KerrChart::kerr_schild);
-  ASSERT_EQ(straight.kind, HitKind::sky);
-  EXPECT_NEAR(straight.t, -(straight.r - 80), 1e-9);
+  ASSERT_EQ(straight.hit.kind, HitKind::sky);
+  EXPECT_NEAR(straight.hit.t, -(straight.hit.r - 80), 1e-9);
 }
 
 // Scenes for every path of the ray loop: flat space, Kerr in the fast
@@ -329,16 +331,16 @@ TEST(Renderer, LanesGiveWhatOneRayGives) {
           for (std::size_t k = 0; k < dirs.size(); ++k) {
             RaySample alone;
             trace_batch(sc, std::span<const Vec3>(&dirs[k], 1), std::span<RaySample>(&alone, 1));
-            ASSERT_EQ(alone.kind, batch[k].kind) << name << " ray " << k;
-            EXPECT_EQ(alone.r, batch[k].r) << name << " ray " << k;
-            EXPECT_EQ(alone.phi, batch[k].phi) << name << " ray " << k;
-            EXPECT_EQ(alone.t, batch[k].t) << name << " ray " << k;
+            ASSERT_EQ(alone.hit.kind, batch[k].hit.kind) << name << " ray " << k;
+            EXPECT_EQ(alone.hit.r, batch[k].hit.r) << name << " ray " << k;
+            EXPECT_EQ(alone.hit.phi, batch[k].hit.phi) << name << " ray " << k;
+            EXPECT_EQ(alone.hit.t, batch[k].hit.t) << name << " ray " << k;
             EXPECT_EQ(alone.color, batch[k].color) << name << " ray " << k;
             const RaySample one = trace_sample(sc, dirs[k], NoPath{});
-            ASSERT_EQ(one.kind, batch[k].kind) << name << " ray " << k;
-            EXPECT_NEAR(one.r, batch[k].r, 1e-6 * std::abs(batch[k].r)) << name << " ray " << k;
-            EXPECT_NEAR(one.t, batch[k].t, 1e-6 * (1 + std::abs(batch[k].t))) << name << " ray " << k;
-            hits += batch[k].kind == Sphere::hit_kind || batch[k].kind == Disk::hit_kind;
+            ASSERT_EQ(one.hit.kind, batch[k].hit.kind) << name << " ray " << k;
+            EXPECT_NEAR(one.hit.r, batch[k].hit.r, 1e-6 * std::abs(batch[k].hit.r)) << name << " ray " << k;
+            EXPECT_NEAR(one.hit.t, batch[k].hit.t, 1e-6 * (1 + std::abs(batch[k].hit.t))) << name << " ray " << k;
+            hits += batch[k].hit.kind == Sphere::hit_kind || batch[k].hit.kind == Disk::hit_kind;
           }
           EXPECT_GT(hits, 0) << name << ": no ray met an object";
         },
@@ -364,13 +366,13 @@ TEST(Renderer, SphereInFlatSpaceHasItsAngularSize) {
   const double t = std::tan(6 * degree);
   auto px_of = [&](double angle) { return W / 2.0 * (1 + std::tan(angle) / t); };
   const double centre = std::atan2(-5.0, 80.0), half = std::asin(1.0 / std::hypot(5.0, 80.0));
-  EXPECT_EQ(sample_at(scene, px_of(centre), 0.5).kind, Sphere::hit_kind);
+  EXPECT_EQ(sample_at(scene, px_of(centre), 0.5).hit.kind, Sphere::hit_kind);
   // Bisect the right edge (limb) of the disc in the image.
   double lo = px_of(centre), hi = px_of(centre + 2 * half);
-  ASSERT_EQ(sample_at(scene, hi, 0.5).kind, HitKind::sky);
+  ASSERT_EQ(sample_at(scene, hi, 0.5).hit.kind, HitKind::sky);
   for (int it = 0; it < 40; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (sample_at(scene, mid, 0.5).kind == Sphere::hit_kind ? lo : hi) = mid;
+    (sample_at(scene, mid, 0.5).hit.kind == Sphere::hit_kind ? lo : hi) = mid;
   }
   // The limb is where the line of sight is tangent: angle centre + half.
   EXPECT_NEAR(std::atan((2 * lo / W - 1) * t), centre + half, 1e-6);
@@ -385,7 +387,7 @@ double extent(const Scene& scene, double cx, double cy, double dx, double dy, do
     double lo = 0.0, hi = reach;
     for (int it = 0; it < 50; ++it) {
       const double mid = 0.5 * (lo + hi);
-      (sample_at(scene, cx + sgn * mid * dx, cy + sgn * mid * dy).kind == Sphere::hit_kind ? lo : hi) = mid;
+      (sample_at(scene, cx + sgn * mid * dx, cy + sgn * mid * dy).hit.kind == Sphere::hit_kind ? lo : hi) = mid;
     }
     edges[side] = lo;
   }
@@ -504,7 +506,7 @@ TEST(Renderer, MovingSphereKeepsACircularOutline) {
   // Find the sphere on the middle row (it moves in the plane z = 0).
   double first = -1, last = -1;
   for (int i = 0; i < W; ++i)
-    if (sample_at(scene, i + 0.5, H / 2.0).kind == Sphere::hit_kind) {
+    if (sample_at(scene, i + 0.5, H / 2.0).hit.kind == Sphere::hit_kind) {
       if (first < 0) first = i + 0.5;
       last = i + 0.5;
     }
@@ -562,8 +564,8 @@ TEST(Renderer, MovingObserverSeesAberration) {
     const Vec3 n = sc.camera.direction(px, 0.5);
     const double cos_seen = n[0] * -1.0;  // angle from forward (-leg 1) in the moving frame
     const RaySample s = sample_at(scene, px, 0.5);
-    ASSERT_EQ(s.kind, HitKind::sky);
-    const double dx = s.end[1], dy = s.end[2], dz = s.end[3];
+    ASSERT_EQ(s.hit.kind, HitKind::sky);
+    const double dx = s.hit.end[1], dy = s.hit.end[2], dz = s.hit.end[3];
     const double cos_rest = -dx / std::sqrt(dx * dx + dy * dy + dz * dz);  // angle from -x
     EXPECT_NEAR(cos_seen, (cos_rest + 0.5) / (1 + 0.5 * cos_rest), 1e-9) << px;
   }
