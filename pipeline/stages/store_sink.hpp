@@ -1,6 +1,7 @@
 #pragma once
-// Completed frames into the frame store: a full frame as EXR + PNG with its
-// journal line, a preview as DIR/preview/<shot>.<NNNN>.png.
+// Completed frames into the frame store: a full frame, once finished
+// (stages/finish_frame.hpp), as EXR + PNG with its journal line, a preview
+// as DIR/preview/<shot>.<NNNN>.png.
 
 #include "schedule/farm_run.hpp"
 #include <mutex>
@@ -8,7 +9,7 @@
 #include "telemetry/event_log.hpp"
 #include "store/frame_store.hpp"
 #include "job/shot_survey.hpp"
-#include "assets/shot_resources.hpp"
+#include "stages/finish_frame.hpp"
 
 namespace lc::farm {
 
@@ -37,14 +38,10 @@ class StoreSink final : public FrameSink {
 
   FrameStore& store_;
   const ShotSurvey& survey_;
-  std::string shot_name_;
-  double fps_;
   Look look_;  // the shot's, for the PNGs (a frame's own exposure replaces its exposure)
-  RenderSettings rs_;
   FrameSettings settings_;
   std::vector<int> preview_rows_;
-  ShotResources resources_;  // the skies' stars, for the stage after the pixels
-  int star_threads_;
+  FrameFinisher finisher_;  // the stage after the pixels
   EventLog* events_;
   mutable std::mutex star_mutex_;
   double star_seconds_ = 0.0, star_wall_seconds_ = 0.0;
