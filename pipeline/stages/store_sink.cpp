@@ -3,13 +3,6 @@
 
 namespace lc::farm {
 
-FrameSettings frame_settings(const RenderSettings& rs) {
-  // Adaptive sampling only means something with more than one sample.
-  FrameSettings s{rs.width, rs.height, rs.supersample, rs.layers, rs.adaptive && rs.supersample > 1};
-  s.window = rs.window;
-  return s;
-}
-
 StoreSink::StoreSink(FrameStore& store, const ShotSurvey& survey, const ShotInfo& shot, const RenderSettings& rs,
                      const FrameSettings& settings, std::vector<int> preview_rows,
                      std::vector<std::filesystem::path> asset_dirs, int star_threads, EventLog* events)

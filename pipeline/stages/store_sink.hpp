@@ -47,7 +47,4 @@ class StoreSink final : public FrameSink {
   double star_seconds_ = 0.0, star_wall_seconds_ = 0.0;
 };
 
-// The journal's spelling of the render settings (an 8-bit PNG).
-FrameSettings frame_settings(const RenderSettings& rs);
-
 }  // namespace lc::farm
