@@ -5,10 +5,10 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <thread>
 #include <vector>
 
 #include "transport/mpi_link.hpp"
+#include "core/parallel_for.hpp"
 #include "transport/threads.hpp"
 
 namespace lc::farm {
@@ -74,73 +74,87 @@ int run_mpi_worker(const MpiSession& /*mpi*/, StripeRenderer* renderer, const Re
                    const std::function<int()>& signal_received) {
   WorkerShared s;
   SendQueue out;
-  std::vector<std::thread> pool;
   if (setup_error) {
     out.post(0, Tag::error, Bytes(setup_error->begin(), setup_error->end()));
     s.failed = true;
   } else {
     out.post(0, Tag::hello, pack_hello({digest, threads, host_name()}));
-    for (int k = 0; k < threads; ++k) pool.emplace_back(render_loop, std::ref(s), std::ref(*renderer), std::cref(layout));
   }
   const int reserve = std::max(1, reserve_per_thread) * threads;
   bool asked = false;
   int interrupted = 0;
-  std::unique_lock lock(s.mutex);
-  while (!s.stopping) {
-    if (interrupted == 0 && signal_received && (interrupted = signal_received()) != 0) {
-      // Sets not begun are dropped (the master hands out no more and will
-      // not assemble these frames); the ones on the threads finish.
-      s.inbox.clear();
-      s.no_more = true;
-      out.post(0, Tag::interrupted, pack_count(interrupted));
-    }
-    // Post what the render threads finished; delivery goes on meanwhile.
-    while (!s.outbox.empty()) {
-      auto message = std::move(s.outbox.front());
-      s.outbox.pop_front();
-      out.post(0, message.first, std::move(message.second));
-    }
-    out.progress();
-    const int have = static_cast<int>(s.inbox.size()) + s.in_progress;
-    if (!s.failed && !s.no_more && !asked && have < reserve) {
-      out.post(0, Tag::request, pack_count(reserve - have));
-      asked = true;
-    }
-    lock.unlock();
-    bool got = false;
-    while (auto m = mpi_poll(0)) {
-      got = true;
-      lock.lock();
-      if (m->tag == Tag::work) {
-        // After a signal, work already on its way is not begun.
-        const auto items = interrupted ? std::vector<WorkItem>{} : unpack_items(m->data);
-        asked = false;
-        if (items.empty()) s.no_more = true;
-        for (const auto& item : items) {
-          auto& c = s.canvases[key(item)];
-          if (!c.image) c.image = std::make_unique<FrameImage>(make_frame(rs));
-          ++c.outstanding;
-          s.inbox.push_back(item);
+  // The render threads (none after a failed setup), each a render_loop; this
+  // thread, the only one that talks MPI, is their watch and joins them once
+  // it has said goodbye: each finishes the set it is on, its result dropped.
+  const std::size_t render_threads = setup_error ? 0 : static_cast<std::size_t>(std::max(threads, 0));
+  auto render = [&](std::size_t) { render_loop(s, *renderer, layout); };
+  parallel_for(render_threads, {.threads = threads, .handout = Handout::by_thread}, render, [&](ParallelRun&) {
+    try {
+      std::unique_lock lock(s.mutex);
+      while (!s.stopping) {
+        if (interrupted == 0 && signal_received && (interrupted = signal_received()) != 0) {
+          // Sets not begun are dropped (the master hands out no more and will
+          // not assemble these frames); the ones on the threads finish.
+          s.inbox.clear();
+          s.no_more = true;
+          out.post(0, Tag::interrupted, pack_count(interrupted));
         }
-        s.work_ready.notify_all();
-      } else if (m->tag == Tag::stop) {
-        s.stopping = true;
-        s.work_ready.notify_all();
-        if (renderer) renderer->stop();
+        // Post what the render threads finished; delivery goes on meanwhile.
+        while (!s.outbox.empty()) {
+          auto message = std::move(s.outbox.front());
+          s.outbox.pop_front();
+          out.post(0, message.first, std::move(message.second));
+        }
+        out.progress();
+        const int have = static_cast<int>(s.inbox.size()) + s.in_progress;
+        if (!s.failed && !s.no_more && !asked && have < reserve) {
+          out.post(0, Tag::request, pack_count(reserve - have));
+          asked = true;
+        }
+        lock.unlock();
+        bool got = false;
+        while (auto m = mpi_poll(0)) {
+          got = true;
+          lock.lock();
+          if (m->tag == Tag::work) {
+            // After a signal, work already on its way is not begun.
+            const auto items = interrupted ? std::vector<WorkItem>{} : unpack_items(m->data);
+            asked = false;
+            if (items.empty()) s.no_more = true;
+            for (const auto& item : items) {
+              auto& c = s.canvases[key(item)];
+              if (!c.image) c.image = std::make_unique<FrameImage>(make_frame(rs));
+              ++c.outstanding;
+              s.inbox.push_back(item);
+            }
+            s.work_ready.notify_all();
+          } else if (m->tag == Tag::stop) {
+            s.stopping = true;
+            s.work_ready.notify_all();
+            if (renderer) renderer->stop();
+          }
+          lock.unlock();
+          if (m->tag == Tag::stop) break;
+        }
+        lock.lock();
+        if (!got && s.outbox.empty() && !s.stopping) s.outbox_ready.wait_for(lock, idle_wait);
       }
+      s.inbox.clear();
       lock.unlock();
-      if (m->tag == Tag::stop) break;
+      // Goodbye first: the master takes a worker that does not answer its
+      // stop at once for lost (mpi_master.hpp).
+      out.post(0, Tag::bye, Bytes{});
+      out.drain();
+    } catch (...) {
+      // The render threads wait for work this thread will no longer bring.
+      {
+        std::lock_guard stop(s.mutex);
+        s.stopping = true;
+      }
+      s.work_ready.notify_all();
+      throw;
     }
-    lock.lock();
-    if (!got && s.outbox.empty() && !s.stopping) s.outbox_ready.wait_for(lock, idle_wait);
-  }
-  s.inbox.clear();
-  lock.unlock();
-  // Goodbye first: the master takes a worker that does not answer its
-  // stop at once for lost (mpi_master.hpp).
-  out.post(0, Tag::bye, Bytes{});
-  out.drain();
-  for (auto& t : pool) t.join();  // each finishes the set it is on; results are dropped
+  });
   return interrupted;
 }
 
