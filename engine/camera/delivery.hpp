@@ -19,7 +19,6 @@
 // height (ODS: each eye's 2:1 picture of it) unless a size is given.
 
 #include <array>
-#include <utility>
 #include <variant>
 
 #include "camera/camera.hpp"
@@ -51,19 +50,6 @@ inline CameraSpec delivered(const CameraSpec& shot_camera, const Delivery& to) {
     sphere.separation = to.separation;
   }
   return sphere;
-}
-
-// The frame size for `to` when none is given: the shot's own for the
-// shot's camera, else square (dome), 2:1 (360) or two 2:1 pictures one
-// above the other (ods) of the shot's height.
-inline std::pair<int, int> delivery_size(DeliveryCamera to, int width, int height) {
-  switch (to) {
-    case DeliveryCamera::shot: return {width, height};
-    case DeliveryCamera::dome: return {height, height};
-    case DeliveryCamera::sphere: return {2 * height, height};
-    case DeliveryCamera::ods: return {2 * height, 2 * height};
-  }
-  return {width, height};
 }
 
 }  // namespace lc

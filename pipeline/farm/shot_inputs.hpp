@@ -15,9 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "camera/camera.hpp"
 #include "farm/journal.hpp"
 #include "render/renderer.hpp"
 #include "script/shot.hpp"
+#include "sky/sky.hpp"
 
 namespace lc::farm {
 

@@ -23,6 +23,7 @@
 #include "monitor/pixel_trace.hpp"
 #include "render_job.hpp"
 #include "scene/delivered_sky.hpp"
+#include "scene/scene_spec.hpp"
 #include "scratch_dir.hpp"
 
 namespace lc {
