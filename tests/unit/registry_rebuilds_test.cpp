@@ -115,11 +115,11 @@ struct KindSeam {
 
 // The registries, with the translation units a new kind rebuilds today.
 const std::vector<KindSeam> seams = {
-    {"camera", {"camera/camera.hpp"}, 58, 15},
-    {"object", {"objects/objects.hpp"}, 57, 15},
-    {"sky", {"sky/sky.hpp"}, 58, 15},
-    {"observer", {"observers/observers.hpp"}, 57, 15},
-    {"spacetime", {"spacetime/spacetime.hpp"}, 75, 20},
+    {"camera", {"camera/camera.hpp"}, 49, 15},
+    {"object", {"objects/objects.hpp"}, 42, 15},
+    {"sky", {"sky/sky.hpp"}, 48, 15},
+    {"observer", {"observers/observers.hpp"}, 42, 15},
+    {"spacetime", {"spacetime/spacetime.hpp"}, 55, 20},
 };
 
 TEST(RegistryRebuilds, ANewKindRebuildsNoMoreThanItsLimit) {
