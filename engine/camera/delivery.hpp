@@ -21,12 +21,12 @@
 #include <array>
 #include <variant>
 
-#include "camera/camera.hpp"
+#include "camera/camera_spec.hpp"
 #include "camera/delivery_camera.hpp"
 
 namespace lc {
 
-static_assert(EquirectCamera::Params{}.separation == default_ods_separation,
+static_assert(EquirectParams{}.separation == default_ods_separation,
               "--separation's default is the equirect's own");
 
 // The camera `shot_camera` (any kind) is delivered through.  Assumes the
@@ -36,14 +36,14 @@ inline CameraSpec delivered(const CameraSpec& shot_camera, const Delivery& to) {
   const auto [yaw, pitch, roll] =
       std::visit([](const auto& p) { return std::array<double, 3>{p.yaw, p.pitch, p.roll}; }, shot_camera);
   if (to.camera == DeliveryCamera::dome) {
-    FisheyeCamera::Params dome;
+    FisheyeParams dome;
     dome.yaw = yaw;
     dome.pitch = pitch + (90.0 - to.dome_elevation);
     dome.roll = roll;
     dome.tilt = to.dome_tilt;
     return dome;
   }
-  EquirectCamera::Params sphere;
+  EquirectParams sphere;
   sphere.yaw = yaw;
   if (to.camera == DeliveryCamera::ods) {
     sphere.stereo = StereoLayout::top_bottom;

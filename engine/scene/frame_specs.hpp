@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "camera/camera.hpp"
+#include "camera/camera_spec.hpp"
 #include "scene/scene_spec.hpp"
 #include "scene/shutter.hpp"
 

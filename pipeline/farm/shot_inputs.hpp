@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "camera/camera.hpp"
+#include "camera/camera_spec.hpp"
 #include "farm/journal.hpp"
 #include "render/renderer.hpp"
 #include "script/shot.hpp"

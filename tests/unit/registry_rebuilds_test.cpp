@@ -105,21 +105,25 @@ std::set<fs::path> includes_of(const TranslationUnit& tu) {
 }
 
 // A kind of kind: the headers a new one's registry line(s) are written in
-// (engine/-relative), the count reached and the issue's goal.
+// (engine/-relative), the count reached and the issue's goal; or, for a
+// change to one kind's code, that kind's header.
 struct KindSeam {
-  const char* kind;
+  const char* change;  // what is changed, as the report says it
   std::vector<const char*> registry_headers;
   std::size_t limit;  // the count reached: more fails
-  std::size_t goal;   // issue 44's
+  std::size_t goal;   // issue 44's; 0: none stated
 };
 
 // The registries, with the translation units a new kind rebuilds today.
 const std::vector<KindSeam> seams = {
-    {"camera", {"camera/camera.hpp"}, 49, 15},
-    {"object", {"objects/objects.hpp"}, 42, 15},
-    {"sky", {"sky/sky.hpp"}, 48, 15},
-    {"observer", {"observers/observers.hpp"}, 42, 15},
-    {"spacetime", {"spacetime/spacetime.hpp"}, 55, 20},
+    {"a new camera kind", {"camera/camera_spec.hpp", "camera/camera.hpp"}, 49, 15},
+    {"a new object kind", {"objects/objects.hpp"}, 42, 15},
+    {"a new sky kind", {"sky/sky.hpp"}, 48, 15},
+    {"a new observer kind", {"observers/observers.hpp"}, 42, 15},
+    {"a new spacetime kind", {"spacetime/spacetime.hpp"}, 55, 20},
+    // A camera's code apart from its parameters (camera/fisheye_params.hpp):
+    // only what builds cameras and traces rows includes it.
+    {"a change to the fisheye camera's code", {"camera/fisheye.hpp"}, 31, 0},
 };
 
 TEST(RegistryRebuilds, ANewKindRebuildsNoMoreThanItsLimit) {
@@ -137,10 +141,10 @@ TEST(RegistryRebuilds, ANewKindRebuildsNoMoreThanItsLimit) {
       rebuilt += hit;
     }
     // Printed on every run: the measure the docs quote.
-    std::cout << "a new " << seam.kind << " kind rebuilds " << rebuilt << " of " << tus.size()
-              << " translation units (limit " << seam.limit << ", goal " << seam.goal << ")\n";
-    EXPECT_LE(rebuilt, seam.limit) << "a new " << seam.kind << " kind now rebuilds more translation units: a header that "
-                                   << "many files include has begun to include a registry";
+    std::cout << seam.change << " rebuilds " << rebuilt << " of " << tus.size() << " translation units (limit "
+              << seam.limit << ", goal " << seam.goal << ")\n";
+    EXPECT_LE(rebuilt, seam.limit) << seam.change << " now rebuilds more translation units: a header that many files "
+                                   << "include has begun to include " << seam.registry_headers.front();
   }
 }
 
