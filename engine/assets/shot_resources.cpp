@@ -6,6 +6,7 @@
 
 #include "image/starfield.hpp"
 #include "assets/asset_path.hpp"
+#include "worldline/worldline.hpp"
 
 namespace lc {
 

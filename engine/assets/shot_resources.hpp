@@ -19,9 +19,14 @@
 #include "light/blackbody.hpp"
 #include "light/spectral_shift.hpp"
 #include "stars/star_field.hpp"
-#include "worldline/worldline.hpp"
 
 namespace lc {
+
+// Declared only: a worldline's spec holds the spacetime, and the skies and
+// disks that include this header for their images need no spacetime
+// (docs/architecture.md, "What a new kind rebuilds").
+class Worldline;        // worldline/worldline.hpp
+struct WorldlineSpec;   // worldline/worldline_spec.hpp
 
 // Per-shot caches shared by all frames (thread-safe): worldlines
 // integrated, sky images loaded and star fields made once, however many

@@ -19,6 +19,7 @@
 
 #include "camera/camera_axes.hpp"
 #include "camera/camera_sample.hpp"
+#include "camera/camera_spec.hpp"
 #include "camera/equirect.hpp"
 #include "camera/fisheye.hpp"
 #include "camera/image_window.hpp"
@@ -65,8 +66,10 @@ static_assert(every_kind<CameraRegistry>([]<class C>() {
   static_assert(CameraModel<C>, "a registered camera must satisfy CameraModel");
 }));
 
-// The camera a shot asked for: one of the registered kinds' parameters.
-using CameraSpec = CameraRegistry::Spec;
+// The camera a shot asked for (camera/camera_spec.hpp): the kinds'
+// parameters, listed apart in the same order.
+static_assert(std::is_same_v<CameraRegistry::Spec, CameraSpec>,
+              "camera/camera_spec.hpp must list the registered cameras' Params in the registry's order");
 
 // The camera of a frame, for its image size; or of a window of the frame
 // (render --region): then the image is the window, width x height pixels

@@ -19,15 +19,14 @@
 // height (ODS: each eye's 2:1 picture of it) unless a size is given.
 
 #include <array>
-#include <utility>
 #include <variant>
 
-#include "camera/camera.hpp"
+#include "camera/camera_spec.hpp"
 #include "camera/delivery_camera.hpp"
 
 namespace lc {
 
-static_assert(EquirectCamera::Params{}.separation == default_ods_separation,
+static_assert(EquirectParams{}.separation == default_ods_separation,
               "--separation's default is the equirect's own");
 
 // The camera `shot_camera` (any kind) is delivered through.  Assumes the
@@ -37,33 +36,20 @@ inline CameraSpec delivered(const CameraSpec& shot_camera, const Delivery& to) {
   const auto [yaw, pitch, roll] =
       std::visit([](const auto& p) { return std::array<double, 3>{p.yaw, p.pitch, p.roll}; }, shot_camera);
   if (to.camera == DeliveryCamera::dome) {
-    FisheyeCamera::Params dome;
+    FisheyeParams dome;
     dome.yaw = yaw;
     dome.pitch = pitch + (90.0 - to.dome_elevation);
     dome.roll = roll;
     dome.tilt = to.dome_tilt;
     return dome;
   }
-  EquirectCamera::Params sphere;
+  EquirectParams sphere;
   sphere.yaw = yaw;
   if (to.camera == DeliveryCamera::ods) {
     sphere.stereo = StereoLayout::top_bottom;
     sphere.separation = to.separation;
   }
   return sphere;
-}
-
-// The frame size for `to` when none is given: the shot's own for the
-// shot's camera, else square (dome), 2:1 (360) or two 2:1 pictures one
-// above the other (ods) of the shot's height.
-inline std::pair<int, int> delivery_size(DeliveryCamera to, int width, int height) {
-  switch (to) {
-    case DeliveryCamera::shot: return {width, height};
-    case DeliveryCamera::dome: return {height, height};
-    case DeliveryCamera::sphere: return {2 * height, height};
-    case DeliveryCamera::ods: return {2 * height, 2 * height};
-  }
-  return {width, height};
 }
 
 }  // namespace lc

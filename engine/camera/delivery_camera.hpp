@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 namespace lc {
 
@@ -52,5 +53,18 @@ struct Delivery {
            separation != default_ods_separation || sky != DeliverySky::shot;
   }
 };
+
+// The frame size for `to` when none is given: the shot's own for the
+// shot's camera, else square (dome), 2:1 (360) or two 2:1 pictures one
+// above the other (ods) of the shot's height.
+inline std::pair<int, int> delivery_size(DeliveryCamera to, int width, int height) {
+  switch (to) {
+    case DeliveryCamera::shot: return {width, height};
+    case DeliveryCamera::dome: return {height, height};
+    case DeliveryCamera::sphere: return {2 * height, height};
+    case DeliveryCamera::ods: return {2 * height, 2 * height};
+  }
+  return {width, height};
+}
 
 }  // namespace lc

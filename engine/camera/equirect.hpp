@@ -33,6 +33,7 @@
 #include <fmt/format.h>
 
 #include "camera/camera_axes.hpp"
+#include "camera/equirect_params.hpp"
 #include "camera/camera_sample.hpp"
 #include "camera/stereo.hpp"
 #include "core/constants.hpp"
@@ -45,34 +46,9 @@ namespace lc {
 
 class EquirectCamera {
  public:
-  static constexpr std::string_view name = "equirect";  // lc.equirect{...}
+  using Params = EquirectParams;
+  static constexpr std::string_view name = Params::name;  // lc.equirect{...}
   static constexpr bool rays_everywhere = true;
-  struct Params {
-    double longitude = 360.0;  // the window's span in longitude, degrees
-    double latitude = 180.0;   // ... and in latitude
-    StereoLayout stereo = StereoLayout::mono;
-    double separation = 1.0;  // M
-    double yaw = 0.0, pitch = 0.0, roll = 0.0;
-    static constexpr auto fields = std::tuple_cat(
-        std::tuple{field("longitude", &Params::longitude, std::optional<double>{360.0}, above(0.0), at_most(360.0),
-                         "the span of longitude across the image, centred on forward (360: all the way round)",
-                         "degrees"),
-                   field("latitude", &Params::latitude, std::optional<double>{180.0}, above(0.0), at_most(180.0),
-                         "the span of latitude up the image, centred on forward (180: pole to pole)", "degrees")},
-        std::tuple{field("stereo", &Params::stereo, std::optional<StereoLayout>{StereoLayout::mono}, std::nullopt,
-                         std::nullopt,
-                         "mono (one eye) or top-bottom: omnidirectional stereo, the left eye's sphere above the "
-                         "right's (side-by-side is refused: a 4:1 sphere no video site takes)"),
-                   separation_field<Params>()},
-        orientation_fields<Params>());
-    // ODS is delivered top-bottom (the 360-degree video sites' layout); a
-    // side-by-side sphere would be 4:1.
-    void validate() const {
-      if (stereo == StereoLayout::side_by_side)
-        throw std::invalid_argument("stereo 'side-by-side' is not offered for the equirect: omnidirectional stereo is "
-                                    "delivered top-bottom (stereo = \"top-bottom\", a square frame for the whole sphere)");
-    }
-  };
   // Where ODS's eyes start merging towards the poles, and where they have
   // met (Cycles' defaults), radians.
   static constexpr double pole_merge_from = 60.0 * degree, pole_merge_to = 75.0 * degree;

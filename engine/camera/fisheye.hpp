@@ -19,6 +19,7 @@
 #include <tuple>
 
 #include "camera/camera_axes.hpp"
+#include "camera/fisheye_params.hpp"
 #include "camera/camera_sample.hpp"
 #include "camera/stereo.hpp"
 #include "core/constants.hpp"
@@ -31,21 +32,9 @@ namespace lc {
 
 class FisheyeCamera {
  public:
-  static constexpr std::string_view name = "fisheye";  // lc.fisheye{...}
+  using Params = FisheyeParams;
+  static constexpr std::string_view name = Params::name;  // lc.fisheye{...}
   static constexpr bool rays_everywhere = false;  // none outside the disc
-  struct Params {
-    double full_angle = 180.0;  // Lua `field`: the disc's full angle, degrees
-    double tilt = 0.0;     // the dome's forward tilt, degrees
-    double yaw = 0.0, pitch = 0.0, roll = 0.0;
-    static constexpr auto fields = std::tuple_cat(
-        std::tuple{field("field", &Params::full_angle, std::optional<double>{180.0}, at_least(90.0), at_most(360.0),
-                         "the full angle across the image disc (180: a hemisphere, a dome master)", "degrees"),
-                   field("tilt", &Params::tilt, std::optional<double>{0.0}, at_least(0.0), at_most(90.0),
-                         "the dome's tilt: the view axis turned from forward towards down by this much, so a "
-                         "shot framed for a level dome sits the same above a tilted dome's front horizon",
-                         "degrees")},
-        orientation_fields<Params>());
-  };
 
   // Image size in pixels; the parameters' angles are in degrees.
   FisheyeCamera(const Params& p, int width, int height)

@@ -17,6 +17,7 @@
 #include <tuple>
 
 #include "camera/camera_axes.hpp"
+#include "camera/pinhole_params.hpp"
 #include "camera/camera_sample.hpp"
 #include "camera/stereo.hpp"
 #include "core/constants.hpp"
@@ -29,18 +30,9 @@ namespace lc {
 
 class PinholeCamera {
  public:
-  static constexpr std::string_view name = "camera";  // lc.camera{...}
+  using Params = PinholeParams;
+  static constexpr std::string_view name = Params::name;  // lc.camera{...}
   static constexpr bool rays_everywhere = true;
-  struct Params {
-    double fov = 60.0;  // horizontal, degrees (of one eye's picture in stereo)
-    StereoLayout stereo = StereoLayout::mono;
-    double separation = 1.0;  // M
-    double yaw = 0.0, pitch = 0.0, roll = 0.0;
-    static constexpr auto fields =
-        std::tuple_cat(std::tuple{field("fov", &Params::fov, std::optional<double>{60.0}, above(0.0), below(180.0),
-                                        "horizontal field of view (of each eye's picture, in stereo)", "degrees")},
-                       stereo_fields<Params>(), orientation_fields<Params>());
-  };
 
   // Image size in pixels; the parameters' angles are in degrees.
   PinholeCamera(const Params& p, int width, int height)

@@ -5,7 +5,8 @@
 // declared fields (core/fields.hpp).  From that list come the variant of
 // parameters a scene holds (Spec), the variant of built kinds (Kinds), the
 // names, the exact key and the JSON of a spec, and building a kind from its
-// spec: nothing else lists the kinds.  every_kind checks each kind of a
+// spec: nothing else lists the kinds but a SpecRegistry of their Params,
+// where a registry keeps those apart (cameras).  every_kind checks each kind of a
 // list against its concept, one assertion per kind.
 
 #include <array>
@@ -18,6 +19,65 @@
 #include "core/fields.hpp"
 
 namespace lc {
+
+// "name field=value ...", exactly, of spec `s` whose kinds are named
+// `names` in the variant's order: what frames are compared by.  Every
+// declared field is in it (a placement too: core/fields.hpp,
+// KeyedByValue); a kind whose Params hold more than their declared fields
+// adds that with extra_key(), which nothing checks is there: declare a
+// field instead where its type allows.
+template <class Spec, std::size_t N>
+std::string spec_key(const std::array<std::string_view, N>& names, const Spec& s) {
+  return std::string(names[s.index()]) + std::visit(
+                                              [](const auto& p) {
+                                                std::string k = fields_key(p);
+                                                if constexpr (requires { p.extra_key(); }) k += p.extra_key();
+                                                return k;
+                                              },
+                                              s);
+}
+
+// {"kind": "name", <each field>: value}, and extra_json(polar) where a
+// kind has it (polar: whether the scene's positions are polar, for
+// fields holding one).
+template <class Spec, std::size_t N>
+std::string spec_json(const std::array<std::string_view, N>& names, const Spec& s, bool polar) {
+  return fmt::format("{{\"kind\": \"{}\"{}}}", names[s.index()], std::visit(
+                                                                      [polar](const auto& p) {
+                                                                        std::string j = fields_json(p, polar);
+                                                                        if constexpr (requires { p.extra_json(polar); })
+                                                                          j += p.extra_json(polar);
+                                                                        return j;
+                                                                      },
+                                                                      s));
+}
+
+// The parameters of a registry's kinds alone, one line each, each P with
+// a static `name` (its Lua constructor's): the variant a scene holds
+// (Spec), the names, the key and the JSON of a spec.  Apart from the kinds
+// (Registry below) so that what holds or describes a spec does not
+// include the kinds' code (docs/architecture.md, "What a new kind
+// rebuilds").
+template <class P>
+struct KindOfParams {  // a kind as its parameters know it: what the readers need
+  using Params = P;
+  static constexpr std::string_view name = P::name;
+};
+
+template <class... P>
+struct SpecRegistry {
+  using Spec = std::variant<P...>;
+  static constexpr std::array<std::string_view, sizeof...(P)> names = {P::name...};
+  static std::string_view name(const Spec& s) { return names[s.index()]; }
+  // f(static_cast<K*>(nullptr)) for each kind K, in order, as Registry's
+  // for_each, where K has only the name and Params (KindOfParams).
+  template <class F>
+  static void for_each(F&& f) {
+    (f(static_cast<KindOfParams<P>*>(nullptr)), ...);
+  }
+  static std::string key(const Spec& s) { return spec_key(names, s); }
+  static std::string json(const Spec& s, bool polar = false) { return spec_json(names, s, polar); }
+};
 
 template <class... K>
 struct Registry {
@@ -34,34 +94,12 @@ struct Registry {
     (f(static_cast<K*>(nullptr)), ...);
   }
 
-  // "name field=value ...", exactly: what frames are compared by.  Every
-  // declared field is in it (a placement too: core/fields.hpp,
-  // KeyedByValue); a kind whose Params hold more than their declared fields
-  // adds that with extra_key(), which nothing checks is there: declare a
-  // field instead where its type allows.
-  static std::string key(const Spec& s) {
-    return std::string(name(s)) + std::visit(
-                                      [](const auto& p) {
-                                        std::string k = fields_key(p);
-                                        if constexpr (requires { p.extra_key(); }) k += p.extra_key();
-                                        return k;
-                                      },
-                                      s);
-  }
+  // "name field=value ...", exactly: what frames are compared by
+  // (spec_key above).
+  static std::string key(const Spec& s) { return spec_key(names, s); }
 
-  // {"kind": "name", <each field>: value}, and extra_json(polar) where a
-  // kind has it (polar: whether the scene's positions are polar, for
-  // fields holding one).
-  static std::string json(const Spec& s, bool polar = false) {
-    return fmt::format("{{\"kind\": \"{}\"{}}}", name(s), std::visit(
-                                                              [polar](const auto& p) {
-                                                                std::string j = fields_json(p, polar);
-                                                                if constexpr (requires { p.extra_json(polar); })
-                                                                  j += p.extra_json(polar);
-                                                                return j;
-                                                              },
-                                                              s));
-  }
+  // {"kind": "name", <each field>: value} (spec_json above).
+  static std::string json(const Spec& s, bool polar = false) { return spec_json(names, s, polar); }
 
   // The kind a spec is for, made from its parameters and `args`.
   template <std::size_t I = 0, class... Args>

@@ -30,6 +30,7 @@
 #include "objects/step_query.hpp"
 #include "assets/shot_resources.hpp"
 #include "worldline/placement.hpp"
+#include "worldline/worldline.hpp"
 #include "worldline/worldline_spec.hpp"
 #include "spacetime/chart.hpp"
 

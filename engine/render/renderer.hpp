@@ -9,12 +9,11 @@
 
 #include "image/image.hpp"
 #include "render/render_settings.hpp"
-#include "render/scene.hpp"
 
 namespace lc {
 
 class SampleMemo;
-
+struct Scene;  // render/scene.hpp
 
 // Makes room in `image` (made by make_frame) for its rays' sky points when
 // the scene's sky has stars drawn as points (FrameImage::sky, a plane per

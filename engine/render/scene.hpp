@@ -68,7 +68,15 @@ template <class... S>
 struct SceneVariantOf<std::variant<S...>> {
   using type = std::variant<SceneIn<S>...>;
 };
-using Scene = SceneVariantOf<Spacetime>::type;
+// A class, not an alias of the variant, so that a header that only passes
+// scenes on (render/renderer.hpp) declares `struct Scene;` and does not
+// bring every registry into the files that include it (docs/architecture.md,
+// "What a new kind rebuilds").  std::visit and std::get take it as the
+// variant it is.
+struct Scene : SceneVariantOf<Spacetime>::type {
+  using Base = SceneVariantOf<Spacetime>::type;
+  using Base::Base;
+};
 
 
 }  // namespace lc

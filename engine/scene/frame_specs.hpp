@@ -6,8 +6,11 @@
 // render/scene_builder.hpp builds it into a Scene whose samples each take
 // one instant (docs/motion_blur.md).
 
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "camera/camera_spec.hpp"
 #include "scene/scene_spec.hpp"
 #include "scene/shutter.hpp"
 
@@ -25,5 +28,17 @@ struct FrameSpecs {
 
   bool blurred() const { return !instants.empty(); }
 };
+
+// A cut between two cameras within one shutter, for its refusal: where
+// the camera's kind, stereo layout or projection (camera/camera.hpp,
+// video_layout) differs from the frame's (`at_frame`) at an instant
+// (`at_instant`), both said as "lc.camera (flat, side-by-side)"; nullopt
+// where they agree.  A frame blends its instants' samples pixel by pixel,
+// so such a frame would mix a mono picture with a stereo pair, or a flat
+// one with a sphere, under a header that describes only one of them.
+struct CameraCut {
+  std::string at_frame, at_instant;
+};
+std::optional<CameraCut> camera_cut(const CameraSpec& at_frame, const CameraSpec& at_instant);
 
 }  // namespace lc

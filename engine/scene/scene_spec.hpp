@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "camera/camera.hpp"
+#include "camera/camera_spec.hpp"
 #include "core/color.hpp"
 #include "light/light.hpp"
 #include "objects/objects.hpp"

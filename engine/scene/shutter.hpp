@@ -14,7 +14,6 @@
 #include <string_view>
 #include <vector>
 
-#include "camera/camera.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 
@@ -72,17 +71,5 @@ inline Shutter frame_shutter(const Shutter& shot, std::optional<double> frame_op
   if (over.time_samples) s.time_samples = *over.time_samples;
   return s;
 }
-
-// A cut between two cameras within one shutter, for its refusal: where
-// the camera's kind, stereo layout or projection (camera/camera.hpp,
-// video_layout) differs from the frame's (`at_frame`) at an instant
-// (`at_instant`), both said as "lc.camera (flat, side-by-side)"; nullopt
-// where they agree.  A frame blends its instants' samples pixel by pixel,
-// so such a frame would mix a mono picture with a stereo pair, or a flat
-// one with a sphere, under a header that describes only one of them.
-struct CameraCut {
-  std::string at_frame, at_instant;
-};
-std::optional<CameraCut> camera_cut(const CameraSpec& at_frame, const CameraSpec& at_instant);
 
 }  // namespace lc

@@ -202,7 +202,7 @@ void install_engine_api(lua::Sandbox& sandbox, EngineMemo* memo) {
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_sky, NameGroup::skies); });
   ObserverRegistry::for_each(
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_observer, NameGroup::observers); });
-  CameraRegistry::for_each(
+  CameraSpecs::for_each(
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera, NameGroup::cameras); });
   ObjectRegistry::for_each(
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_object, NameGroup::objects); });

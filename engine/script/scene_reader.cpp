@@ -117,7 +117,7 @@ Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::s
   return p.coords;
 }
 
-CameraSpec read_camera(TableReader& t) { return read_kind<CameraRegistry>(t, "a camera constructor"); }
+CameraSpec read_camera(TableReader& t) { return read_kind<CameraSpecs>(t, "a camera constructor"); }
 
 
 SkySpec read_sky(TableReader& t) {

@@ -6,7 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "camera/delivery.hpp"
 #include "lua/table_reader.hpp"
+#include "scene/delivered_sky.hpp"
+#include "scene/frame_specs.hpp"
+#include "scene/scene_spec.hpp"
 #include "script/engine_api.hpp"
 #include "script/scene_reader.hpp"
 #include "scene/still_key.hpp"

@@ -16,15 +16,20 @@
 #include <string>
 #include <vector>
 
-#include "camera/delivery.hpp"
-#include "scene/delivered_sky.hpp"
+#include "camera/delivery_camera.hpp"
 #include "lua/sandbox.hpp"
 #include "lua/table_reader.hpp"
-#include "scene/frame_specs.hpp"
-#include "scene/scene_spec.hpp"
+#include "scene/shot_info.hpp"
+#include "scene/shutter.hpp"
 #include "script/engine_api.hpp"
 
 namespace lc {
+
+// Declared only: they hold every registry's spec, and what loads a shot
+// for its settings, files or delivery need none (docs/architecture.md,
+// "What a new kind rebuilds"); what takes its frames includes them.
+struct SceneSpec;   // scene/scene_spec.hpp
+struct FrameSpecs;  // scene/frame_specs.hpp
 
 class Shot {
  public:

@@ -7,6 +7,7 @@
 
 #include "store/content_hash.hpp"
 #include "assets/asset_path.hpp"
+#include "scene/frame_specs.hpp"
 
 namespace lc::farm {
 

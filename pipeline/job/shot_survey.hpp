@@ -15,9 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "camera/camera_spec.hpp"
 #include "store/journal.hpp"
 #include "render/renderer.hpp"
 #include "script/shot.hpp"
+#include "sky/sky.hpp"
 
 namespace lc::farm {
 

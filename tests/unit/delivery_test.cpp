@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "camera/camera.hpp"
 #include "camera/delivery.hpp"
 #include "core/constants.hpp"
 #include "job/delivery_flags.hpp"
@@ -23,6 +24,7 @@
 #include "monitor/pixel_trace.hpp"
 #include "job/render_job.hpp"
 #include "scene/delivered_sky.hpp"
+#include "scene/scene_spec.hpp"
 #include "scratch_dir.hpp"
 
 namespace lc {
@@ -120,9 +122,9 @@ TEST(Delivery, SkyKstarsWithoutTheCatalogueSaysWhichPackageToInstall) {
 // (the image's bottom edge is the dome's front), E above the audience's
 // horizon whatever the dome's tilt T.
 void expect_subject_at(const Delivery& d, double elevation, double tilt) {
-  PinholeCamera::Params shot;  // looking along the aim, no yaw, pitch or roll
+  PinholeParams shot;  // looking along the aim, no yaw, pitch or roll
   const CameraSpec spec = delivered(CameraSpec{shot}, d);
-  const auto* dome = std::get_if<FisheyeCamera::Params>(&spec);
+  const auto* dome = std::get_if<FisheyeParams>(&spec);
   ASSERT_NE(dome, nullptr);
   EXPECT_EQ(dome->tilt, tilt);
   EXPECT_EQ(dome->full_angle, 180.0);
@@ -145,10 +147,10 @@ TEST(Delivery, TheDomePutsTheSubjectAtItsElevationForAnyTilt) {
   d.dome_tilt = 30;
   expect_subject_at(d, 20.0, 30.0);
   // The shot's own pitch is added to the dome's.
-  PinholeCamera::Params looking_up;
+  PinholeParams looking_up;
   looking_up.pitch = 10;
   looking_up.yaw = 30;
-  const auto dome = std::get<FisheyeCamera::Params>(delivered(CameraSpec{looking_up}, d));
+  const auto dome = std::get<FisheyeParams>(delivered(CameraSpec{looking_up}, d));
   EXPECT_EQ(dome.pitch, 10.0 + 70.0);
   EXPECT_EQ(dome.yaw, 30.0);
 }
@@ -157,11 +159,11 @@ TEST(Delivery, OdsIsTheSphereInTopBottomStereoOnASquareFrame) {
   Delivery d;
   d.camera = DeliveryCamera::ods;
   d.separation = 0.5;
-  PinholeCamera::Params shot;
+  PinholeParams shot;
   shot.yaw = 40;
   shot.pitch = 20;
   shot.roll = 5;
-  const auto ods = std::get<EquirectCamera::Params>(delivered(CameraSpec{shot}, d));
+  const auto ods = std::get<EquirectParams>(delivered(CameraSpec{shot}, d));
   EXPECT_EQ(ods.stereo, StereoLayout::top_bottom);
   EXPECT_EQ(ods.separation, 0.5);
   EXPECT_EQ(ods.yaw, 40.0);  // the heading kept, the horizon level
@@ -176,7 +178,7 @@ TEST(Delivery, OdsIsTheSphereInTopBottomStereoOnASquareFrame) {
   EXPECT_EQ(camera.pictures()[0].height, 144);
   d.camera = DeliveryCamera::sphere;
   d.separation = default_ods_separation;
-  EXPECT_EQ(std::get<EquirectCamera::Params>(delivered(CameraSpec{shot}, d)).stereo, StereoLayout::mono);
+  EXPECT_EQ(std::get<EquirectParams>(delivered(CameraSpec{shot}, d)).stereo, StereoLayout::mono);
 }
 
 TEST(Delivery, SkyKstarsSwitchesStarsAndReplacesTheCheckerButNotAnImage) {
@@ -299,7 +301,7 @@ TEST(Delivery, TheRenderJobTakesTheDelivery) {
   cmd.delivery.dome_tilt = 15;
   const RenderJob tilted = load_render_job(cmd);
   EXPECT_NE(plain.digest, tilted.digest);
-  const auto camera = std::get<FisheyeCamera::Params>(tilted.shot->frame(0).camera);
+  const auto camera = std::get<FisheyeParams>(tilted.shot->frame(0).camera);
   EXPECT_EQ(camera.tilt, 15.0);
   cmd.delivery = {};
   cmd.delivery.camera = "ods";

@@ -179,7 +179,7 @@ SceneIn<Wormhole> wormhole_scene(double rho, ShotResources& res) {
   rays.escape = EscapeRule::fixed;
   rays.escape_radius = 60.0;  // in l: the rest of the bending, ~b^2/l^2, is below 3e-4
   rays.free_radius = 0.0;
-  SceneIn<Wormhole> sc{st, {}, Camera(PinholeCamera::Params{}, 8, 8), uniform(0.25f), {{1, uniform(0.75f)}}, {}, rays};
+  SceneIn<Wormhole> sc{st, {}, Camera(PinholeParams{}, 8, 8), uniform(0.25f), {{1, uniform(0.75f)}}, {}, rays};
   sc.eye.event = sc.eye.scene_event = {0.0, rho, 0.0, 0.0};
   sc.eye.metric = st.metric(sc.eye.event);
   sc.eye.frame = static_cartesian_tetrad(st, sc.eye.event);

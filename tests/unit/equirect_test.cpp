@@ -20,8 +20,8 @@ namespace {
 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-EquirectCamera::Params equirect(double longitude, double latitude, double yaw, double pitch, double roll) {
-  EquirectCamera::Params p;
+EquirectParams equirect(double longitude, double latitude, double yaw, double pitch, double roll) {
+  EquirectParams p;
   p.longitude = longitude;
   p.latitude = latitude;
   p.yaw = yaw;
@@ -102,7 +102,7 @@ TEST(Equirect, PixelsThatAreNotSquareAreWarnedAbout) {
   ASSERT_TRUE(odd);
   EXPECT_NE(odd->find("a 360x180-degree window"), std::string::npos) << *odd;
   // Top-bottom stereo: each eye's picture 2:1, the frame square.
-  EquirectCamera::Params ods = equirect(360, 180, 0, 0, 0);
+  EquirectParams ods = equirect(360, 180, 0, 0, 0);
   ods.stereo = StereoLayout::top_bottom;
   EXPECT_FALSE(EquirectCamera(ods, 512, 512).size_warning());
   const auto flat_pair = EquirectCamera(ods, 512, 256).size_warning();

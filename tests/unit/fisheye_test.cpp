@@ -27,8 +27,8 @@ using Point = std::pair<double, double>;
 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-FisheyeCamera::Params fisheye(double field, double tilt, double yaw, double pitch, double roll) {
-  FisheyeCamera::Params p;
+FisheyeParams fisheye(double field, double tilt, double yaw, double pitch, double roll) {
+  FisheyeParams p;
   p.full_angle = field;
   p.tilt = tilt;
   p.yaw = yaw;

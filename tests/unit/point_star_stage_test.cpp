@@ -36,7 +36,7 @@ TEST(PointStarStage, AStarsLightHoldsStillThroughASlowPan) {
   std::vector<PointStar> stars;
   const double at[3][2] = {{20.3, 10.7}, {40.55, 18.2}, {30.9, 27.45}};
   {
-    std::get<PinholeCamera::Params>(fs.camera).fov = fov;
+    std::get<PinholeParams>(fs.camera).fov = fov;
     const Scene scene = build_scene(fs, W, H, res);
     const auto& sc = std::get<SceneIn<Minkowski>>(scene);
     std::vector<Vec3> dirs;
@@ -53,7 +53,7 @@ TEST(PointStarStage, AStarsLightHoldsStillThroughASlowPan) {
   double where[3][2] = {{at[0][0], at[0][1]}, {at[1][0], at[1][1]}, {at[2][0], at[2][1]}};
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {0, 0, 0};
   for (int f = 0; f < 100; ++f) {
-    std::get<PinholeCamera::Params>(fs.camera).yaw = f * step;
+    std::get<PinholeParams>(fs.camera).yaw = f * step;
     const Scene scene = build_scene(fs, W, H, res);
     FrameImage image = make_frame(rs);
     prepare_frame(scene, image);

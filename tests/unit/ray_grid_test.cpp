@@ -64,7 +64,7 @@ TEST(RayGrid, BeyondTheEdgeNodesAreExtrapolated) {
 // order in the ring's size: the first row's centres are 2.8 degrees from
 // it here, the ring's mean direction is the pole's to ~1e-9 rad).
 TEST(RayGrid, WhereTheImageWrapsTheRingIsTheRaysAcrossTheEdge) {
-  EquirectCamera::Params p;
+  EquirectParams p;
   p.yaw = 20;
   p.pitch = 10;
   const EquirectCamera cam(p, 64, 32);

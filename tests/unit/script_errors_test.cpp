@@ -13,6 +13,7 @@
 #include "lua/sandbox.hpp"
 #include "lua/table_reader.hpp"
 #include "script/geodesic_spec.hpp"
+#include "scene/scene_spec.hpp"
 #include "script/shot.hpp"
 #include "scratch_dir.hpp"
 #include "test_errors.hpp"

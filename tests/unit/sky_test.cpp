@@ -34,7 +34,7 @@ std::vector<Color> sky_frame(const SkySpec& sky, int W = 24, int H = 12) {
   SceneSpec fs;
   fs.spacetime = Minkowski();
   fs.observer = StaticObserver::Params{{0, 3, 4, 7}};
-  std::get<PinholeCamera::Params>(fs.camera).fov = 150;
+  std::get<PinholeParams>(fs.camera).fov = 150;
   fs.sky = sky;
   ShotResources res;
   const Scene scene = build_scene(fs, W, H, res);

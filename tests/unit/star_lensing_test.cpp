@@ -29,7 +29,7 @@ TEST(StarLensing, ASchwarzschildHolesTwoImagesFollowThePointLens) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0);
   fs.observer = StaticObserver::Params{{0, D, 90 * degree, 0}};
-  std::get<PinholeCamera::Params>(fs.camera).fov = 4 * std::sqrt(1e4 / D);
+  std::get<PinholeParams>(fs.camera).fov = 4 * std::sqrt(1e4 / D);
   ShotResources res;
   RayOptions rays;
   const Scene scene = build_scene(fs, N, N, res, rays);
@@ -99,7 +99,7 @@ TEST(StarLensing, ASchwarzschildHolesTwoImagesFollowThePointLens) {
 TEST(StarLensing, ThroughTheFisheyeAPointLensesImagesAreThePinholes) {
   const int N = 1000;
   const double theta_e = 5 * degree;
-  FisheyeCamera::Params p;
+  FisheyeParams p;
   p.full_angle = 180;
   const FisheyeCamera cam(p, N, N);
   for (const double off : {0.0, 50.0}) {

@@ -115,7 +115,7 @@ TEST(StarPass, StarsAtTheImagesEdgeAndBehindObjects) {
 // adaptive sampling's offset rays.
 TEST(StarPass, OnAWholeSphereAStarCrossesTheSeamAndThePolesWhole) {
   const int W = 64, H = 32;
-  EquirectCamera::Params p;
+  EquirectParams p;
   p.yaw = 30;
   p.pitch = -20;
   const EquirectCamera cam(p, W, H);

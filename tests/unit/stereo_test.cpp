@@ -52,14 +52,14 @@ TEST(Stereo, AFrameHoldsBothEyesPictures) {
 // picture's size, seen from half the separation left (top picture) and
 // right (bottom) of the observer along the camera's right.
 TEST(Stereo, ThePinholesEyesAreParallelAndApart) {
-  PinholeCamera::Params p;
+  PinholeParams p;
   p.fov = 50;
   p.yaw = 20;
   p.pitch = -10;
   p.stereo = StereoLayout::top_bottom;
   p.separation = 0.8;
   const PinholeCamera cam(p, 64, 72);
-  PinholeCamera::Params m = p;
+  PinholeParams m = p;
   m.stereo = StereoLayout::mono;
   const PinholeCamera mono(m, 64, 36);
   for (const auto& [px, py, eye] : {std::tuple{10.5, 3.5, -1}, std::tuple{10.5, 39.5, 1}, std::tuple{63.0, 71.0, 1}}) {
@@ -81,7 +81,7 @@ TEST(Stereo, ThePinholesEyesAreParallelAndApart) {
 // forward-right plane, the left eye to the left); the radius is whole to
 // 60 degrees of latitude, none from 75, linear between.
 TEST(Stereo, OdsEyesAreOnTheCircleAndMergeAtThePoles) {
-  EquirectCamera::Params p;
+  EquirectParams p;
   p.stereo = StereoLayout::top_bottom;
   p.separation = 2.0;
   p.yaw = 30;
@@ -124,7 +124,7 @@ TEST(Stereo, OdsDisparityInFlatSpaceIsTheFormulas) {
   SceneSpec fs;
   fs.spacetime = Dihole(0.0, 0.0, 1.0);
   fs.observer = StaticObserver::Params{{0, 0, D, 0}};
-  EquirectCamera::Params p;
+  EquirectParams p;
   p.stereo = StereoLayout::top_bottom;
   p.separation = 2 * r;
   fs.camera = p;
@@ -168,7 +168,7 @@ TEST(Stereo, PointStarsAreDrawnInEachEyesPictureOnce) {
   SceneSpec fs;
   fs.spacetime = Minkowski{};
   fs.observer = StaticObserver::Params{{0, 0, 40, 0}};
-  PinholeCamera::Params p;
+  PinholeParams p;
   p.fov = 20;
   p.stereo = StereoLayout::top_bottom;
   p.separation = 0.5;
