@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "image/starfield.hpp"
+#include "image/generated_stars.hpp"
 #include "assets/asset_path.hpp"
 #include "worldline/worldline.hpp"
 

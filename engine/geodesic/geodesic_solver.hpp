@@ -12,7 +12,7 @@
 
 #include "core/constants.hpp"
 #include "geodesic/stop_reason.hpp"
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 #include "spacetime/spacetime.hpp"
 
 namespace lc {

@@ -6,5 +6,5 @@
 #include "image/frame_image.hpp"
 #include "image/image_io.hpp"
 #include "image/srgb.hpp"
-#include "image/starfield.hpp"
+#include "image/generated_stars.hpp"
 #include "image/texture.hpp"

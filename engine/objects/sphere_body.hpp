@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "core/tensor.hpp"
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 #include "worldline/worldline.hpp"
 
 namespace lc {

@@ -13,7 +13,7 @@
 
 #include "core/constants.hpp"
 #include "core/tensor.hpp"
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 #include "spacetime/chart.hpp"
 
 namespace lc {

@@ -2,7 +2,7 @@
 // The registry of observer kinds: every kind lightcone knows, one line each,
 // each a class satisfying ObserverModel in its own file.  A scene holds what
 // a shot gave (ObserverSpec: lc.<name>{...}); the built scene holds the
-// observer as a path (ObserverPath): the eye (observer/eye.hpp) at any time
+// observer as a path (ObserverPath): the eye (eye/eye.hpp) at any time
 // offset within the frame, so a camera sample with its own time has a
 // place to start from.
 
@@ -18,8 +18,8 @@
 
 #include "assets/shot_resources.hpp"
 #include "core/registry.hpp"
-#include "observer/eye.hpp"
-#include "observer/tetrad.hpp"
+#include "eye/eye.hpp"
+#include "eye/tetrad.hpp"
 #include "observers/free_fall.hpp"
 #include "observers/observer_point.hpp"
 #include "observers/static_observer.hpp"

@@ -1,11 +1,11 @@
 #pragma once
 // lc.static_observer{r, theta, phi} / {x, y, z}: at rest at a place (its
 // 4-velocity along the scene time's ∂t), legs along the polar basis there
-// (observer/tetrad.hpp).  None exists inside a Kerr ergoregion.
+// (eye/tetrad.hpp).  None exists inside a Kerr ergoregion.
 
 #include <string_view>
 
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 #include "observers/at_rest.hpp"
 
 namespace lc {

@@ -1,12 +1,12 @@
 #pragma once
 // lc.zamo{r, theta, phi} / {x, y, z}: the zero-angular-momentum observer at
-// a place (4-velocity along -grad t, observer/tetrad.hpp): it exists
+// a place (4-velocity along -grad t, eye/tetrad.hpp): it exists
 // everywhere outside the horizon, the ergoregion included; in a static
 // spacetime it is the static observer.
 
 #include <string_view>
 
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 #include "observers/at_rest.hpp"
 
 namespace lc {

@@ -15,8 +15,8 @@
 
 #include "geodesic/crossing.hpp"
 #include "spacetime/weak_field_tail.hpp"
-#include "observer/ray_direction.hpp"
-#include "observer/tetrad.hpp"
+#include "eye/ray_direction.hpp"
+#include "eye/tetrad.hpp"
 #include "render/hit_record.hpp"
 #include "render/ray_start.hpp"
 #include "render/scene.hpp"

@@ -13,7 +13,7 @@
 
 #include "geodesic/crossing.hpp"
 #include "geodesic/kerr_mino.hpp"
-#include "observer/ray_direction.hpp"
+#include "eye/ray_direction.hpp"
 #include "render/hamiltonian_ray.hpp"
 #include "render/hit_record.hpp"
 #include "render/scene.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // Camera rays -> ray starts: the stage between a camera's answer
 // (camera/camera_sample.hpp) and the trace.  A ray starts from an eye (an
-// event and the orthonormal frame there: observer/eye.hpp) along a
+// event and the orthonormal frame there: eye/eye.hpp) along a
 // direction on the eye's legs.  Rays from the observer's own event share
 // the frame's eye; a displaced eye (stereo) is made here.
 
@@ -11,8 +11,8 @@
 #include <fmt/format.h>
 
 #include "camera/camera_sample.hpp"
-#include "observer/eye.hpp"
-#include "observer/tetrad.hpp"
+#include "eye/eye.hpp"
+#include "eye/tetrad.hpp"
 #include "render/scene.hpp"
 #include "spacetime/chart.hpp"
 

@@ -15,7 +15,7 @@
 
 #include "geodesic/null_ray.hpp"
 #include "camera/camera.hpp"
-#include "observer/eye.hpp"
+#include "eye/eye.hpp"
 #include "light/light.hpp"
 #include "objects/objects.hpp"
 #include "observers/observers.hpp"

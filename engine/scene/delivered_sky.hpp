@@ -29,7 +29,7 @@ inline SkySpec delivered_sky(const SkySpec& shot_sky, DeliverySky to) {
     real = *p;
     real.catalogue = StarCatalogue::kstars;
     if (real.background == "generated") real.background = "none";
-  } else if (const auto* p = std::get_if<StarSky::Params>(&shot_sky)) {
+  } else if (const auto* p = std::get_if<StarImageSky::Params>(&shot_sky)) {
     real.rotate = p->rotate;
     real.brightness = p->brightness;
   } else if (const auto* p = std::get_if<CheckerSky::Params>(&shot_sky)) {

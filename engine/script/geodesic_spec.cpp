@@ -7,7 +7,7 @@
 #include "core/constants.hpp"
 #include "lua/sandbox.hpp"
 #include "lua/table_reader.hpp"
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 #include "script/engine_api.hpp"
 #include "script/script_paths.hpp"
 #include "script/spacetime_reader.hpp"

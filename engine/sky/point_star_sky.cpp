@@ -8,7 +8,7 @@
 
 #include "assets/shot_resources.hpp"
 #include "core/constants.hpp"
-#include "image/starfield.hpp"
+#include "image/generated_stars.hpp"
 #include "sky/texture_sky.hpp"
 #include "stars/star_catalogue.hpp"
 
@@ -35,7 +35,7 @@ Vec3 turned(const Vec3& d, double rotate) {
 }
 
 // The generated field's stars: each one's light is its texture rendering's
-// (image/starfield.hpp), shifted as a texture's colour.
+// (image/generated_stars.hpp), shifted as a texture's colour.
 StarField generated_stars(const PointStarSky::Params& p, ShotResources& res) {
   std::vector<PointStar> out;
   const double scale = std::exp2(p.brightness);

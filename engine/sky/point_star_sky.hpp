@@ -3,7 +3,7 @@
 // pass after the pixels (stars/star_pass.hpp) from the rays' directions at
 // infinity, so they stay sharp at any field of view and are lensed as
 // points are, over a diffuse background each ray looks up as a texture.
-// The stars come from the generated field (image/starfield.hpp: the same
+// The stars come from the generated field (image/generated_stars.hpp: the same
 // catalogue as lc.sky_stars{}, its Milky-Way-like band included) or from
 // KStars' catalogue of Hipparcos and Tycho stars as Debian's kstars-data
 // installs it (read there, never shipped: it is GPL data).

@@ -20,7 +20,7 @@
 #include "sky/checker_sky.hpp"
 #include "sky/image_sky.hpp"
 #include "sky/point_star_sky.hpp"
-#include "sky/star_sky.hpp"
+#include "sky/star_image_sky.hpp"
 
 namespace lc {
 
@@ -43,7 +43,7 @@ concept SkyModel = requires(const K& k, const typename K::Params& p, ShotResourc
 };
 
 // Every sky kind, one line each.
-using SkyRegistry = Registry<CheckerSky, ImageSky, StarSky, PointStarSky>;
+using SkyRegistry = Registry<CheckerSky, ImageSky, StarImageSky, PointStarSky>;
 
 // One assertion per sky: the compiler's notes name the one that fails and
 // the requirement it misses.

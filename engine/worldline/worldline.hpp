@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 #include "worldline/worldline_spec.hpp"
 
 namespace lc {

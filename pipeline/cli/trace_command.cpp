@@ -10,7 +10,7 @@
 #include "command_output.hpp"
 #include "core/json.hpp"
 #include "job/frame_range.hpp"
-#include "render/hit_kinds.hpp"
+#include "render/hit_kind_names.hpp"
 #include "geodesic_csv.hpp"
 #include "render/scene_builder.hpp"
 #include "job/image_size.hpp"

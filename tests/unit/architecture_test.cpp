@@ -26,7 +26,7 @@ const std::vector<std::vector<std::string>> engine_levels = {
     {"core"},
     {"light"},
     {"lua", "image", "spacetime", "stars"},
-    {"observer"},
+    {"eye"},
     {"geodesic"},
     {"worldline"},
     {"assets"},
@@ -161,7 +161,7 @@ TEST(Architecture, TheSamplePathTableNamesTheStageFiles) {
   const std::string section = doc.substr(head, doc.find("\n\n", head) - head);
   std::set<std::string> stages;
   static const std::regex row(R"(\n\| (\w+) \| ([^|]+) \|)");
-  static const std::regex file(R"(`((?:core|light|lua|image|stars|spacetime|observer|geodesic|worldline|assets|camera|sky|objects|observers|scene|render|script)/[\w/]+\.[ch]pp)`)");
+  static const std::regex file(R"(`((?:core|light|lua|image|stars|spacetime|eye|geodesic|worldline|assets|camera|sky|objects|observers|scene|render|script)/[\w/]+\.[ch]pp)`)");
   for (auto r = std::sregex_iterator(section.begin(), section.end(), row); r != std::sregex_iterator(); ++r) {
     const std::string stage = (*r)[1], files = (*r)[2];
     if (stage == "stage") continue;  // the header

@@ -196,7 +196,7 @@ TEST(Delivery, SkyKstarsSwitchesStarsAndReplacesTheCheckerButNotAnImage) {
   generated.background = "milkyway.png";
   EXPECT_EQ(std::get<PointStarSky::Params>(delivered_sky(SkySpec{generated}, DeliverySky::kstars)).background,
             "milkyway.png");
-  StarSky::Params texture;
+  StarImageSky::Params texture;
   texture.rotate = 5;
   const auto from_texture = std::get<PointStarSky::Params>(delivered_sky(SkySpec{texture}, DeliverySky::kstars));
   EXPECT_EQ(from_texture.catalogue, StarCatalogue::kstars);

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/constants.hpp"
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 #include "render/trace.hpp"
 #include "spacetime/spacetime.hpp"
 

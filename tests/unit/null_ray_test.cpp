@@ -11,7 +11,7 @@
 #include "geodesic/crossing.hpp"
 #include "geodesic/geodesic_solver.hpp"
 #include "geodesic/null_ray.hpp"
-#include "observer/ray_direction.hpp"
+#include "eye/ray_direction.hpp"
 
 namespace lc {
 namespace {

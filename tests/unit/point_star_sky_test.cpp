@@ -19,7 +19,7 @@
 
 #include "assets/shot_resources.hpp"
 #include "core/constants.hpp"
-#include "image/starfield.hpp"
+#include "image/generated_stars.hpp"
 #include "light/light.hpp"
 #include "scratch_dir.hpp"
 #include "sky/texture_sky.hpp"

@@ -49,7 +49,7 @@ TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Disk::Params>(fs.objects[0]).sectors = 25; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects.erase(fs.objects.begin()); }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<CheckerSky::Params>(fs.sky).rotate = 1e-12; }));
-  EXPECT_TRUE(differs([](SceneSpec& fs) { fs.sky = StarSky::Params{2}; }));
+  EXPECT_TRUE(differs([](SceneSpec& fs) { fs.sky = StarImageSky::Params{2}; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Vec4>(std::get<Sphere::Params>(fs.objects[1]).placement.at)[1] = 12.5; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Sphere::Params>(fs.objects[1]).colors.a[0] = 0.5f; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects.push_back(fs.objects[1]); }));

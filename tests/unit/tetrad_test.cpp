@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 #include "spacetime/spacetime.hpp"
 
 namespace lc {

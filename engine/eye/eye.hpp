@@ -8,7 +8,7 @@
 // eye get theirs from the observer's path.
 
 #include "core/tensor.hpp"
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 
 namespace lc {
 

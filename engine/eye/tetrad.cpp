@@ -1,4 +1,4 @@
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 
 #include <algorithm>
 #include <cmath>

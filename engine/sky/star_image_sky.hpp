@@ -1,5 +1,5 @@
 #pragma once
-// lc.sky_stars{...}: the procedural star field (image/starfield.hpp) made in
+// lc.sky_stars{...}: the procedural star field (image/generated_stars.hpp) made in
 // memory for any seed, as an equirectangular texture `resolution` pixels
 // wide.
 
@@ -22,7 +22,7 @@ namespace lc {
 
 class ShotResources;
 
-class StarSky : public TextureSky {
+class StarImageSky : public TextureSky {
  public:
   static constexpr std::string_view name = "sky_stars";
   struct Params {
@@ -42,7 +42,7 @@ class StarSky : public TextureSky {
   };
   static std::vector<std::string> assets(const Params&) { return {}; }
 
-  StarSky(const Params& p, ShotResources& res);
+  StarImageSky(const Params& p, ShotResources& res);
 };
 
 }  // namespace lc

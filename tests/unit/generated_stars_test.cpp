@@ -41,7 +41,7 @@ double luminance(const FrameImage& im, int i, int j) {
   return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
 }
 
-TEST(Starfield, SameSeedSameBytesOtherSeedOtherSky) {
+TEST(GeneratedStars, SameSeedSameBytesOtherSeedOtherSky) {
   ScratchDir dir;
   lc::make_starfield(dir / "a.png", 64, 32, 7);
   lc::make_starfield(dir / "b.png", 64, 32, 7);
@@ -57,7 +57,7 @@ TEST(Starfield, SameSeedSameBytesOtherSeedOtherSky) {
   EXPECT_EQ(t.height(), 32);
 }
 
-TEST(Starfield, CatalogueHasAFewThousandStarsMostlyFaintSlightlyTinted) {
+TEST(GeneratedStars, CatalogueHasAFewThousandStarsMostlyFaintSlightlyTinted) {
   const std::vector<Star> stars = lc::starfield_catalogue(1);
   ASSERT_GE(stars.size(), 2000u);
   ASSERT_LE(stars.size(), 10000u);
@@ -87,7 +87,7 @@ TEST(Starfield, CatalogueHasAFewThousandStarsMostlyFaintSlightlyTinted) {
   EXPECT_NE(lc::starfield_catalogue(2)[0].direction, stars[0].direction);
 }
 
-TEST(Starfield, RenderedSkyIsDarkWithDistinctStars) {
+TEST(GeneratedStars, RenderedSkyIsDarkWithDistinctStars) {
   const FrameImage im = lc::render_starfield(256, 128, 1);
   ASSERT_EQ(im.rgb.size(), 3u * 256 * 128);
   std::vector<double> lum;
@@ -154,7 +154,7 @@ FrameImage black(int w, int h) {
   return im;
 }
 
-TEST(Starfield, StarsAreRoundOnTheSphereAndWiderNearThePoles) {
+TEST(GeneratedStars, StarsAreRoundOnTheSphereAndWiderNearThePoles) {
   const double texel = kPi / 64;  // of a 128 x 64 image
   // 1.5 texels: footprints bounded in longitude; 3 texels: the caps near
   // the poles reach them and take whole rows.
@@ -203,7 +203,7 @@ TEST(Starfield, StarsAreRoundOnTheSphereAndWiderNearThePoles) {
   EXPECT_GT(luminance(im, 0, 0), 0.1);
 }
 
-TEST(Starfield, BadSizeThrowsNamingTheFile) {
+TEST(GeneratedStars, BadSizeThrowsNamingTheFile) {
   ScratchDir dir;
   const fs::path file = dir / "sky.png";
   for (auto [w, h] : {std::array<int, 2>{0, 16}, {32, -1}, {40000, 20000}}) {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "observer/tetrad.hpp"
+#include "eye/tetrad.hpp"
 
 namespace lc {
 

@@ -1,4 +1,4 @@
-#include "image/starfield.hpp"
+#include "image/generated_stars.hpp"
 
 #include <algorithm>
 #include <cmath>
