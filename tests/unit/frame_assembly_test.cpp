@@ -7,20 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include "tiny_frame.hpp"
+
 #include "schedule/frame_assembly.hpp"
 
 namespace lc::farm {
 namespace {
 
-RenderSettings frame_of(int w, int h) {
-  RenderSettings rs;
-  rs.width = w;
-  rs.height = h;
-  return rs;
-}
-
 TEST(FrameAssembly, AFrameCompletesWithItsLastStripeAndHoldsItsSlotUntilStored) {
-  FrameAssembly a(frame_of(2, 4), StripeLayout(4, 2), 1, {});
+  FrameAssembly a(test::settings_of_size(2, 4), StripeLayout(4, 2), 1, {});
   a.open(Pass::full, 7, 2);
   EXPECT_EQ(a.canvas(Pass::full, 7).height, 4);
   a.canvas(Pass::full, 7).rgb[0] = 0.5f;
@@ -41,7 +36,7 @@ TEST(FrameAssembly, AFrameCompletesWithItsLastStripeAndHoldsItsSlotUntilStored) 
 }
 
 TEST(FrameAssembly, ASetNotOutIsRefused) {
-  FrameAssembly a(frame_of(2, 4), StripeLayout(4, 2), 2, {});
+  FrameAssembly a(test::settings_of_size(2, 4), StripeLayout(4, 2), 2, {});
   EXPECT_THROW(a.finish({0, 0, Pass::full}, 0, {}, 0, ""), std::logic_error);  // frame not open
   a.open(Pass::full, 0, 2);
   EXPECT_THROW(a.finish({0, 5, Pass::full}, -1, {}, 0, ""), std::logic_error);  // no such stripe
@@ -52,7 +47,7 @@ TEST(FrameAssembly, ASetNotOutIsRefused) {
 }
 
 TEST(FrameAssembly, TheTotalsCountPreviewsAndOnlyFullFramesAreListedOpen) {
-  FrameAssembly a(frame_of(2, 8), StripeLayout(8, 8), 3, {0, 4});
+  FrameAssembly a(test::settings_of_size(2, 8), StripeLayout(8, 8), 3, {0, 4});
   EXPECT_EQ(a.progress().frames_total, 3);
   EXPECT_EQ(a.progress().previews_total, 3);
   EXPECT_EQ(a.progress().rows_total, 3 * 8 + 3 * 2);

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tiny_frame.hpp"
+
 #include "schedule/farm_run.hpp"
 #include "store/frame_store.hpp"
 #include "schedule/work_queue.hpp"
@@ -18,16 +20,9 @@
 namespace lc::farm {
 namespace {
 
-RenderSettings settings(int w, int h) {
-  RenderSettings rs;
-  rs.width = w;
-  rs.height = h;
-  return rs;
-}
-
 // Hands out everything single-threaded and checks each set appears once.
 TEST(WorkQueue, EverySetOnceInFrameOrder) {
-  WorkQueue q(settings(4, 10), StripeLayout(10, 5), {3, 7, 9}, {.preview_every = 0, .max_open_frames = 100});
+  WorkQueue q(test::settings_of_size(4, 10), StripeLayout(10, 5), {3, 7, 9}, {.preview_every = 0, .max_open_frames = 100});
   std::vector<WorkItem> items;
   while (auto i = q.take()) items.push_back(*i);
   EXPECT_TRUE(q.drained());
@@ -43,7 +38,7 @@ TEST(WorkQueue, WorkersGetBackTheStripesTheyHadBefore) {
   // Two MPI workers (ranks 1 and 2) asking in turns share frame 0; in frame
   // 1 each gets the stripes it had, whoever asks first and however often,
   // so its sample memo holds their rows.  What one leaves, the other takes.
-  WorkQueue q(settings(4, 12), StripeLayout(12, 6), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 100});
+  WorkQueue q(test::settings_of_size(4, 12), StripeLayout(12, 6), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 100});
   std::map<int, std::set<int>> had;
   for (int k = 0; k < 6; ++k) {
     const int rank = 1 + k % 2;
@@ -76,7 +71,7 @@ TEST(WorkQueue, WorkersGetBackTheStripesTheyHadBefore) {
 }
 
 TEST(WorkQueue, FrameCompletesWithItsLastStripeAndHoldsItsRows) {
-  WorkQueue q(settings(3, 4), StripeLayout(4, 2), {0}, {});
+  WorkQueue q(test::settings_of_size(3, 4), StripeLayout(4, 2), {0}, {});
   const auto a = *q.take(), b = *q.take();
   // Write each stripe's row numbers into its rows, in reverse order of hand-out.
   for (const auto& item : {b, a})
@@ -98,7 +93,7 @@ TEST(WorkQueue, FrameCompletesWithItsLastStripeAndHoldsItsRows) {
 // and when its first set was handed out (the journal's wall time starts
 // there); of more ranks than are listed, those that rendered the most.
 TEST(WorkQueue, AFrameNamesTheRanksThatRenderedItAndWhenItWasDispatched) {
-  WorkQueue q(settings(2, 4), StripeLayout(4, 4), {0}, {});
+  WorkQueue q(test::settings_of_size(2, 4), StripeLayout(4, 4), {0}, {});
   const auto before = std::chrono::steady_clock::now();
   const auto a = *q.take_for(2), b = *q.take_for(1), c = *q.take_for(2), d = *q.take_for(2);
   q.finish(a, {}, 2, "node-b");
@@ -111,7 +106,7 @@ TEST(WorkQueue, AFrameNamesTheRanksThatRenderedItAndWhenItWasDispatched) {
   EXPECT_LE(done->dispatched, std::chrono::steady_clock::now());
 
   const int ranks = static_cast<int>(max_listed_ranks) + 4;
-  WorkQueue many(settings(2, 64), StripeLayout(64, 64), {0}, {});
+  WorkQueue many(test::settings_of_size(2, 64), StripeLayout(64, 64), {0}, {});
   std::vector<WorkItem> items;
   while (auto i = many.take()) items.push_back(*i);
   ASSERT_EQ(items.size(), 64u);
@@ -132,7 +127,7 @@ TEST(WorkQueue, AFrameNamesTheRanksThatRenderedItAndWhenItWasDispatched) {
 }
 
 TEST(WorkQueue, DuplicateOrUnknownSetIsRefused) {
-  WorkQueue q(settings(2, 4), StripeLayout(4, 2), {0}, {});
+  WorkQueue q(test::settings_of_size(2, 4), StripeLayout(4, 2), {0}, {});
   const auto a = *q.take();
   q.finish(a, {});
   EXPECT_THROW(q.finish(a, {}), std::logic_error);
@@ -140,7 +135,7 @@ TEST(WorkQueue, DuplicateOrUnknownSetIsRefused) {
 }
 
 TEST(WorkQueue, PreviewStripesOfEveryFrameComeFirst) {
-  WorkQueue q(settings(2, 8), StripeLayout(8, 8), {0, 1}, {.preview_every = 4, .max_open_frames = 100});
+  WorkQueue q(test::settings_of_size(2, 8), StripeLayout(8, 8), {0, 1}, {.preview_every = 4, .max_open_frames = 100});
   EXPECT_EQ(q.stripes_of(Pass::preview), (std::vector<int>{0, 4}));
   std::vector<WorkItem> items;
   while (auto i = q.take()) items.push_back(*i);
@@ -156,7 +151,7 @@ TEST(WorkQueue, PreviewStripesOfEveryFrameComeFirst) {
 }
 
 TEST(WorkQueue, OpenFramesAreBounded) {
-  WorkQueue q(settings(2, 2), StripeLayout(2, 2), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 2});
+  WorkQueue q(test::settings_of_size(2, 2), StripeLayout(2, 2), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 2});
   std::vector<WorkItem> items;
   while (auto i = q.take()) items.push_back(*i);
   EXPECT_EQ(items.size(), 4u);  // frames 0 and 1; frame 2 waits for a slot
@@ -169,7 +164,7 @@ TEST(WorkQueue, OpenFramesAreBounded) {
 }
 
 TEST(WorkQueue, StopEndsTakeWait) {
-  WorkQueue q(settings(2, 2), StripeLayout(2, 1), {0, 1}, {.preview_every = 0, .max_open_frames = 1});
+  WorkQueue q(test::settings_of_size(2, 2), StripeLayout(2, 1), {0, 1}, {.preview_every = 0, .max_open_frames = 1});
   ASSERT_TRUE(q.take().has_value());
   std::thread waiter([&] { EXPECT_FALSE(q.take_wait().has_value()); });
   q.stop();
@@ -193,7 +188,7 @@ class RecordingSink final : public FrameSink {
 // exactly one set, every frame stored once.
 TEST(WorkQueue, ThreadsShareTheQueue) {
   const int W = 5, H = 23;
-  WorkQueue q(settings(W, H), StripeLayout(H, 6), {0, 1, 2, 3, 4, 5, 6, 7}, {.preview_every = 3, .max_open_frames = 3});
+  WorkQueue q(test::settings_of_size(W, H), StripeLayout(H, 6), {0, 1, 2, 3, 4, 5, 6, 7}, {.preview_every = 3, .max_open_frames = 3});
   RecordingSink sink;
   {
     FarmRun run(q, sink);
@@ -232,7 +227,7 @@ TEST(WorkQueue, ThreadsShareTheQueue) {
 // A signal noticed by the run stops the queue but is no error: the frame
 // completed before it is still stored, the one half done is not.
 TEST(WorkQueue, AnInterruptedRunStoresWhatIsComplete) {
-  WorkQueue q(settings(2, 4), StripeLayout(4, 2), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 3});
+  WorkQueue q(test::settings_of_size(2, 4), StripeLayout(4, 2), {0, 1, 2}, {.preview_every = 0, .max_open_frames = 3});
   RecordingSink sink;
   int signal = 0;
   {
