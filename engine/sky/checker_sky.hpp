@@ -13,6 +13,7 @@
 #include "core/color.hpp"
 #include "core/constants.hpp"
 #include "core/fields.hpp"
+#include "sky/point_star_sky.hpp"
 #include "sky/texture_sky.hpp"
 
 namespace lc {
@@ -38,6 +39,9 @@ class CheckerSky {
     };
   };
   static std::vector<std::string> assets(const Params&) { return {}; }
+  // What render --sky kstars delivers it as: a stand-in for a sky, it gives
+  // way to the real stars at its rotation and brightness.
+  static PointStarSky::Params real_stars(const Params& p) { return real_stars_at(p.rotate, p.brightness); }
 
   CheckerSky(const Params& p, ShotResources&) : p_(p), scale_(brightness_scale(p.brightness)) {}
 

@@ -16,6 +16,7 @@
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "image/texture.hpp"
+#include "sky/point_star_sky.hpp"
 #include "sky/texture_sky.hpp"
 
 namespace lc {
@@ -39,6 +40,11 @@ class ImageSky : public TextureSky {
   };
   // The file a frame with this sky reads (resolved as resolve_sky_image says).
   static std::vector<std::string> assets(const Params& p) { return {p.file}; }
+  // What render --sky kstars delivers it as: nothing.  The image is the
+  // shot's own picture, perhaps of stars (the real ones would be doubled)
+  // or of a Milky Way (which belongs behind them): only the shot can say,
+  // so this throws std::invalid_argument saying how.
+  [[noreturn]] static PointStarSky::Params real_stars(const Params& p);
 
   ImageSky(const Params& p, ShotResources& res);
 };

@@ -95,6 +95,13 @@ std::vector<std::string> PointStarSky::system_files(const Params& p) {
   return {};
 }
 
+PointStarSky::Params PointStarSky::real_stars(const Params& p) {
+  Params real = p;
+  real.catalogue = StarCatalogue::kstars;
+  if (real.background == "generated") real.background = "none";
+  return real;
+}
+
 void PointStarSky::Params::validate() const {
   if (catalogue == StarCatalogue::kstars) {
     const std::string file = kstars_catalogue_path();

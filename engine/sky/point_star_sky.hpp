@@ -94,6 +94,11 @@ class PointStarSky {
   static std::vector<std::string> assets(const Params& p);
   // The KStars catalogue, when the stars are read from it.
   static std::vector<std::string> system_files(const Params& p);
+  // What render --sky kstars delivers this sky as (every sky kind has one:
+  // SkyModel): every field but the catalogue kept, a "generated" background
+  // becoming "none", since the generated field's band is not the real
+  // Milky Way.
+  static Params real_stars(const Params& p);
   // What p.background stands for: "generated", "none" or an image's file
   // ("auto" resolved by the catalogue).
   static std::string background(const Params& p);
@@ -113,5 +118,16 @@ class PointStarSky {
   std::shared_ptr<const Texture> background_;  // none: black
   PointStars stars_;
 };
+
+// The real stars (KStars' catalogue) at `rotate` degrees and `brightness`
+// stops, the rest defaults: what render --sky kstars makes of the skies
+// that only stand in for one (the generated stars, the checker).
+inline PointStarSky::Params real_stars_at(double rotate, double brightness) {
+  PointStarSky::Params real;
+  real.catalogue = StarCatalogue::kstars;
+  real.rotate = rotate;
+  real.brightness = brightness;
+  return real;
+}
 
 }  // namespace lc

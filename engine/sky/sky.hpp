@@ -32,12 +32,16 @@ class ShotResources;
 // the colour for a direction (theta from +z, phi = atan2(y, x)); a sky with
 // stars as points also has point_stars() (sky/point_star_sky.hpp), and one
 // that reads a file of the system's (not the shot's: a star catalogue) has
-// a static system_files(params) naming it by absolute path.
+// a static system_files(params) naming it by absolute path.  Each says what
+// render --sky kstars delivers it as: a static real_stars(params), the
+// real stars' parameters (scene/delivered_sky.hpp), or throwing
+// std::invalid_argument saying why it cannot be.
 template <class K>
 concept SkyModel = requires(const K& k, const typename K::Params& p, ShotResources& res, double a) {
   requires std::same_as<std::remove_cv_t<decltype(K::name)>, std::string_view>;
   requires HasFields<typename K::Params>;
   { K::assets(p) } -> std::same_as<std::vector<std::string>>;
+  { K::real_stars(p) } -> std::same_as<PointStarSky::Params>;
   K(p, res);
   { k.color(a, a) } -> std::same_as<Color>;
 };

@@ -16,6 +16,7 @@
 #include "core/constants.hpp"
 #include "core/fields.hpp"
 #include "image/texture.hpp"
+#include "sky/point_star_sky.hpp"
 #include "sky/texture_sky.hpp"
 
 namespace lc {
@@ -41,6 +42,9 @@ class StarImageSky : public TextureSky {
     };
   };
   static std::vector<std::string> assets(const Params&) { return {}; }
+  // What render --sky kstars delivers it as: the generated stars stand in
+  // for the real ones, which replace them at their rotation and brightness.
+  static PointStarSky::Params real_stars(const Params& p) { return real_stars_at(p.rotate, p.brightness); }
 
   StarImageSky(const Params& p, ShotResources& res);
 };

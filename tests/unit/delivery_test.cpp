@@ -10,8 +10,13 @@
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
 #include <variant>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -25,6 +30,7 @@
 #include "job/render_job.hpp"
 #include "scene/delivered_sky.hpp"
 #include "scene/scene_spec.hpp"
+#include "sky/sky.hpp"
 #include "scratch_dir.hpp"
 
 namespace lc {
@@ -217,6 +223,60 @@ TEST(Delivery, SkyKstarsSwitchesStarsAndReplacesTheCheckerButNotAnImage) {
   }
   // Without --sky every sky is the shot's.
   EXPECT_TRUE(std::holds_alternative<ImageSky::Params>(delivered_sky(SkySpec{image}, DeliverySky::shot)));
+}
+
+// A sky kind with every member of SkyModel but real_stars: what a new kind
+// that forgot to say what render --sky kstars makes of it looks like.
+struct SkyWithoutRealStars {
+  static constexpr std::string_view name = "sky_toy";
+  struct Params {
+    double rotate = 0.0;
+    static constexpr auto fields = std::tuple{
+        field("rotate", &Params::rotate, std::optional<double>{0.0}, std::nullopt, std::nullopt, "longitude", "degrees"),
+    };
+  };
+  static std::vector<std::string> assets(const Params&) { return {}; }
+  SkyWithoutRealStars(const Params&, ShotResources&) {}
+  Color color(double, double) const { return {0.0f, 0.0f, 0.0f}; }
+};
+struct SkyWithRealStars : SkyWithoutRealStars {
+  using SkyWithoutRealStars::SkyWithoutRealStars;
+  static PointStarSky::Params real_stars(const Params& p) { return real_stars_at(p.rotate, 0.0); }
+};
+// A sky that does not say what it is delivered as under --sky kstars is
+// not a sky: the registry's static_assert refuses it by name, where before
+// it silently became the real stars at rotation 0 and brightness 0.
+static_assert(!SkyModel<SkyWithoutRealStars>, "a sky kind must say what --sky kstars delivers it as");
+static_assert(SkyModel<SkyWithRealStars>);
+
+// Every registered sky, its rotate and brightness set: under --sky kstars
+// each is the real stars at them, or (an image) refused naming its file.
+TEST(Delivery, SkyKstarsCarriesEveryKindsRotationAndBrightnessOrRefusesIt) {
+  int kinds = 0;
+  SkyRegistry::for_each([&](auto* kind) {
+    using K = std::remove_pointer_t<decltype(kind)>;
+    typename K::Params p;
+    p.rotate = 7;
+    p.brightness = 3;
+    if constexpr (std::is_same_v<K, ImageSky>) p.file = "pano.exr";
+    ++kinds;
+    try {
+      const auto real = std::get<PointStarSky::Params>(delivered_sky(SkySpec{p}, DeliverySky::kstars));
+      EXPECT_FALSE((std::is_same_v<K, ImageSky>)) << "an image sky was replaced";
+      EXPECT_EQ(real.catalogue, StarCatalogue::kstars) << K::name;
+      EXPECT_EQ(real.rotate, 7.0) << K::name;
+      EXPECT_EQ(real.brightness, 3.0) << K::name;
+      EXPECT_EQ(real.background, "auto") << K::name;  // the real sky's default, black
+    } catch (const std::invalid_argument& e) {
+      EXPECT_TRUE((std::is_same_v<K, ImageSky>)) << K::name << ": " << e.what();
+      EXPECT_EQ(std::string(e.what()),
+                "--sky kstars: the sky is lc.sky_image{file = \"pano.exr\"}, a picture of the shot's own that the "
+                "real stars would be drawn over (stars in it would be doubled): to keep it behind them give the shot "
+                "lc.starfield{catalogue = \"kstars\", background = \"pano.exr\"}, else leave out --sky "
+                "(docs/cameras.md)");
+    }
+  });
+  EXPECT_EQ(kinds, 4);  // a new kind: add its expectation above
 }
 
 TEST(Delivery, TheJournalSpellsTheDeliveryAndOlderLinesReadAsBefore) {
