@@ -1,20 +1,30 @@
 #pragma once
-// The camera a shot asked for (lc.<name>{...}): one of the registered
-// cameras' parameters, one line each below, in the order of the cameras'
-// registry (camera/camera.hpp, which checks the two lists agree).  What
-// holds, reads, keys or describes a camera spec includes this header, not
-// the cameras' code (docs/architecture.md, "What a new kind rebuilds").
+// The camera a shot asked for (lc.<name>{...}): one registered camera's
+// parameters in a box (core/spec_box.hpp) whose list of kinds
+// (camera/camera_params.hpp) this header does not include, so that what
+// holds, copies or passes on a camera spec — a scene spec, the shot, the
+// jobs — is not rebuilt for a new camera kind (docs/architecture.md,
+// "What a new kind rebuilds").  Made from one kind's Params
+// (CameraSpec{PinholeParams{...}}); read back with get<P>() or, where the
+// list is included, visited through kinds().
 
-#include "camera/equirect_params.hpp"
-#include "camera/fisheye_params.hpp"
-#include "camera/pinhole_params.hpp"
-#include "core/registry.hpp"
+#include <string>
+#include <string_view>
+
+#include "core/spec_box.hpp"
 
 namespace lc {
 
-// Every camera kind's parameters, one line each.
-using CameraSpecs = SpecRegistry<PinholeParams, FisheyeParams, EquirectParams>;
+struct CameraSpecKinds;  // camera/camera_params.hpp
+using CameraSpec = SpecBox<CameraSpecKinds>;
 
-using CameraSpec = CameraSpecs::Spec;
+// Its kind's name (its Lua constructor's: "camera", "fisheye", ...).
+std::string_view camera_name(const CameraSpec& spec);
+// "name field=value ...", exactly (core/registry.hpp, spec_key).
+std::string camera_key(const CameraSpec& spec);
+// {"kind": "name", <each field>: value}.
+std::string camera_json(const CameraSpec& spec);
+// Its eyes' `separation` (M), 0 for a kind without one.
+double stereo_separation(const CameraSpec& spec);
 
 }  // namespace lc

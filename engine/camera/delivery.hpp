@@ -18,38 +18,13 @@
 // Square frames for the dome and ODS, 2:1 for the sphere, of the shot's
 // height (ODS: each eye's 2:1 picture of it) unless a size is given.
 
-#include <array>
-#include <variant>
-
 #include "camera/camera_spec.hpp"
 #include "camera/delivery_camera.hpp"
 
 namespace lc {
 
-static_assert(EquirectParams{}.separation == default_ods_separation,
-              "--separation's default is the equirect's own");
-
 // The camera `shot_camera` (any kind) is delivered through.  Assumes the
 // delivery's angles are in range (the command line checks them).
-inline CameraSpec delivered(const CameraSpec& shot_camera, const Delivery& to) {
-  if (to.camera == DeliveryCamera::shot) return shot_camera;
-  const auto [yaw, pitch, roll] =
-      std::visit([](const auto& p) { return std::array<double, 3>{p.yaw, p.pitch, p.roll}; }, shot_camera);
-  if (to.camera == DeliveryCamera::dome) {
-    FisheyeParams dome;
-    dome.yaw = yaw;
-    dome.pitch = pitch + (90.0 - to.dome_elevation);
-    dome.roll = roll;
-    dome.tilt = to.dome_tilt;
-    return dome;
-  }
-  EquirectParams sphere;
-  sphere.yaw = yaw;
-  if (to.camera == DeliveryCamera::ods) {
-    sphere.stereo = StereoLayout::top_bottom;
-    sphere.separation = to.separation;
-  }
-  return sphere;
-}
+CameraSpec delivered(const CameraSpec& shot_camera, const Delivery& to);
 
 }  // namespace lc

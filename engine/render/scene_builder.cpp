@@ -48,14 +48,7 @@ void check_eyes(const SceneIn<S>& sc, const CameraSpec& spec) {
       try {
         (void)displaced_eye(sc, r->eye);
       } catch (const std::invalid_argument& e) {
-        const double separation = std::visit(
-            [](const auto& c) {
-              if constexpr (requires { c.separation; })
-                return c.separation;
-              else
-                return 0.0;
-            },
-            spec);
+        const double separation = stereo_separation(spec);
         throw std::invalid_argument(fmt::format(
             "the camera's {} eye (stereo, `separation` {:g} M) cannot stand there: {}; give the camera a smaller "
             "`separation`, or place the observer further out",

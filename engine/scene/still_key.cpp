@@ -33,7 +33,7 @@ static_assert(sizeof(AtRestParams<StaticObserver>) ==
 std::string key_without_clock(const SceneSpec& fs) {
   std::string k = "spacetime " + describe(fs.spacetime, true);
   k += "|observer " + ObserverRegistry::key(fs.observer);
-  k += "|camera " + CameraSpecs::key(fs.camera);
+  k += "|camera " + camera_key(fs.camera);
   k += "|sky " + SkyRegistry::key(fs.sky);
   for (const ObjectSpec& o : fs.objects) k += "|object " + ObjectRegistry::key(o);
   k += "|light" + fields_key(fs.light);

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "camera/camera.hpp"
+#include "camera/camera_params.hpp"
 #include "core/fields.hpp"
 #include "light/light.hpp"
 #include "objects/objects.hpp"
@@ -87,7 +87,7 @@ std::string constructor_tables() {
     });
   };
   kinds("Observers", ObserverRegistry{});
-  kinds("Cameras", CameraRegistry{});
+  kinds("Cameras", CameraSpecs{});
   kinds("Skies", SkyRegistry{});
   kinds("Objects", ObjectRegistry{});
   out += "### Light\n\n";

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "lua/table_reader.hpp"
+#include "camera/camera_params.hpp"
 #include "script/scene_reader.hpp"
 #include "worldline/worldline.hpp"
 #include "spacetime/chart.hpp"

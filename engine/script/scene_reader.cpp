@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "camera/camera_params.hpp"
 #include "core/constants.hpp"
 #include "script/field_reader.hpp"
 #include "script/spacetime_reader.hpp"
@@ -117,7 +118,7 @@ Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::s
   return p.coords;
 }
 
-CameraSpec read_camera(TableReader& t) { return read_kind<CameraSpecs>(t, "a camera constructor"); }
+CameraSpec read_camera(TableReader& t) { return CameraSpecKinds(read_kind<CameraSpecs>(t, "a camera constructor")); }
 
 
 SkySpec read_sky(TableReader& t) {

@@ -22,16 +22,19 @@
 
 #include "camera/camera.hpp"
 #include "camera/delivery.hpp"
+#include "camera/equirect.hpp"
+#include "camera/fisheye.hpp"
+#include "camera/pinhole_params.hpp"
 #include "core/constants.hpp"
 #include "job/delivery_flags.hpp"
-#include "store/checked_line.hpp"
-#include "store/journal.hpp"
-#include "monitor/pixel_trace.hpp"
 #include "job/render_job.hpp"
+#include "monitor/pixel_trace.hpp"
 #include "scene/delivered_sky.hpp"
 #include "scene/scene_spec.hpp"
-#include "sky/sky.hpp"
 #include "scratch_dir.hpp"
+#include "sky/sky.hpp"
+#include "store/checked_line.hpp"
+#include "store/journal.hpp"
 
 namespace lc {
 namespace {
@@ -130,7 +133,7 @@ TEST(Delivery, SkyKstarsWithoutTheCatalogueSaysWhichPackageToInstall) {
 void expect_subject_at(const Delivery& d, double elevation, double tilt) {
   PinholeParams shot;  // looking along the aim, no yaw, pitch or roll
   const CameraSpec spec = delivered(CameraSpec{shot}, d);
-  const auto* dome = std::get_if<FisheyeParams>(&spec);
+  const auto* dome = spec.get_if<FisheyeParams>();
   ASSERT_NE(dome, nullptr);
   EXPECT_EQ(dome->tilt, tilt);
   EXPECT_EQ(dome->full_angle, 180.0);
@@ -156,7 +159,7 @@ TEST(Delivery, TheDomePutsTheSubjectAtItsElevationForAnyTilt) {
   PinholeParams looking_up;
   looking_up.pitch = 10;
   looking_up.yaw = 30;
-  const auto dome = std::get<FisheyeParams>(delivered(CameraSpec{looking_up}, d));
+  const auto dome = delivered(CameraSpec{looking_up}, d).get<FisheyeParams>();
   EXPECT_EQ(dome.pitch, 10.0 + 70.0);
   EXPECT_EQ(dome.yaw, 30.0);
 }
@@ -169,7 +172,7 @@ TEST(Delivery, OdsIsTheSphereInTopBottomStereoOnASquareFrame) {
   shot.yaw = 40;
   shot.pitch = 20;
   shot.roll = 5;
-  const auto ods = std::get<EquirectParams>(delivered(CameraSpec{shot}, d));
+  const auto ods = delivered(CameraSpec{shot}, d).get<EquirectParams>();
   EXPECT_EQ(ods.stereo, StereoLayout::top_bottom);
   EXPECT_EQ(ods.separation, 0.5);
   EXPECT_EQ(ods.yaw, 40.0);  // the heading kept, the horizon level
@@ -184,7 +187,7 @@ TEST(Delivery, OdsIsTheSphereInTopBottomStereoOnASquareFrame) {
   EXPECT_EQ(camera.pictures()[0].height, 144);
   d.camera = DeliveryCamera::sphere;
   d.separation = default_ods_separation;
-  EXPECT_EQ(std::get<EquirectParams>(delivered(CameraSpec{shot}, d)).stereo, StereoLayout::mono);
+  EXPECT_EQ(delivered(CameraSpec{shot}, d).get<EquirectParams>().stereo, StereoLayout::mono);
 }
 
 TEST(Delivery, SkyKstarsSwitchesStarsAndReplacesTheCheckerButNotAnImage) {
@@ -361,7 +364,7 @@ TEST(Delivery, TheRenderJobTakesTheDelivery) {
   cmd.delivery.dome_tilt = 15;
   const RenderJob tilted = load_render_job(cmd);
   EXPECT_NE(plain.digest, tilted.digest);
-  const auto camera = std::get<FisheyeParams>(tilted.shot->frame(0).camera);
+  const auto camera = tilted.shot->frame(0).camera.get<FisheyeParams>();
   EXPECT_EQ(camera.tilt, 15.0);
   cmd.delivery = {};
   cmd.delivery.camera = "ods";

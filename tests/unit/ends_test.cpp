@@ -12,6 +12,7 @@
 #include <limits>
 #include <vector>
 
+#include "camera/pinhole_params.hpp"
 #include "core/constants.hpp"
 #include "eye/tetrad.hpp"
 #include "render/trace.hpp"

@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "camera/pinhole_params.hpp"
 #include "core/constants.hpp"
 #include "light/blackbody.hpp"
 #include "light/novikov_thorne.hpp"
@@ -86,7 +87,7 @@ int check_disk_against_cunningham(double a, double theta_deg, KerrChart chart) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, a);
   fs.observer = StaticObserver::Params{{0, 50, theta_deg * degree, 0}};
-  std::get<PinholeParams>(fs.camera).fov = 40;
+  fs.camera.get<PinholeParams>().fov = 40;
   fs.objects.push_back(Disk::Params{Kerr(1, a).isco_radius(), 18, 4, 12});
   ShotResources res;
   RayOptions o;
@@ -135,7 +136,7 @@ TEST(FrequencyShift, TheSkyIsBlueshiftedByTheStaticObserversLapse) {
     SceneSpec fs;
     fs.spacetime = Kerr(1, 0);
     fs.observer = StaticObserver::Params{{0, 10, 60 * degree, 0}};
-    std::get<PinholeParams>(fs.camera).fov = 120;
+    fs.camera.get<PinholeParams>().fov = 120;
     ShotResources res;
     RayOptions o;
     o.kerr_chart = chart;
@@ -176,7 +177,7 @@ TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
   // A static observer at y = 100 looks along -y at the origin.
   SceneSpec fs;
   fs.observer = StaticObserver::Params{{0, 0, 100, 0}};
-  std::get<PinholeParams>(fs.camera).fov = 10;
+  fs.camera.get<PinholeParams>().fov = 10;
 
   // A sphere at rest: no shift at all (exact: p_t = 1 and u = e_t).
   SceneSpec rest = fs;
@@ -235,7 +236,7 @@ std::vector<Color> glowing_disk(double a, KerrChart chart) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, a);
   fs.observer = StaticObserver::Params{{0, 30, 75 * degree, 0}};
-  std::get<PinholeParams>(fs.camera).fov = 50;
+  fs.camera.get<PinholeParams>().fov = 50;
   Disk::Params d{2, 20, 4, 12};
   d.temperature = 8000;
   fs.objects.push_back(d);
@@ -285,7 +286,7 @@ TEST(GlowingDisk, InPhysicalUnitsItsLightIsInCandelasPerSquareMetre) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0.9);
   fs.observer = StaticObserver::Params{{0, 30, 20 * degree, 0}};
-  std::get<PinholeParams>(fs.camera).fov = 50;
+  fs.camera.get<PinholeParams>().fov = 50;
   Disk::Params d{2.4, 12, 4, 12};
   d.solar_masses = 4.3e6;
   d.accretion_rate = 1e-8;

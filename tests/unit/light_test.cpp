@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "camera/pinhole_params.hpp"
 #include "core/constants.hpp"
 #include "light/light.hpp"
 #include "render/scene_builder.hpp"
@@ -94,7 +95,7 @@ TEST(Light, AStaticObserversSkyShiftIsAllGravitational) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0);
   fs.observer = StaticObserver::Params{{0, 10, 60 * degree, 0}};
-  std::get<PinholeParams>(fs.camera).fov = 120;
+  fs.camera.get<PinholeParams>().fov = 120;
   std::get<CheckerSky::Params>(fs.sky).colors = {plain, plain};
   const double lapse_shift = 1 / std::sqrt(1 - 2.0 / 10);
   for (const KerrChart chart : {KerrChart::boyer_lindquist_mino, KerrChart::kerr_schild}) {
@@ -128,7 +129,7 @@ TEST(Light, AZamoOnTheAxisSeesTheDiskShiftedByTheLapses) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, a);
   fs.observer = Zamo::Params{{0, r_o, 0, 0}};
-  std::get<PinholeParams>(fs.camera).fov = 40;
+  fs.camera.get<PinholeParams>().fov = 40;
   Disk::Params d{2.5, 15, 4, 12};
   d.colors = {plain, plain};
   fs.objects.push_back(d);
@@ -160,7 +161,7 @@ TEST(Light, ARunnersShiftIsAllKinematic) {
   FreeFall::Params ride;
   ride.worldline = w;
   fs.observer = ride;
-  std::get<PinholeParams>(fs.camera).fov = 1;
+  fs.camera.get<PinholeParams>().fov = 1;
   std::get<CheckerSky::Params>(fs.sky).colors = {plain, plain};
   fs.light = shifted(0, 1, 0, 1);
   expect_beamed(samples(fs, 1)[0].color, 2.0, "kinematic");

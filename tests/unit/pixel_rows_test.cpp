@@ -75,7 +75,7 @@ TEST(PixelRows, RecordsShadeToTheSamePixels) {
     SceneSpec fs;
     fs.spacetime = Kerr(1, 0.9);
     fs.observer = StaticObserver::Params{{0, 30, 80 * degree, 0}};
-    std::get<PinholeCamera::Params>(fs.camera).fov = 40;
+    fs.camera.get<PinholeCamera::Params>().fov = 40;
     fs.objects.push_back(Disk::Params{6, 15, 9, 24});
     if (sphere) fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 10, 90 * degree, 0}, {0, 0, 0.3}, 60, 1.0));
     fs.light.model = LightModel::shifted;
@@ -144,7 +144,7 @@ TEST(PixelRows, PointsWithoutARayAreBlackTransparentAndNeverTraced) {
   ShotResources res;
   const RenderSettings rs{16, 8, 2, true, true};
   const auto sc = std::get<SceneIn<Kerr>>(build_scene(fs, rs.width, rs.height, res));
-  const HalfCamera half{PinholeCamera(std::get<PinholeCamera::Params>(fs.camera), rs.width, rs.height), rs.width};
+  const HalfCamera half{PinholeCamera(fs.camera.get<PinholeCamera::Params>(), rs.width, rs.height), rs.width};
   RenderStats whole_stats, half_stats;
   const FrameImage whole = render_with(sc, sc.camera, rs, &whole_stats);
   const FrameImage img = render_with(sc, half, rs, &half_stats);
@@ -194,7 +194,7 @@ TEST(PixelRows, AMovedEyeSeesTheImageShiftAsFlatSpaceSays) {
   SceneSpec fs;
   fs.spacetime = Dihole(0.0, 0.0, 1.0);
   fs.observer = StaticObserver::Params{{0, 0, 80, 0}};
-  std::get<PinholeCamera::Params>(fs.camera).fov = 12;
+  fs.camera.get<PinholeCamera::Params>().fov = 12;
   Sphere::Params sp;
   sp.radius = 1.0;
   sp.placement.at = Vec4{0, 5, 0, 0};
@@ -205,7 +205,7 @@ TEST(PixelRows, AMovedEyeSeesTheImageShiftAsFlatSpaceSays) {
   const double t = std::tan(6 * degree);
   auto column_of = [&](double angle) { return rs.width / 2.0 * (1 + std::tan(angle) / t); };
   for (const double d : {0.0, 2.0, -3.0}) {
-    const MovedEyeCamera camera{PinholeCamera(std::get<PinholeCamera::Params>(fs.camera), rs.width, rs.height), d};
+    const MovedEyeCamera camera{PinholeCamera(fs.camera.get<PinholeCamera::Params>(), rs.width, rs.height), d};
     RenderStats stats;
     const FrameImage img = render_with(sc, camera, rs, &stats);
     EXPECT_EQ(stats.gave_up, 0);

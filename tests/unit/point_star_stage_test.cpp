@@ -5,6 +5,7 @@
 // each star's summed light within 2% (the no-flicker bound; the
 // pass conserves it to ~1e-3 here) and within the 2 x 2 pixels around it.
 
+#include "camera/pinhole_params.hpp"
 #include "render/point_star_stage.hpp"
 
 #include <gtest/gtest.h>
@@ -36,7 +37,7 @@ TEST(PointStarStage, AStarsLightHoldsStillThroughASlowPan) {
   std::vector<PointStar> stars;
   const double at[3][2] = {{20.3, 10.7}, {40.55, 18.2}, {30.9, 27.45}};
   {
-    std::get<PinholeParams>(fs.camera).fov = fov;
+    fs.camera.get<PinholeParams>().fov = fov;
     const Scene scene = build_scene(fs, W, H, res);
     const auto& sc = std::get<SceneIn<Minkowski>>(scene);
     std::vector<Vec3> dirs;
@@ -53,7 +54,7 @@ TEST(PointStarStage, AStarsLightHoldsStillThroughASlowPan) {
   double where[3][2] = {{at[0][0], at[0][1]}, {at[1][0], at[1][1]}, {at[2][0], at[2][1]}};
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {0, 0, 0};
   for (int f = 0; f < 100; ++f) {
-    std::get<PinholeParams>(fs.camera).yaw = f * step;
+    fs.camera.get<PinholeParams>().yaw = f * step;
     const Scene scene = build_scene(fs, W, H, res);
     FrameImage image = make_frame(rs);
     prepare_frame(scene, image);

@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "camera/pinhole.hpp"
 #include "core/constants.hpp"
 #include "render/accuracy.hpp"
 #include "render/renderer.hpp"
@@ -23,7 +24,7 @@ SceneSpec kerr_scene(double M, double a, double r, double theta_deg, double fov,
   SceneSpec fs;
   fs.spacetime = Kerr(M, a);
   fs.observer = StaticObserver::Params{{0, r, theta_deg * degree, 0}};
-  std::get<PinholeParams>(fs.camera).fov = fov;
+  fs.camera.get<PinholeParams>().fov = fov;
   if (disk) fs.objects.push_back(Disk::Params{6, 15, 9, 24});
   return fs;
 }
@@ -122,7 +123,7 @@ TEST(Renderer, FlatSpaceDiskIsTheExactProjection) {
     o.control.rtol = o.control.atol = tolerance;
     const Scene scene = build_scene(fs, W, H, res, o);
     const Vec3 cam = {30 * std::sin(70 * degree), 0, 30 * std::cos(70 * degree)};
-    const PinholeCamera camera(std::get<PinholeParams>(fs.camera), W, H);
+    const PinholeCamera camera(fs.camera.get<PinholeParams>(), W, H);
     int disk_pixels = 0;
     for (int j = 0; j < H; ++j)
       for (int i = 0; i < W; ++i) {
@@ -216,7 +217,7 @@ TEST(Renderer, ObserverOnTheSouthAxisSeesTheNorthViewUpsideDown) {
 // The centre ray of a 1 x 1 image of `fs` looking straight along forward,
 // traced with `chart`.
 RaySample centre_ray(SceneSpec fs, double yaw, KerrChart chart) {
-  std::get<PinholeParams>(fs.camera).yaw = yaw;
+  fs.camera.get<PinholeParams>().yaw = yaw;
   ShotResources res;
   RayOptions o;
   o.kerr_chart = chart;
@@ -300,7 +301,7 @@ std::vector<std::pair<std::string, SceneSpec>> scenes_of_every_path() {
   SceneSpec di;
   di.spacetime = Dihole(0.4, 0.4, 1.0);
   di.observer = StaticObserver::Params{{90, 0, 40, 0}};
-  std::get<PinholeParams>(di.camera).fov = 30;
+  di.camera.get<PinholeParams>().fov = 30;
   di.objects.push_back(test::falling_sphere(di.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
   out.emplace_back("dihole", di);
   return out;
@@ -352,7 +353,7 @@ TEST(Renderer, SphereInFlatSpaceHasItsAngularSize) {
   SceneSpec fs;
   fs.spacetime = Dihole(0.0, 0.0, 1.0);
   fs.observer = StaticObserver::Params{{0, 0, 80, 0}};
-  std::get<PinholeParams>(fs.camera).fov = 12;
+  fs.camera.get<PinholeParams>().fov = 12;
   Sphere::Params sp;
   sp.radius = 1.0;
   sp.placement.at = Vec4{0, 5, 0, 0};
@@ -498,7 +499,7 @@ TEST(Renderer, MovingSphereKeepsACircularOutline) {
   SceneSpec fs;
   fs.spacetime = Minkowski{};
   fs.observer = StaticObserver::Params{{150, 0, 60, 0}};  // at t = 150, on the y axis, looking at the origin
-  std::get<PinholeParams>(fs.camera).fov = 90;
+  fs.camera.get<PinholeParams>().fov = 90;
   fs.objects.push_back(test::falling_sphere(Minkowski{}, {0, -70, 0, 0}, {0.6, 0, 0}, 300, 3.0));
   ShotResources res;
   const int W = 600, H = 600;
@@ -555,7 +556,7 @@ TEST(Renderer, MovingObserverSeesAberration) {
   ride.worldline = w;
   ride.proper_time = 0;
   fs.observer = ride;
-  std::get<PinholeParams>(fs.camera).fov = 120;
+  fs.camera.get<PinholeParams>().fov = 120;
   ShotResources res;
   const int W = 64;
   const Scene scene = build_scene(fs, W, 1, res);

@@ -9,6 +9,7 @@
 #include <string>
 #include <numeric>
 
+#include "camera/pinhole.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_memo.hpp"
 #include "render/scene_builder.hpp"
@@ -25,7 +26,7 @@ SceneSpec dihole_at(double t) {
   SceneSpec fs;
   fs.spacetime = Dihole(0.4, 0.4, 1.0);
   fs.observer = StaticObserver::Params{{t, 0, 40, 0}};
-  std::get<PinholeCamera::Params>(fs.camera).fov = 30;
+  fs.camera.get<PinholeCamera::Params>().fov = 30;
   fs.objects.push_back(test::falling_sphere(fs.spacetime, {0, 5, 0, 0}, {0, 0, 0}, 300, 1.0));
   return fs;
 }
@@ -98,7 +99,7 @@ TEST(SampleMemo, AnotherSceneReusesNothing) {
   SampleMemo memo(rs);
   render(dihole_at(100), rs, res, &memo);
   SceneSpec turned = dihole_at(100);
-  std::get<PinholeCamera::Params>(turned.camera).yaw = 1e-9;  // a hair's turn: every ray is another
+  turned.camera.get<PinholeCamera::Params>().yaw = 1e-9;  // a hair's turn: every ray is another
   const Rendered r = render(turned, rs, res, &memo);
   EXPECT_EQ(r.stats.reused, 0);
   EXPECT_EQ(r.image.rgb, render(turned, rs, res, nullptr).image.rgb);

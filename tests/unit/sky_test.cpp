@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "assets/shot_resources.hpp"
+#include "camera/pinhole_params.hpp"
 #include "core/constants.hpp"
 #include "image/look.hpp"
 #include "render/renderer.hpp"
@@ -34,7 +35,7 @@ std::vector<Color> sky_frame(const SkySpec& sky, int W = 24, int H = 12) {
   SceneSpec fs;
   fs.spacetime = Minkowski();
   fs.observer = StaticObserver::Params{{0, 3, 4, 7}};
-  std::get<PinholeParams>(fs.camera).fov = 150;
+  fs.camera.get<PinholeParams>().fov = 150;
   fs.sky = sky;
   ShotResources res;
   const Scene scene = build_scene(fs, W, H, res);

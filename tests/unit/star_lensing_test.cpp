@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "camera/fisheye.hpp"
+#include "camera/pinhole_params.hpp"
 #include "core/constants.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
@@ -29,7 +30,7 @@ TEST(StarLensing, ASchwarzschildHolesTwoImagesFollowThePointLens) {
   SceneSpec fs;
   fs.spacetime = Kerr(1, 0);
   fs.observer = StaticObserver::Params{{0, D, 90 * degree, 0}};
-  std::get<PinholeParams>(fs.camera).fov = 4 * std::sqrt(1e4 / D);
+  fs.camera.get<PinholeParams>().fov = 4 * std::sqrt(1e4 / D);
   ShotResources res;
   RayOptions rays;
   const Scene scene = build_scene(fs, N, N, res, rays);

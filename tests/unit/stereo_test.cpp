@@ -5,6 +5,8 @@
 // the disparity of a sphere at distance D where ODS's geometry puts it;
 // the star stage drawing each eye's picture as a frame of its own.
 
+#include "camera/equirect.hpp"
+#include "camera/pinhole.hpp"
 #include "camera/stereo.hpp"
 
 #include <gtest/gtest.h>

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "camera/pinhole_params.hpp"
 #include "scene/still_key.hpp"
 
 #include <string>
@@ -45,7 +46,7 @@ TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
     std::get<StaticObserver::Params>(fs.observer).position[1] = std::nextafter(30.0, 31.0);
   }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.spacetime = Kerr(1.0, std::nextafter(0.9, 1.0)); }));
-  EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<PinholeParams>(fs.camera).roll = 1e-12; }));
+  EXPECT_TRUE(differs([](SceneSpec& fs) { fs.camera.get<PinholeParams>().roll = 1e-12; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Disk::Params>(fs.objects[0]).sectors = 25; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects.erase(fs.objects.begin()); }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<CheckerSky::Params>(fs.sky).rotate = 1e-12; }));
