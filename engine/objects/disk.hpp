@@ -22,6 +22,7 @@
 #include "light/blackbody.hpp"
 #include "light/light.hpp"
 #include "light/novikov_thorne.hpp"
+#include "objects/disk_params.hpp"
 #include "objects/step_query.hpp"
 #include "objects/surface_point.hpp"
 #include "spacetime/chart.hpp"
@@ -32,56 +33,12 @@ class ShotResources;
 
 class Disk {
  public:
-  static constexpr std::string_view name = "disk";
+  static constexpr std::string_view name = DiskParams::name;
   static constexpr HitKind hit_kind = HitKind{1};  // hit.kind 1
   // The BL–Mino path finds it at its own equatorial crossings (render/mino_ray.hpp).
   static constexpr bool in_fast_path = true;
 
-  struct Params {
-    double inner = 6.0, outer = 20.0;
-    int rings = 7, sectors = 24;
-    Palette colors = {{1.0f, 0.55f, 0.15f}, {0.35f, 0.12f, 0.03f}};
-    double temperature = 0.0, color_correction = 1.0;
-    double solar_masses = 0.0, accretion_rate = 0.0;
-    static constexpr auto fields = std::tuple{
-        field("inner", &Params::inner, std::optional<double>{}, at_least(0.0), std::nullopt, "inner radius", "M"),
-        field("outer", &Params::outer, std::optional<double>{}, std::nullopt, std::nullopt, "outer radius, above inner", "M"),
-        field("rings", &Params::rings, std::optional<int>{7}, at_least(1), at_most(100000), "checker cells in r"),
-        field("sectors", &Params::sectors, std::optional<int>{24}, at_least(1), at_most(100000),
-              "checker cells in phi"),
-        field("colors", &Params::colors, std::optional<Palette>{Palette{{1.0f, 0.55f, 0.15f}, {0.35f, 0.12f, 0.03f}}},
-              std::nullopt, std::nullopt, "the two colours {{r, g, b}, {r, g, b}}, linear RGB"),
-        field("temperature", &Params::temperature, std::optional<double>{0.0}, at_least(0.0), at_most(1e9),
-              "0: the checker; above 0: a Novikov–Thorne disk (Kerr only) glowing as a blackbody whose hottest ring "
-              "has this temperature, seen as lc.light{...} says (model = \"shifted\": through the frequency shift g; "
-              "docs/light.md); that ring, seen unshifted, has luminance 1",
-              "K"),
-        field("color_correction", &Params::color_correction, std::optional<double>{1.0}, at_least(1.0), at_most(10.0),
-              "a glowing disk's colour-correction factor f: each ring shines as a blackbody at f T diluted by "
-              "f^-4 (hot disks: ~1.7)"),
-        field("solar_masses", &Params::solar_masses, std::optional<double>{0.0}, at_least(0.0), at_most(1e12),
-              "with accretion_rate, instead of temperature: the hole's mass in the Sun's, which the spacetime's "
-              "mass stands for; the rings' temperatures follow, and the light is in cd/m^2 (docs/light.md)",
-              "M_sun"),
-        field("accretion_rate", &Params::accretion_rate, std::optional<double>{0.0}, at_least(0.0), at_most(1e6),
-              "with solar_masses: the rest mass accreted per year", "M_sun/yr"),
-    };
-    // Throws std::invalid_argument unless inner < outer and the disk's glow
-    // is given one way.
-    void validate() const {
-      if (!(outer > inner))
-        throw std::invalid_argument(fmt::format("inner radius {} must be below the outer radius {}", inner, outer));
-      if ((solar_masses > 0.0) != (accretion_rate > 0.0))
-        throw std::invalid_argument(fmt::format(
-            "a disk's glow from physical units needs both solar_masses and accretion_rate above 0, got {} and {}",
-            solar_masses, accretion_rate));
-      if (solar_masses > 0.0 && temperature > 0.0)
-        throw std::invalid_argument(
-            "give a glowing disk either its temperature or its solar_masses and accretion_rate, not both");
-    }
-    // Whether it glows (else it is the checker).
-    bool glows() const { return temperature > 0.0 || solar_masses > 0.0; }
-  };
+  using Params = DiskParams;
 
   // In the spacetime st, with colour tables from `res`.  Throws
   // std::invalid_argument for a glowing disk where st has no Novikov–Thorne

@@ -17,6 +17,7 @@
 #include "core/hit_kind.hpp"
 #include "core/registry.hpp"
 #include "objects/disk.hpp"
+#include "objects/object_params.hpp"
 #include "objects/surface_point.hpp"
 #include "objects/sphere.hpp"
 #include "objects/step_query.hpp"
@@ -70,8 +71,10 @@ static_assert(every_kind<Spacetime>([]<class S>() {
   });
 }));
 
-// An object a shot asked for: one of the registered kinds' parameters.
-using ObjectSpec = ObjectRegistry::Spec;
+// The object a shot asked for (objects/object_spec.hpp): the kinds'
+// parameters, listed apart in the same order.
+static_assert(std::is_same_v<ObjectRegistry::Spec, ObjectSpecs::Spec>,
+              "objects/object_params.hpp must list the registered objects' Params in the registry's order");
 
 // The built objects of a scene, one list per kind, in registry order.
 using ObjectLists = detail::ListsOf<ObjectRegistry>::type;
@@ -129,7 +132,7 @@ void add_object(ObjectLists& lists, const ObjectSpec& spec, const S& st, ShotRes
             std::get<std::vector<O>>(lists).emplace_back(p, st, res, observer);
         });
       },
-      spec);
+      spec.kinds());
 }
 
 // Whether the fast path handles every object the scene has.

@@ -27,6 +27,7 @@
 #include "objects/surface_point.hpp"
 #include "objects/sphere_body.hpp"
 #include "objects/sphere_intersection.hpp"
+#include "objects/sphere_params.hpp"
 #include "objects/step_query.hpp"
 #include "assets/shot_resources.hpp"
 #include "worldline/placement.hpp"
@@ -38,30 +39,12 @@ namespace lc {
 
 class Sphere : public SphereBody {
  public:
-  static constexpr std::string_view name = "sphere";
+  static constexpr std::string_view name = SphereParams::name;
   static constexpr HitKind hit_kind = HitKind{3};  // hit.kind 3
   // Its worldline and frame live in the trace chart: only the general path.
   static constexpr bool in_fast_path = false;
 
-  struct Params {
-    double radius = 1.0;
-    int rows = 8, columns = 16;
-    Palette colors = {{0.95f, 0.95f, 0.95f}, {0.8f, 0.1f, 0.1f}};
-    // Held at rest at `position` (scene coordinates) or falling along
-    // `worldline`: a declared field like the others (worldline/placement.hpp).
-    Placement placement;
-    static constexpr auto fields = std::tuple{
-        field("radius", &Params::radius, std::optional<double>{}, above(0.0), std::nullopt, "proper radius", "M"),
-        field("rows", &Params::rows, std::optional<int>{8}, at_least(1), at_most(100000), "checker cells from pole to pole"),
-        field("columns", &Params::columns, std::optional<int>{16}, at_least(1), at_most(100000),
-              "checker cells round the pole"),
-        field("colors", &Params::colors, std::optional<Palette>{Palette{{0.95f, 0.95f, 0.95f}, {0.8f, 0.1f, 0.1f}}},
-              std::nullopt, std::nullopt, "the two colours {{r, g, b}, {r, g, b}}, linear RGB"),
-        field("placement", &Params::placement, std::optional<NoDefault>{}, std::nullopt, std::nullopt,
-              "one of the two: `position = {...}`, held at rest there (see Positions), or `worldline = w`, falling "
-              "along the worldline w"),
-    };
-  };
+  using Params = SphereParams;
 
   // In the spacetime st (its trace chart), with worldlines from `res`, for a
   // frame whose observer is at the trace event `observer`.  Throws

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "objects/disk.hpp"
 
 namespace lc {
 
@@ -31,9 +32,9 @@ AccuracyReport compare_samples(const std::vector<RaySample>& reference, const st
       continue;
     }
     // The bench's disk metrics: the first disk of the scene's.
-    const Disk::Params* d = nullptr;
+    const DiskParams* d = nullptr;
     for (const ObjectSpec& o : scene.objects)
-      if (!d) d = std::get_if<Disk::Params>(&o);
+      if (!d) d = o.get_if<DiskParams>();
     if (a.hit.kind == Disk::hit_kind && d) {
       auto cell = [&](const RaySample& s) {
         return std::pair{static_cast<long>(std::floor((s.hit.r - d->inner) / (d->outer - d->inner) * d->rings)),

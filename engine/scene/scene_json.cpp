@@ -13,7 +13,7 @@ std::string to_json(const SceneSpec& fs, int frame, const std::string& evaluated
   out += "\"camera\": " + camera_json(fs.camera) + ", ";
   out += "\"sky\": " + SkyRegistry::json(fs.sky) + ", ";
   out += "\"objects\": [";
-  for (std::size_t i = 0; i < fs.objects.size(); ++i) out += (i ? ", " : "") + ObjectRegistry::json(fs.objects[i], polar);
+  for (std::size_t i = 0; i < fs.objects.size(); ++i) out += (i ? ", " : "") + object_json(fs.objects[i], polar);
   out += "]";
   out += fmt::format(", \"light\": {{{}}}", fields_json(fs.light).substr(2));
   if (!evaluated.empty()) out += ", \"evaluated\": " + evaluated;

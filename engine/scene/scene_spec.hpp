@@ -16,7 +16,7 @@
 #include "camera/camera_spec.hpp"
 #include "core/color.hpp"
 #include "light/light.hpp"
-#include "objects/objects.hpp"
+#include "objects/object_spec.hpp"
 #include "observers/observers.hpp"
 #include "sky/sky.hpp"
 #include "core/tensor.hpp"

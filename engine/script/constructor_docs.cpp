@@ -89,7 +89,7 @@ std::string constructor_tables() {
   kinds("Observers", ObserverRegistry{});
   kinds("Cameras", CameraSpecs{});
   kinds("Skies", SkyRegistry{});
-  kinds("Objects", ObjectRegistry{});
+  kinds("Objects", ObjectSpecs{});
   out += "### Light\n\n";
   out += table<LightParams>("light");
   return out;

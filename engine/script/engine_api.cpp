@@ -10,6 +10,7 @@
 
 #include "lua/table_reader.hpp"
 #include "camera/camera_params.hpp"
+#include "objects/object_params.hpp"
 #include "script/scene_reader.hpp"
 #include "worldline/worldline.hpp"
 #include "spacetime/chart.hpp"
@@ -205,7 +206,7 @@ void install_engine_api(lua::Sandbox& sandbox, EngineMemo* memo) {
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_observer, NameGroup::observers); });
   CameraSpecs::for_each(
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_camera, NameGroup::cameras); });
-  ObjectRegistry::for_each(
+  ObjectSpecs::for_each(
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_object, NameGroup::objects); });
   add("worldline", validate_worldline, NameGroup::observers);
   add("light", validate_light, NameGroup::light);

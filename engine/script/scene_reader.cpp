@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "camera/camera_params.hpp"
+#include "objects/object_params.hpp"
 #include "core/constants.hpp"
 #include "script/field_reader.hpp"
 #include "script/spacetime_reader.hpp"
@@ -190,7 +191,7 @@ void read_observer_extra(TableReader& t, FreeFall::Params& o, const Spacetime*) 
 }  // namespace
 
 ObjectSpec read_object(TableReader& t, const Spacetime* st) {
-  return read_kind<ObjectRegistry>(t, "an object constructor", "", st);
+  return ObjectSpecKinds(read_kind<ObjectSpecs>(t, "an object constructor", "", st));
 }
 
 ObserverSpec read_observer(TableReader& t, const Spacetime* st) {

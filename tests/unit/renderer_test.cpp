@@ -529,7 +529,7 @@ TEST(Renderer, MovingSphereKeepsACircularOutline) {
   for (int k = 0; k < 3; ++k)
     for (int leg = 0; leg < 3; ++leg) dir[k] += n[leg] * rest.e[leg + 1][k + 1];
   const double dist = 60.0 / std::abs(dir[1]);  // reach the plane y = 0
-  std::get<Sphere::Params>(still.objects[0]).placement.at = Vec4{0, dist * dir[0], 60 + dist * dir[1], dist * dir[2]};
+  still.objects[0].get<Sphere::Params>().placement.at = Vec4{0, dist * dir[0], 60 + dist * dir[1], dist * dir[2]};
   ShotResources res2;
   const Scene still_scene = build_scene(still, W, H, res2);
   const double w0 = extent(still_scene, cx0, H / 2.0, 1, 0, 200);

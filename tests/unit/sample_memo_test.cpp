@@ -122,7 +122,7 @@ TEST(SampleMemo, RaysNearASphereAtRestAreTracedAgain) {
   SampleMemo memo(rs);
   auto held = [](double t) {
     SceneSpec fs = dihole_at(t);
-    std::get<Sphere::Params>(fs.objects[0]).placement.at = Vec4{0, 5, 0, 0};
+    fs.objects[0].get<Sphere::Params>().placement.at = Vec4{0, 5, 0, 0};
     return fs;
   };
   render(held(100), rs, res, &memo);

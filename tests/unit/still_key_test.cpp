@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "camera/pinhole_params.hpp"
+#include "objects/disk_params.hpp"
+#include "objects/sphere_params.hpp"
 #include "scene/still_key.hpp"
 
 #include <string>
@@ -22,8 +24,8 @@ SceneSpec scene() {
   SceneSpec fs;
   fs.spacetime = Kerr(1.0, 0.9);
   fs.observer = StaticObserver::Params{{10.0, 30.0, 1.2, 0.3}};
-  fs.objects.emplace_back(std::in_place_type<Disk::Params>);
-  Sphere::Params sp;
+  fs.objects.emplace_back(DiskParams{});
+  SphereParams sp;
   sp.placement.at = Vec4{0.0, 12.0, 1.5, 0.0};
   fs.objects.push_back(sp);
   return fs;
@@ -47,15 +49,15 @@ TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
   }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.spacetime = Kerr(1.0, std::nextafter(0.9, 1.0)); }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.camera.get<PinholeParams>().roll = 1e-12; }));
-  EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Disk::Params>(fs.objects[0]).sectors = 25; }));
+  EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects[0].get<DiskParams>().sectors = 25; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects.erase(fs.objects.begin()); }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<CheckerSky::Params>(fs.sky).rotate = 1e-12; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.sky = StarImageSky::Params{2}; }));
-  EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Vec4>(std::get<Sphere::Params>(fs.objects[1]).placement.at)[1] = 12.5; }));
-  EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Sphere::Params>(fs.objects[1]).colors.a[0] = 0.5f; }));
+  EXPECT_TRUE(differs([](SceneSpec& fs) { std::get<Vec4>(fs.objects[1].get<SphereParams>().placement.at)[1] = 12.5; }));
+  EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects[1].get<SphereParams>().colors.a[0] = 0.5f; }));
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects.push_back(fs.objects[1]); }));
   // A sphere at rest ignores the time in its position.
-  EXPECT_FALSE(differs([](SceneSpec& fs) { std::get<Vec4>(std::get<Sphere::Params>(fs.objects[1]).placement.at)[0] = 99.0; }));
+  EXPECT_FALSE(differs([](SceneSpec& fs) { std::get<Vec4>(fs.objects[1].get<SphereParams>().placement.at)[0] = 99.0; }));
 }
 
 TEST(StillKey, AFreeFallingObserverHasNone) {
@@ -81,7 +83,7 @@ TEST(StillKey, TheSpheresPlacementIsKeyed) {
   w.duration = 100.0;
   auto along = [&](const WorldlineSpec& spec) {
     SceneSpec fs = scene();
-    std::get<Sphere::Params>(fs.objects[1]).placement.at = spec;
+    fs.objects[1].get<SphereParams>().placement.at = spec;
     return still_key(fs);
   };
   const std::string falling = along(w);
@@ -115,7 +117,7 @@ using ToyRegistry = Registry<Toy>;
 template <class P>
 concept HandWrittenPlacement = requires(const P& p) { p.extra_key(); } || requires(const P& p) { p.extra_json(false); } ||
                                requires { P::extra_fields; } || requires { P::extra_doc; };
-static_assert(!HandWrittenPlacement<Toy::Params> && !HandWrittenPlacement<Sphere::Params>);
+static_assert(!HandWrittenPlacement<Toy::Params> && !HandWrittenPlacement<SphereParams>);
 
 Toy::Params toy_at(const Vec4& x) {
   Toy::Params p;
