@@ -14,6 +14,7 @@
 // do (render/hamiltonian_ray.hpp).
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <concepts>
 #include <limits>
@@ -107,7 +108,11 @@ inline double segment_box_distance(const Vec3& a, const Vec3& b, const Vec3& lo,
       if (s > 0.0 && s < 1.0) cuts[n++] = s;
     }
   }
-  std::sort(cuts, cuts + n);
+  // Insertion sort, which std::sort also does below 16 elements: GCC 12
+  // warns (-Warray-bounds) of std::sort's 16-element threshold on an
+  // 8-element array wherever this is inlined.
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && cuts[j] < cuts[j - 1]; --j) std::swap(cuts[j], cuts[j - 1]);
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i + 1 < n; ++i) {
     // On [s0, s1] each axis is below, inside or above the box throughout:

@@ -79,6 +79,14 @@ static_assert(std::is_same_v<ObjectRegistry::Spec, ObjectSpecs::Spec>,
 // The built objects of a scene, one list per kind, in registry order.
 using ObjectLists = detail::ListsOf<ObjectRegistry>::type;
 
+// The same as a class, which render/scene.hpp names without including
+// this registry: a scene holds its objects through a pointer to one, so
+// what holds a scene is not rebuilt for a new object kind
+// (docs/architecture.md, "What a new kind rebuilds").
+struct ObjectSet {
+  ObjectLists lists;
+};
+
 // f(object, index) for every object, kind by kind; index counts across all.
 template <class F>
 void for_each_object(const ObjectLists& lists, F&& f) {

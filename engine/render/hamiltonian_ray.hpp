@@ -13,14 +13,15 @@
 #include <optional>
 #include <type_traits>
 
-#include "geodesic/crossing.hpp"
-#include "spacetime/weak_field_tail.hpp"
 #include "eye/ray_direction.hpp"
 #include "eye/tetrad.hpp"
+#include "geodesic/crossing.hpp"
+#include "objects/objects.hpp"
 #include "render/hit_record.hpp"
 #include "render/ray_start.hpp"
 #include "render/scene.hpp"
 #include "spacetime/chart.hpp"
+#include "spacetime/weak_field_tail.hpp"
 
 namespace lc {
 
@@ -94,7 +95,7 @@ class HamiltonianRay {
     on_step_(step.start(), step.t0);
     StepTest t(step, reuse_window_, track_windows_, warm_);
     std::size_t winner = no_object;
-    for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
+    for_each_object(sc_.objects->lists, [&](const auto& o, std::size_t index) {
       if (const auto l = o.first_hit(st, t, index)) {
         t.take(*l);
         winner = index;
@@ -173,7 +174,7 @@ class HamiltonianRay {
   // integration, where its size decides what else the compiler inlines.
   [[gnu::noinline]] void hit_object(const RayState& y, HitRecord& out) const {
     const S& st = sc_.spacetime;
-    for_each_object(sc_.objects, [&](const auto& o, std::size_t index) {
+    for_each_object(sc_.objects->lists, [&](const auto& o, std::size_t index) {
       if (index == winner_) {
         out.kind = std::decay_t<decltype(o)>::hit_kind;
         out.object = static_cast<std::uint32_t>(index);

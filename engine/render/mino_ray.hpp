@@ -11,9 +11,10 @@
 #include <limits>
 #include <type_traits>
 
+#include "eye/ray_direction.hpp"
 #include "geodesic/crossing.hpp"
 #include "geodesic/kerr_mino.hpp"
-#include "eye/ray_direction.hpp"
+#include "objects/objects.hpp"
 #include "render/hamiltonian_ray.hpp"
 #include "render/hit_record.hpp"
 #include "render/scene.hpp"
@@ -81,7 +82,7 @@ class MinoRay {
     if ((c0 > 0.0) != (c1 > 0.0) && c0 != 0.0) {
       const double lz = locate_crossing(step, [](const MinoState& y) { return y[2]; }, step.t0, l1, c0, c1);
       const Event e = event_at(step, lz);
-      const std::vector<Disk>& disks = std::get<std::vector<Disk>>(sc_.objects);
+      const std::vector<Disk>& disks = std::get<std::vector<Disk>>(sc_.objects->lists);
       const double r = disk_radius(e);
       for (std::size_t i = 0; i < disks.size(); ++i)
         if (disks[i].covers(r)) {
@@ -135,7 +136,7 @@ class MinoRay {
     if (res.reason == StopReason::hit) {
       // The disk through the object seam: its kind, index and surface point.
       out.kind = Disk::hit_kind;
-      out.object = static_cast<std::uint32_t>(object_index<Disk>(sc_.objects, disk_));
+      out.object = static_cast<std::uint32_t>(object_index<Disk>(sc_.objects->lists, disk_));
       out.g = disk_frequency_ratio(at_hit_);
       out.g_gravity = disk_gravity_part(at_hit_, out.g);
       out.surface = {out.r, out.phi};

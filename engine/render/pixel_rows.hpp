@@ -44,7 +44,6 @@
 #include "render/renderer.hpp"
 #include "render/sample_memo.hpp"
 #include "render/sample_times.hpp"
-#include "render/shade.hpp"
 #include "render/trace.hpp"
 
 namespace lc {
@@ -390,7 +389,7 @@ class RayStages {
     for (std::size_t m = 0; m < records_.size(); ++m) {
       const HitRecord& hit = records_[m];
       SampleItem& item = items[index_[m]];
-      out[item.slot] = frame_sample(hit, shade(at, hit));
+      out[item.slot] = frame_sample(hit, shading(at, hit));
       item.reuse_window = hit.reuse_window;
       ++stats_.rays;
       stats_.steps += hit.steps;

@@ -7,6 +7,7 @@
 // Templated on the concrete spacetime so the metric inlines into the
 // integrator.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -17,11 +18,12 @@
 #include "camera/camera.hpp"
 #include "eye/eye.hpp"
 #include "light/light.hpp"
-#include "objects/objects.hpp"
 #include "observers/observers.hpp"
 #include "sky/sky.hpp"
 
 namespace lc {
+
+struct ObjectSet;  // objects/objects.hpp
 
 template <class S>
 struct SceneIn {
@@ -35,7 +37,10 @@ struct SceneIn {
   // end_skies (end index, sky).  sky_of picks it.
   Sky sky;
   std::vector<std::pair<std::size_t, Sky>> end_skies{};
-  ObjectLists objects;
+  // The built objects, one list per kind; shared by copies of the scene,
+  // never changed once built.  Set by render/scene_builder (never null in a
+  // scene it built).
+  std::shared_ptr<const ObjectSet> objects;
   RayOptions rays;
   // still_key() of the frame's scene where the spacetime is stationary, else
   // empty: frames with equal non-empty keys may share the samples of rays

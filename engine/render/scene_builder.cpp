@@ -8,6 +8,7 @@
 
 #include "assets/asset_path.hpp"
 #include "core/constants.hpp"
+#include "objects/objects.hpp"
 #include "render/ray_start.hpp"
 #include "scene/still_key.hpp"
 #include "spacetime/chart.hpp"
@@ -22,7 +23,7 @@ namespace {
 template <class S>
 double free_radius(const SceneIn<S>& sc) {
   double reach = sc.spacetime.photon_reach();
-  for_each_object(sc.objects, [&](const auto& o, std::size_t) { reach = std::max(reach, o.reach(sc.spacetime.asymptotic_mass())); });
+  for_each_object(sc.objects->lists, [&](const auto& o, std::size_t) { reach = std::max(reach, o.reach(sc.spacetime.asymptotic_mass())); });
   return 2.0 * std::max(reach, 1.0);
 }
 
@@ -69,7 +70,9 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
   sc.eye = sc.observer_path.at(0.0);
   check_eyes(sc, fs.camera);
 
-  for (const ObjectSpec& o : fs.objects) add_object(sc.objects, o, st, res, sc.eye.event);
+  auto objects = std::make_shared<ObjectSet>();
+  for (const ObjectSpec& o : fs.objects) add_object(objects->lists, o, st, res, sc.eye.event);
+  sc.objects = std::move(objects);
   sc.rays.free_radius = free_radius(sc);
   // Where the spacetime's far field is known (far_field_radius), rays
   // escape there, or beyond the objects; the sky lookup adds the rest of

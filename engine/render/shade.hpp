@@ -10,6 +10,7 @@
 // pixels again.
 
 #include "core/color.hpp"
+#include "objects/objects.hpp"
 #include "render/hit_record.hpp"
 #include "render/scene.hpp"
 
@@ -32,7 +33,7 @@ Shading shade(const SceneIn<S>& sc, const HitRecord& hit) {
     out.sky.color = static_cast<float>(shift.color);
     out.sky.beaming = static_cast<float>(shift.beaming);
   } else if (hit.object != HitRecord::no_object) {
-    with_object(sc.objects, hit.object,
+    with_object(sc.objects->lists, hit.object,
                 [&](const auto& o) { out.color = o.color_at(hit.surface, sc.light.seen(hit.g, hit.g_gravity)); });
   }
   return out;

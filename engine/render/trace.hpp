@@ -1,118 +1,59 @@
 #pragma once
-// The trace stage: ray starts (render/ray_start.hpp) -> hit records
-// (render/hit_record.hpp).  trace_records follows a batch lane_count at a
-// time (core/lanes.hpp) for the renderer; trace_sample follows one from the
-// frame's eye, with a path recorder, and trace_batch a list of directions
-// from it (for `lightcone trace`, the bench and tests: both shade what they
-// traced, render/shade.hpp).  All run the one ray loop
-// (geodesic/ray_loop.hpp), and which formulation of the ray equations a
-// scene's rays take is chosen here, in one place.
+// The trace and shade stages' calls for a scene in a registered spacetime:
+// ray starts (render/ray_start.hpp) -> hit records (render/hit_record.hpp)
+// -> colours.  Declared here; their code (render/trace_templates.hpp) is
+// compiled once per spacetime, in render/trace_in_<spacetime>.cpp, so what
+// renders rows, benches or tests tracing does not include the object kinds
+// or the ray formulations (docs/architecture.md, "What a new kind
+// rebuilds").  A call per batch or sample costs nothing beside the
+// geodesics it follows.
 
-#include <cstdint>
-#include <optional>
 #include <span>
-#include <type_traits>
-#include <vector>
 
-#include "core/lanes.hpp"
-#include "geodesic/ray_loop.hpp"
-#include "render/hamiltonian_ray.hpp"
-#include "render/mino_ray.hpp"
+#include "core/tensor.hpp"
+#include "render/hit_record.hpp"
 #include "render/ray_start.hpp"
 #include "render/scene.hpp"
-#include "render/shade.hpp"
 
 namespace lc {
 
-// Whether a scene's rays take the Boyer–Lindquist–Mino fast path: Kerr
-// scenes whose objects it handles (objects/objects.hpp: in_fast_path; not a
-// sphere, whose worldline and frame live in the trace chart), unless the
-// options ask for Kerr–Schild.  Everything else takes the Hamiltonian in the
-// trace chart.
+// What the stages do in spacetime S, compiled where its code is included
+// (`template struct TraceStage<S>;` in render/trace_in_<spacetime>.cpp).
 template <class S>
-bool takes_mino_path(const SceneIn<S>& sc) {
-  if constexpr (std::is_same_v<S, Kerr>)
-    return objects_in_fast_path(sc.objects) && sc.rays.kerr_chart == KerrChart::boyer_lindquist_mino;
-  else
-    return false;
-}
-
-namespace detail {
-
-// The records of the rays `starts` into `out`, W at a time; on_step records
-// paths (NoPath: none).  An out[k] whose reuse_window is 0 on entry asks its
-// ray not to work out its window (HamiltonianRay::track_reuse_windows).
-template <int W, class S, class OnStep>
-void trace_rays(const SceneIn<S>& sc, std::span<const RayStart> starts, std::span<HitRecord> out, OnStep& on_step) {
-  // path: the formulation; args: what each ray is made from besides the
-  // scene, its direction and the path recorder.
-  auto run = [&](const auto& path, const auto&... args) {
-    using Ray = typename std::decay_t<decltype(path)>::Ray;
-    run_rays<W>(
-        path, sc.rays.control, sc.rays.max_steps, starts.size(),
-        [&](std::size_t k, std::optional<Ray>& slot) {
-          slot.emplace(sc, args..., starts[k], on_step);
-          if constexpr (requires(Ray& r) { r.track_reuse_windows(true); })
-            slot->track_reuse_windows(out[k].reuse_window > 0.0f);
-        },
-        [&](std::size_t k, Ray& ray, const RayResult& res) { ray.finish(res, out[k]); });
-  };
-  if constexpr (std::is_same_v<S, Kerr>) {
-    if (takes_mino_path(sc)) {
-      const double cr = mino_capture_radius(sc);
-      return run(MinoPath<MinoRay<OnStep>>{cr > 0.0 ? 1.0 / cr : 1e300},
-                 sc.spacetime.trace_jacobian(sc.eye.scene_event));
-    }
-  }
-  run(HamiltonianPath<S, HamiltonianRay<S, OnStep>>(sc.spacetime, sc.rays));
-}
-
-// Calls f (which must not be inlined here) with the stack moved to the same
-// offset within a 4 KiB page, whoever the caller.  Why: the lane integrators
-// keep ~10 KB of state on the stack, and where it falls within a page decides
-// a Kerr frame's speed by up to a fifth, so an unrelated change to a caller's
-// locals could slow every frame.  How it was measured: one binary that took
-// the offset from the environment rendered the same Kerr frames with offsets
-// 0..4032; docs/performance.md, changes 28 and 29, has the numbers.
-template <class F>
-[[gnu::noinline]] void on_pinned_stack(F&& f) {
-  constexpr std::uintptr_t page = 4096, offset = 0;
-  const auto sp = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
-  volatile char* pad = static_cast<char*>(__builtin_alloca((sp - offset) % page + 1));
-  pad[0] = 0;
-  f();
-  pad[0] = 1;  // keeps the pad alive across the call
-}
-
-}  // namespace detail
+struct TraceStage {
+  static void records(const SceneIn<S>& sc, std::span<const RayStart> starts, std::span<HitRecord> out);
+  static Shading shading(const SceneIn<S>& sc, const HitRecord& hit);
+  static RaySample sample(const SceneIn<S>& sc, const RayStart& start);
+  static void batch(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out);
+};
 
 // Traces the rays `starts` into the records `out` (same size), lane_count at
 // a time: each record as one ray alone gives it
 // (Renderer.LanesGiveWhatOneRayGives).  Colours are the shade stage's.
 template <class S>
 void trace_records(const SceneIn<S>& sc, std::span<const RayStart> starts, std::span<HitRecord> out) {
-  detail::on_pinned_stack([&]() __attribute__((noinline)) {
-    NoPath no_path;
-    detail::trace_rays<lane_count>(sc, starts, out, no_path);
-  });
+  TraceStage<S>::records(sc, starts, out);
+}
+
+// The colour of the record `hit` and, for a sky ray, where it went
+// (render/shade.hpp).
+template <class S>
+Shading shading(const SceneIn<S>& sc, const HitRecord& hit) {
+  return TraceStage<S>::shading(sc, hit);
 }
 
 // Traces the ray `start` (an eye, the frame's or a stereo camera's, and a
-// local direction) and shades it.  OnStep(const RayState& y, double sigma)
-// sees the start of every accepted step in trace coordinates with its
-// affine parameter (for `lightcone trace`; NoPath when rendering).
-template <class S, class OnStep>
-RaySample trace_sample(const SceneIn<S>& sc, const RayStart& start, OnStep&& on_step) {
-  RaySample out;
-  detail::trace_rays<1>(sc, std::span<const RayStart>(&start, 1), std::span<HitRecord>(&out.hit, 1), on_step);
-  shade(sc, out);
-  return out;
+// local direction) and shades it.  (With a path recorder:
+// render/trace_templates.hpp.)
+template <class S>
+RaySample trace_sample(const SceneIn<S>& sc, const RayStart& start) {
+  return TraceStage<S>::sample(sc, start);
 }
 
 // The same along local direction n from the frame's eye.
-template <class S, class OnStep>
-RaySample trace_sample(const SceneIn<S>& sc, const Vec3& n, OnStep&& on_step) {
-  return trace_sample(sc, RayStart{&sc.eye, n}, on_step);
+template <class S>
+RaySample trace_sample(const SceneIn<S>& sc, const Vec3& n) {
+  return TraceStage<S>::sample(sc, RayStart{&sc.eye, n});
 }
 
 // Traces the camera rays of local directions `dirs` from the frame's eye
@@ -120,17 +61,7 @@ RaySample trace_sample(const SceneIn<S>& sc, const Vec3& n, OnStep&& on_step) {
 // it.
 template <class S>
 void trace_batch(const SceneIn<S>& sc, std::span<const Vec3> dirs, std::span<RaySample> out) {
-  std::vector<RayStart> starts(dirs.size());
-  std::vector<HitRecord> records(dirs.size());
-  for (std::size_t k = 0; k < dirs.size(); ++k) {
-    starts[k] = {&sc.eye, dirs[k]};
-    records[k].reuse_window = out[k].hit.reuse_window;
-  }
-  trace_records(sc, std::span<const RayStart>(starts), std::span<HitRecord>(records));
-  for (std::size_t k = 0; k < dirs.size(); ++k) {
-    out[k].hit = records[k];
-    shade(sc, out[k]);
-  }
+  TraceStage<S>::batch(sc, dirs, out);
 }
 
 }  // namespace lc

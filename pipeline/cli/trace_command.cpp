@@ -15,7 +15,7 @@
 #include "render/scene_builder.hpp"
 #include "job/image_size.hpp"
 #include "render/layers.hpp"
-#include "render/trace.hpp"
+#include "render/trace_templates.hpp"
 #include "script/shot.hpp"
 
 namespace lc {

@@ -15,7 +15,7 @@
 #include "camera/pinhole_params.hpp"
 #include "core/constants.hpp"
 #include "eye/tetrad.hpp"
-#include "render/trace.hpp"
+#include "render/trace_templates.hpp"
 #include "spacetime/spacetime.hpp"
 
 namespace lc {
@@ -180,7 +180,7 @@ SceneIn<Wormhole> wormhole_scene(double rho, ShotResources& res) {
   rays.escape = EscapeRule::fixed;
   rays.escape_radius = 60.0;  // in l: the rest of the bending, ~b^2/l^2, is below 3e-4
   rays.free_radius = 0.0;
-  SceneIn<Wormhole> sc{st, {}, Camera(PinholeParams{}, 8, 8), uniform(0.25f), {{1, uniform(0.75f)}}, {}, rays};
+  SceneIn<Wormhole> sc{st, {}, Camera(PinholeParams{}, 8, 8), uniform(0.25f), {{1, uniform(0.75f)}}, std::make_shared<ObjectSet>(), rays};
   sc.eye.event = sc.eye.scene_event = {0.0, rho, 0.0, 0.0};
   sc.eye.metric = st.metric(sc.eye.event);
   sc.eye.frame = static_cartesian_tetrad(st, sc.eye.event);

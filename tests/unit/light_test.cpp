@@ -14,6 +14,8 @@
 #include "camera/pinhole_params.hpp"
 #include "core/constants.hpp"
 #include "light/light.hpp"
+#include "objects/disk.hpp"
+#include "objects/sphere.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
 
@@ -77,7 +79,7 @@ std::vector<RaySample> samples(const SceneSpec& fs, int W, KerrChart chart = Ker
   for (int j = 0; j < W; ++j)
     for (int i = 0; i < W; ++i)
       out.push_back(std::visit(
-          [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{}); }, scene));
+          [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5)); }, scene));
   return out;
 }
 

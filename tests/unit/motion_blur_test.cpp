@@ -184,7 +184,7 @@ return {{name = 's', frames = 3, width = 256, height = 64, shutter = 1, time_sam
   const Scene blurred_scene = build_frame(shot, 1, W, H, res);
   const auto& sc = std::get<SceneIn<Minkowski>>(blurred_scene);
   EXPECT_EQ(sc.instants.size(), static_cast<std::size_t>(time_samples));
-  const RaySample centre = trace_sample(sc, unit3(sc.camera.direction(0.5 * W + 0.3, 0.5 * H + 0.2)), NoPath{});
+  const RaySample centre = trace_sample(sc, unit3(sc.camera.direction(0.5 * W + 0.3, 0.5 * H + 0.2)));
   EXPECT_EQ(centre.hit.kind, HitKind::sky);
   const double th = centre.sky.theta, ph = centre.sky.phi;
   const auto field = std::make_shared<const StarField>(

@@ -20,6 +20,8 @@
 
 #include "camera/pinhole.hpp"
 #include "core/constants.hpp"
+#include "objects/disk.hpp"
+#include "objects/sphere.hpp"
 #include "render/pixel_rows.hpp"
 #include "render/scene_builder.hpp"
 #include "test_scenes.hpp"

@@ -11,6 +11,9 @@
 
 #include "camera/pinhole.hpp"
 #include "core/constants.hpp"
+#include "objects/disk.hpp"
+#include "objects/objects.hpp"
+#include "objects/sphere.hpp"
 #include "render/accuracy.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
@@ -30,7 +33,7 @@ SceneSpec kerr_scene(double M, double a, double r, double theta_deg, double fov,
 }
 
 RaySample sample_at(const Scene& scene, double px, double py) {
-  return std::visit([&](const auto& sc) { return trace_sample(sc, sc.camera.direction(px, py), NoPath{}); }, scene);
+  return std::visit([&](const auto& sc) { return trace_sample(sc, sc.camera.direction(px, py)); }, scene);
 }
 
 // Every pixel-centre sample of a W x H image of `fs`, traced with `chart`
@@ -337,7 +340,7 @@ TEST(Renderer, LanesGiveWhatOneRayGives) {
             EXPECT_EQ(alone.hit.phi, batch[k].hit.phi) << name << " ray " << k;
             EXPECT_EQ(alone.hit.t, batch[k].hit.t) << name << " ray " << k;
             EXPECT_EQ(alone.color, batch[k].color) << name << " ray " << k;
-            const RaySample one = trace_sample(sc, dirs[k], NoPath{});
+            const RaySample one = trace_sample(sc, dirs[k]);
             ASSERT_EQ(one.hit.kind, batch[k].hit.kind) << name << " ray " << k;
             EXPECT_NEAR(one.hit.r, batch[k].hit.r, 1e-6 * std::abs(batch[k].hit.r)) << name << " ray " << k;
             EXPECT_NEAR(one.hit.t, batch[k].hit.t, 1e-6 * (1 + std::abs(batch[k].hit.t))) << name << " ray " << k;
@@ -415,7 +418,7 @@ TEST(Renderer, SphereSimultaneityIsSolvedNearAMovingSphere) {
   ShotResources res;
   const Scene scene = falling_sphere_scene(Dihole(0.4, 0.4, 1.0), {0, 0, 0}, 1.0, res);
   const auto& sc = std::get<SceneIn<Dihole>>(scene);
-  const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects).front();
+  const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects->lists).front();
   double worst = 0.0;
   for (double t = 30.0; t < 150.0; t += 0.37) {
     Vec4 C, u;
@@ -469,7 +472,7 @@ TEST(Renderer, SphereTubeHoldsTheSphere) {
     ShotResources res;
     const Scene scene = falling_sphere_scene(Dihole(0.4, 0.4, 1.0), {0, 0, 0}, 1.0, res);
     const auto& sc = std::get<SceneIn<Dihole>>(scene);
-    const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects).front();
+    const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects->lists).front();
     const double seen = farthest_surface_point(sc.spacetime, sphere, -3.0, 230.0);
     EXPECT_LE(seen, sphere.tube_radius());
     EXPECT_GT(seen, 0.9 * sphere.tube_radius());
@@ -479,7 +482,7 @@ TEST(Renderer, SphereTubeHoldsTheSphere) {
     ShotResources res;
     const Scene scene = falling_sphere_scene(Minkowski{}, {-0.6, 0, 0}, 2.0, res);
     const auto& sc = std::get<SceneIn<Minkowski>>(scene);
-    const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects).front();
+    const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects->lists).front();
     // Once moving, the contracted sphere reaches R across its motion (to
     // 1e-5: the directions pass within ~0.005 rad of that circle) ...
     EXPECT_NEAR(farthest_surface_point(sc.spacetime, sphere, 10.0, 150.0), 2.0, 1e-5);

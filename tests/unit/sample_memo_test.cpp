@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "camera/pinhole.hpp"
+#include "objects/sphere.hpp"
 #include "render/renderer.hpp"
 #include "render/sample_memo.hpp"
 #include "render/scene_builder.hpp"

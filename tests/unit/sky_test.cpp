@@ -43,7 +43,7 @@ std::vector<Color> sky_frame(const SkySpec& sky, int W = 24, int H = 12) {
   for (int j = 0; j < H; ++j)
     for (int i = 0; i < W; ++i)
       out.push_back(std::visit(
-          [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5), NoPath{}).color; },
+          [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5)).color; },
           scene));
   return out;
 }

@@ -8,6 +8,7 @@
 #include "camera/equirect.hpp"
 #include "camera/pinhole.hpp"
 #include "camera/stereo.hpp"
+#include "objects/sphere.hpp"
 
 #include <gtest/gtest.h>
 
