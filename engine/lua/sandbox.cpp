@@ -371,6 +371,35 @@ std::string overflow_report(lua_State* L, std::string_view message) {
   return out;
 }
 
+// Lua names a chunk whose file name is longer than LUA_IDSIZE by its tail
+// ("...ots/shot.lua:3:"), in its own messages and in tracebacks; in a
+// checkout with a long path that hides which file failed.  `msg` with each
+// such tail that ends exactly one of `files` (the names its chunks were
+// loaded under) replaced by that file's whole name.
+std::string with_whole_file_names(std::string msg, const std::vector<std::string>& files) {
+  std::size_t at = 0;
+  while ((at = msg.find("...", at)) != std::string::npos) {
+    const std::size_t tail_begin = at + 3, tail_end = msg.find(':', tail_begin);
+    if (tail_end == std::string::npos) break;
+    const std::string_view tail(msg.data() + tail_begin, tail_end - tail_begin);
+    const std::string* whole = nullptr;
+    int matches = 0;
+    if (!tail.empty() && tail.find('\n') == std::string_view::npos)
+      for (const std::string& f : files)
+        if (f.size() > tail.size() && std::string_view(f).ends_with(tail) && (!whole || *whole != f)) {
+          whole = &f;
+          ++matches;
+        }
+    if (matches == 1) {
+      msg.replace(at, tail_end - at, *whole);
+      at += whole->size();
+    } else {
+      at = tail_end;
+    }
+  }
+  return msg;
+}
+
 }  // namespace
 
 // Everything one sandboxed state needs. It is the allocator's user data, so
@@ -381,6 +410,9 @@ struct Sandbox::Impl {
   std::vector<std::filesystem::path> require_dirs;
   SandboxLimits limits;
   std::vector<std::filesystem::path> loaded;
+  // The file names chunks were loaded under (after the '@'), to name them
+  // whole in messages (with_whole_file_names).
+  std::vector<std::string> chunk_files;
 
   std::size_t heap_bytes = 0;  // live bytes handed out to Lua
   std::size_t refused = 0;     // allocations the cap refused, ever
@@ -798,6 +830,7 @@ struct Sandbox::Impl {
     note_loaded(found);
     std::string chunkname = "@";  // built in two steps: GCC 12 misreports "@" + s (-Wrestrict, PR 105329)
     chunkname += found.string();
+    chunk_files.push_back(found.string());
     // The parser and the module run on this C stack, below the caller's.
     const detail::NestedCall nested(L);
     int status = luaL_loadbufferx(L, source.data(), source.size(), chunkname.c_str(), "t");
@@ -864,7 +897,7 @@ struct Sandbox::Impl {
       msg = fmt::format("{}: error object is a {} value", name, luaL_typename(L, -1));
     }
     lua_settop(L, base);
-    throw ScriptError(msg);
+    throw ScriptError(with_whole_file_names(std::move(msg), chunk_files));
   }
 
   // Brackets one evaluation. Only the outermost one (a C function may call
@@ -985,6 +1018,7 @@ void Sandbox::run_file(const std::filesystem::path& file, int nresults) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, s.handler_ref);
   std::string chunkname = "@";  // see above
   chunkname += file.string();
+  s.chunk_files.push_back(file.string());
   int status = luaL_loadbufferx(L, source.data(), source.size(), chunkname.c_str(), "t");
   if (status == 0) status = lua_pcall(L, 0, nresults, base + 1);
   if (status != 0) s.fail(status, base, file.string());

@@ -279,15 +279,37 @@ fi
 # 2. scancel mid-render, then sbatch again.  Each worker holds its sets after
 # 40 (two frames' worth together: a frame is certainly stored), so the job
 # is still running when it is cancelled.
-# rank_pid JOB RANK: the pid of the job's rank RANK (0: the master).
+# rank_pid JOB RANK LOG: the pid of the job's rank RANK (0: the master).  A
+# worker that paused said its pid in LOG ("test pause: pid N (rank R)"),
+# which is taken if that process is still there; else (the master, which
+# does not pause) /proc is searched for a lightcone process with the job's
+# id and the rank in its environment, for up to 5 s: under heavy load that
+# search once found no rank 2 that the monitor still showed working.
 rank_pid() {
+  local p said
+  said=$(sed -n "s/.*test pause: pid \([0-9]*\) (rank $2).*/\1/p" "$3" 2>/dev/null | head -1)
+  if [ -n "$said" ] && [ "$(cat "/proc/$said/comm" 2>/dev/null)" = lightcone ]; then
+    echo "$said"
+    return
+  fi
+  for _ in $(seq 1 20); do
+    for p in /proc/[0-9]*; do
+      [ "$(cat "$p/comm" 2>/dev/null)" = lightcone ] || continue
+      tr '\0' '\n' <"$p/environ" 2>/dev/null | grep -qx "SLURM_JOB_ID=$1" || continue
+      tr '\0' '\n' <"$p/environ" 2>/dev/null | grep -Eqx "(OMPI_COMM_WORLD_RANK|PMIX_RANK)=$2" || continue
+      echo "${p#/proc/}"
+      return
+    done
+    sleep 0.25
+  done
+}
+# What /proc shows of the lightcone processes, for a message when rank_pid
+# finds none: each pid, its command and the Slurm and rank variables.
+lightcone_processes() {
   local p
   for p in /proc/[0-9]*; do
     [ "$(cat "$p/comm" 2>/dev/null)" = lightcone ] || continue
-    tr '\0' '\n' <"$p/environ" 2>/dev/null | grep -qx "SLURM_JOB_ID=$1" || continue
-    tr '\0' '\n' <"$p/environ" 2>/dev/null | grep -Eqx "(OMPI_COMM_WORLD_RANK|PMIX_RANK)=$2" || continue
-    echo "${p#/proc/}"
-    return
+    echo "pid ${p#/proc/}: $(tr '\0' ' ' <"$p/environ" 2>/dev/null | tr ' ' '\n' | grep -E '^(SLURM_JOB_ID|OMPI_COMM_WORLD_RANK|PMIX_RANK)=' | tr '\n' ' ')"
   done
 }
 # What a round checks of a monitor, if it watches one (section 2b).
@@ -316,8 +338,11 @@ cancel_round() {
   if [ "$how" = kill-master ] || [ "$how" = kill-worker ]; then
     local rank=0 victim
     [ "$how" = kill-worker ] && rank=2
-    victim=$(rank_pid "$JOB" "$rank")
-    [ -n "$victim" ] || { fail "$name: no process of rank $rank of job $JOB found"; return; }
+    victim=$(rank_pid "$JOB" "$rank" "$name.log")
+    [ -n "$victim" ] || {
+      fail "$name: no process of rank $rank of job $JOB found; pause lines: $(grep 'test pause' "$name.log" | tr '\n' ' '); lightcone processes: $(lightcone_processes | tr '\n' ';')"
+      return
+    }
     kill -KILL "$victim"
     # Slurm's PMIx plugin aborts the step when a task dies: no scancel.
     s=$(wait_job "$JOB" 60)
