@@ -17,6 +17,9 @@ namespace lc {
 
 struct CameraSpecKinds;  // camera/camera_params.hpp
 using CameraSpec = SpecBox<CameraSpecKinds>;
+// Its members are compiled once, beside the list; nowhere else, even where
+// core/spec_box_impl.hpp is seen.
+extern template class SpecBox<CameraSpecKinds>;
 
 // Its kind's name (its Lua constructor's: "camera", "fisheye", ...).
 std::string_view camera_name(const CameraSpec& spec);

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "geodesic/christoffel.hpp"
+#include "spacetime/spacetime.hpp"
 
 namespace lc {
 
@@ -194,7 +195,7 @@ GeodesicPath solve_geodesic(const GeodesicProblem& pb) {
         std::call_once(quiet, [] { gsl_set_error_handler_off(); });
         return solve(st, pb);
       },
-      pb.spacetime);
+      pb.spacetime.kinds());
 }
 
 }  // namespace lc

@@ -13,7 +13,7 @@
 #include "core/constants.hpp"
 #include "geodesic/stop_reason.hpp"
 #include "eye/tetrad.hpp"
-#include "spacetime/spacetime.hpp"
+#include "spacetime/spacetime_spec.hpp"
 
 namespace lc {
 
@@ -23,7 +23,7 @@ enum class StopParameter { affine, proper_time, coordinate_time };
 enum class GslStepper { rk8pd, rkf45 };
 
 struct GeodesicProblem {
-  Spacetime spacetime = Minkowski{};
+  Spacetime spacetime;  // Minkowski unless set
   CurveKind kind = CurveKind::null;
   Vec4 x0{};  // start event, trace coordinates
   // Future-directed tangent at the start (trace coordinates): a null vector,

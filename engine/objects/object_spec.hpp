@@ -16,6 +16,9 @@ namespace lc {
 
 struct ObjectSpecKinds;  // objects/object_params.hpp
 using ObjectSpec = SpecBox<ObjectSpecKinds>;
+// Its members are compiled once, beside the list; nowhere else, even where
+// core/spec_box_impl.hpp is seen.
+extern template class SpecBox<ObjectSpecKinds>;
 
 // Its kind's name (its Lua constructor's: "disk", "sphere", ...).
 std::string_view object_name(const ObjectSpec& spec);

@@ -65,7 +65,7 @@ struct ListsOf<Registry<O...>> {
 }  // namespace detail
 // One assertion per kind and spacetime: the compiler's notes name the pair
 // that fails and the requirement it misses.
-static_assert(every_kind<Spacetime>([]<class S>() {
+static_assert(every_kind<SpacetimeList>([]<class S>() {
   every_kind<ObjectRegistry>([]<class O>() {
     static_assert(ObjectKind<O, S>, "a registered object kind must satisfy ObjectKind in every registered spacetime");
   });

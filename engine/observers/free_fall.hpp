@@ -17,7 +17,7 @@
 #include "assets/shot_resources.hpp"
 #include "core/fields.hpp"
 #include "observers/observer_point.hpp"
-#include "spacetime/spacetime.hpp"
+#include "spacetime/spacetime_spec.hpp"
 #include "worldline/worldline.hpp"
 #include "worldline/worldline_spec.hpp"
 

@@ -58,7 +58,7 @@ using ObserverRegistry = Registry<StaticObserver, Zamo, FreeFall>;
 
 // One assertion per kind and spacetime: the compiler's notes name the pair
 // that fails and the requirement it misses.
-static_assert(every_kind<Spacetime>([]<class S>() {
+static_assert(every_kind<SpacetimeList>([]<class S>() {
   every_kind<ObserverRegistry>([]<class O>() {
     static_assert(ObserverModel<O, S>,
                   "a registered observer kind must satisfy ObserverModel in every registered spacetime");

@@ -20,6 +20,7 @@
 #include "light/light.hpp"
 #include "observers/observers.hpp"
 #include "sky/sky.hpp"
+#include "spacetime/spacetime.hpp"
 
 namespace lc {
 
@@ -78,8 +79,8 @@ struct SceneVariantOf<std::variant<S...>> {
 // bring every registry into the files that include it (docs/architecture.md,
 // "What a new kind rebuilds").  std::visit and std::get take it as the
 // variant it is.
-struct Scene : SceneVariantOf<Spacetime>::type {
-  using Base = SceneVariantOf<Spacetime>::type;
+struct Scene : SceneVariantOf<SpacetimeList>::type {
+  using Base = SceneVariantOf<SpacetimeList>::type;
   using Base::Base;
 };
 

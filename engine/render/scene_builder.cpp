@@ -12,6 +12,7 @@
 #include "render/ray_start.hpp"
 #include "scene/still_key.hpp"
 #include "spacetime/chart.hpp"
+#include "spacetime/spacetime.hpp"
 
 namespace lc {
 
@@ -101,7 +102,7 @@ Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResourc
 Scene build_scene(const SceneSpec& fs, int width, int height, ShotResources& resources, const RayOptions& rays,
                   const ImageWindow& window) {
   const Spacetime st = trace_chart(fs.spacetime);
-  return std::visit([&](const auto& s) { return build(s, fs, width, height, resources, rays, window); }, st);
+  return std::visit([&](const auto& s) { return build(s, fs, width, height, resources, rays, window); }, st.kinds());
 }
 
 Scene build_scene(const FrameSpecs& specs, int width, int height, ShotResources& resources, const RayOptions& rays,

@@ -22,12 +22,12 @@
 #include "core/tensor.hpp"
 #include "scene/shot_info.hpp"
 #include "worldline/worldline_spec.hpp"
-#include "spacetime/spacetime.hpp"
+#include "spacetime/spacetime_spec.hpp"
 
 namespace lc {
 
 struct SceneSpec {
-  Spacetime spacetime = Minkowski{};
+  Spacetime spacetime;  // Minkowski unless set
   ObserverSpec observer;            // a registry's variant (observers/observers.hpp)
   CameraSpec camera;
   SkySpec sky;

@@ -8,13 +8,14 @@
 
 #include <fmt/format.h>
 
-#include "lua/table_reader.hpp"
 #include "camera/camera_params.hpp"
+#include "lua/table_reader.hpp"
 #include "objects/object_params.hpp"
 #include "script/scene_reader.hpp"
-#include "worldline/worldline.hpp"
-#include "spacetime/chart.hpp"
 #include "script/spacetime_reader.hpp"
+#include "spacetime/chart.hpp"
+#include "spacetime/spacetime.hpp"
+#include "worldline/worldline.hpp"
 
 namespace lc {
 
@@ -92,7 +93,7 @@ int l_apocentres(lua_State* L) {
       std::vector<EngineMemo::Apocentre> out;
       for (const WorldlineEvent& e : w.apocentres()) {
         double t_unused, r, phi_unused;
-        std::visit([&](const auto& st) { scene_polar(st, e.x, t_unused, r, phi_unused); }, w.spacetime());
+        std::visit([&](const auto& st) { scene_polar(st, e.x, t_unused, r, phi_unused); }, w.spacetime().kinds());
         out.push_back({w.scene_time(e.x), e.tau, r});
       }
       return out;

@@ -23,7 +23,7 @@
 #include "core/color.hpp"
 #include "core/fields.hpp"
 #include "lua/table_reader.hpp"
-#include "spacetime/spacetime.hpp"
+#include "spacetime/spacetime_spec.hpp"
 #include "worldline/placement.hpp"
 
 namespace lc {

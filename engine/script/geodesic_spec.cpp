@@ -5,12 +5,13 @@
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
+#include "eye/tetrad.hpp"
 #include "lua/sandbox.hpp"
 #include "lua/table_reader.hpp"
-#include "eye/tetrad.hpp"
 #include "script/engine_api.hpp"
 #include "script/script_paths.hpp"
 #include "script/spacetime_reader.hpp"
+#include "spacetime/spacetime.hpp"
 
 namespace lc {
 
@@ -121,7 +122,7 @@ GeodesicSpec read_geodesic_spec(lua::TableReader& spec) {
         }
         if (spec.boolean_or("transport", false)) pb.tetrad = frame;
       },
-      pb.spacetime);
+      pb.spacetime.kinds());
 
   auto stop = spec.table("stop");
   int given = 0;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "script/field_reader.hpp"
+#include "spacetime/spacetime.hpp"
 
 namespace lc {
 

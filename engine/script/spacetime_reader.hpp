@@ -3,7 +3,7 @@
 // constructors of engine_api (a table tagged with __kind).
 
 #include "lua/table_reader.hpp"
-#include "spacetime/spacetime.hpp"
+#include "spacetime/spacetime_spec.hpp"
 
 namespace lc {
 

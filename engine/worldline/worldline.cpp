@@ -8,6 +8,7 @@
 
 #include "geodesic/christoffel.hpp"
 #include "geodesic/geodesic_solver.hpp"
+#include "spacetime/spacetime.hpp"
 
 namespace lc {
 
@@ -59,7 +60,7 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
         pb.u0 = frame.e[0];
         pb.tetrad = frame;
       },
-      w.spacetime_);
+      w.spacetime_.kinds());
   const GeodesicPath path = solve_geodesic(pb);
   if (path.reason != StopReason::reached)
     throw std::invalid_argument(fmt::format(
@@ -110,7 +111,7 @@ Worldline Worldline::integrate(const WorldlineSpec& spec) {
                                              "worldline")));
         }
       },
-      w.spacetime_);
+      w.spacetime_.kinds());
   // The top speed of the Hermite interpolant: per step and axis, dx/dt is a
   // quadratic in the step's fraction q, largest in size at an end or at its
   // vertex.
@@ -163,7 +164,7 @@ WorldlineEvent Worldline::interpolate(std::size_t i, double s) const {
   // (the blend is O(dtau^2) off; Gram–Schmidt restores orthonormality).
   std::array<Vec4, 4> blend;
   for (int l = 0; l < 4; ++l) blend[l] = (1.0 - s) * a.e.e[l] + s * b.e.e[l];
-  const Mat4 g = std::visit([&](const auto& st) { return st.metric(ev.x); }, spacetime_);
+  const Mat4 g = std::visit([&](const auto& st) { return st.metric(ev.x); }, spacetime_.kinds());
   try {
     ev.frame = orthonormalize(g, blend, "worldline");
   } catch (const ObserverError&) {
@@ -196,7 +197,7 @@ WorldlineEvent Worldline::transported(const Sample& from, double dtau, double ta
   WorldlineEvent ev;
   ev.tau = tau;
   ev.x = end.x;
-  const Mat4 g = std::visit([&](const auto& st) { return st.metric(ev.x); }, spacetime_);
+  const Mat4 g = std::visit([&](const auto& st) { return st.metric(ev.x); }, spacetime_.kinds());
   ev.frame = orthonormalize(g, end.e, "worldline");
   return ev;
 }
@@ -332,7 +333,7 @@ WorldlineEvent Worldline::at_coordinate_time(double t) const {
 }
 
 double Worldline::scene_time(const Vec4& x) const {
-  return std::visit([&](const auto& st) { return st.scene_from_trace(x)[0]; }, spacetime_);
+  return std::visit([&](const auto& st) { return st.scene_from_trace(x)[0]; }, spacetime_.kinds());
 }
 
 std::vector<WorldlineEvent> Worldline::apocentres() const {
@@ -343,7 +344,7 @@ std::vector<WorldlineEvent> Worldline::apocentres() const {
           scene_polar(st, x, t, r, phi);
           return r;
         },
-        spacetime_);
+        spacetime_.kinds());
   };
   std::vector<WorldlineEvent> out;
   for (std::size_t i = 1; i + 1 < samples_.size(); ++i) {

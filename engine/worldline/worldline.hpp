@@ -102,7 +102,7 @@ class Worldline {
   // time `tau`), integrated; throws ObserverError if the curve cannot get there.
   WorldlineEvent transported(const Sample& from, double dtau, double tau) const;
 
-  Spacetime spacetime_ = Minkowski{};
+  Spacetime spacetime_;  // Minkowski unless set
   std::vector<Sample> samples_;
   double dtau_ = 0.0, duration_ = 0.0;
   // Uniform in trace coordinate time from start_time(), step dt_: the

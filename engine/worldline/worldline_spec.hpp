@@ -8,7 +8,7 @@
 
 #include "core/json.hpp"
 #include "core/tensor.hpp"
-#include "spacetime/spacetime.hpp"
+#include "spacetime/spacetime_spec.hpp"
 
 namespace lc {
 
@@ -18,7 +18,7 @@ namespace lc {
 // integrated for `duration` of proper time.  Identical specs within a shot
 // share one integration.
 struct WorldlineSpec {
-  Spacetime spacetime = Minkowski{};
+  Spacetime spacetime;  // Minkowski unless set
   Vec4 start{};
   Vec3 velocity{};
   double duration = 0.0;

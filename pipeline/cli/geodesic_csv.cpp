@@ -13,15 +13,6 @@
 
 namespace lc {
 
-std::string spacetimes_in_chart(SceneChart c) {
-  std::string out;
-  for_each_spacetime_type([&](auto tag) {
-    using S = typename decltype(tag)::type;
-    if (S::chart == c) out += fmt::format("{}{}", out.empty() ? "" : ", ", S::name);
-  });
-  return out;
-}
-
 std::string geodesic_csv_header(const std::vector<Spacetime>& spacetimes, bool with_tetrad, bool bundle) {
   std::string names;
   for (const Spacetime& st : spacetimes) {
@@ -42,33 +33,30 @@ std::string geodesic_csv_header(const std::vector<Spacetime>& spacetimes, bool w
 
 void append_geodesic_csv(std::string& out, const Spacetime& spacetime, const GeodesicPath& path, bool with_tetrad,
                          std::optional<int> ray) {
-  std::visit(
-      [&](const auto& st) {
-        double phi_prev = 0.0, phi_offset = 0.0;
-        bool first = true;
-        for (const auto& s : path.samples) {
-          Vec4 x = st.scene_from_trace(s.x);
-          if (has_polar_scene(spacetime)) {
-            // Unwrap phi: choose the 2 pi branch nearest the previous sample.
-            if (!first) phi_offset += two_pi * std::round((phi_prev - (x[3] + phi_offset)) / two_pi);
-            phi_prev = x[3] + phi_offset;
-            x[3] = phi_prev;
-            first = false;
-          }
-          const Vec4 u = st.scene_vector(s.x, s.u);
-          if (ray) out += fmt::format("{},", *ray);
-          // %.17g: round-trips doubles exactly.
-          out += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", s.lambda, x[0],
-                             x[1], x[2], x[3], u[0], u[1], u[2], u[3]);
-          if (with_tetrad)
-            for (int a = 0; a < 4; ++a) {
-              const Vec4 e = st.scene_vector(s.x, s.e[a]);
-              for (int m = 0; m < 4; ++m) out += fmt::format(",{:.17g}", e[m]);
-            }
-          out += '\n';
-        }
-      },
-      spacetime);
+  const bool polar = has_polar_scene(spacetime);
+  double phi_prev = 0.0, phi_offset = 0.0;
+  bool first = true;
+  for (const auto& s : path.samples) {
+    Vec4 x = scene_from_trace(spacetime, s.x);
+    if (polar) {
+      // Unwrap phi: choose the 2 pi branch nearest the previous sample.
+      if (!first) phi_offset += two_pi * std::round((phi_prev - (x[3] + phi_offset)) / two_pi);
+      phi_prev = x[3] + phi_offset;
+      x[3] = phi_prev;
+      first = false;
+    }
+    const Vec4 u = scene_vector(spacetime, s.x, s.u);
+    if (ray) out += fmt::format("{},", *ray);
+    // %.17g: round-trips doubles exactly.
+    out += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", s.lambda, x[0], x[1],
+                       x[2], x[3], u[0], u[1], u[2], u[3]);
+    if (with_tetrad)
+      for (int a = 0; a < 4; ++a) {
+        const Vec4 e = scene_vector(spacetime, s.x, s.e[a]);
+        for (int m = 0; m < 4; ++m) out += fmt::format(",{:.17g}", e[m]);
+      }
+    out += '\n';
+  }
 }
 
 namespace {

@@ -24,8 +24,6 @@ namespace lc {
 // phi), cartesian.  In the enumerators' order.
 inline constexpr std::array<std::string_view, 2> csv_chart_names = {"bl", "cartesian"};
 inline std::string_view csv_chart_name(SceneChart c) { return csv_chart_names[static_cast<std::size_t>(c)]; }
-// The registered spacetimes whose scene chart is c, by name: "kerr".
-std::string spacetimes_in_chart(SceneChart c);
 
 // The chart line and the column header, for rays in `spacetimes` (all in
 // one scene chart: the caller checks; one name per kind, in order).

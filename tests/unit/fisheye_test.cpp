@@ -18,6 +18,7 @@
 #include "render/pixel_rows.hpp"
 #include "render/scene_builder.hpp"
 #include "shadow_check.hpp"
+#include "spacetime/kerr.hpp"
 #include "test_scenes.hpp"
 
 namespace lc {

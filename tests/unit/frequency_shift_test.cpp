@@ -18,6 +18,9 @@
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
 #include "render/trace_templates.hpp"
+#include "spacetime/dihole.hpp"
+#include "spacetime/kerr.hpp"
+#include "spacetime/minkowski.hpp"
 #include "test_scenes.hpp"
 
 namespace lc {

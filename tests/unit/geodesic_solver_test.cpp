@@ -8,6 +8,8 @@
 
 #include "core/constants.hpp"
 #include "geodesic/geodesic_solver.hpp"
+#include "spacetime/kerr.hpp"
+#include "spacetime/minkowski.hpp"
 #include "test_scenes.hpp"
 
 namespace lc {

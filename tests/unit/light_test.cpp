@@ -18,6 +18,8 @@
 #include "objects/sphere.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
+#include "spacetime/kerr.hpp"
+#include "spacetime/minkowski.hpp"
 
 namespace lc {
 namespace {

@@ -19,8 +19,10 @@
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
 #include "scratch_dir.hpp"
-#include "shot_file.hpp"
 #include "script/shot.hpp"
+#include "shot_file.hpp"
+#include "spacetime/kerr.hpp"
+#include "spacetime/minkowski.hpp"
 #include "stars/star_field.hpp"
 
 namespace lc {

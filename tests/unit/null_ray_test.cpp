@@ -8,10 +8,12 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "eye/ray_direction.hpp"
 #include "geodesic/crossing.hpp"
 #include "geodesic/geodesic_solver.hpp"
 #include "geodesic/null_ray.hpp"
-#include "eye/ray_direction.hpp"
+#include "spacetime/dihole.hpp"
+#include "spacetime/kerr.hpp"
 
 namespace lc {
 namespace {

@@ -15,6 +15,7 @@
 #include "scene/scene_json.hpp"
 #include "scene/still_key.hpp"
 #include "script/constructor_docs.hpp"
+#include "spacetime/kerr.hpp"
 
 namespace lc {
 namespace {
@@ -46,7 +47,7 @@ SceneIn<Kerr> kerr_scene(const ObserverSpec& observer, ShotResources& res, bool 
 }
 
 // The trace chart the builder puts Kerr in.
-Kerr kerr_trace_chart() { return std::get<Kerr>(trace_chart(Kerr(1.0, 0.9))); }
+Kerr kerr_trace_chart() { return trace_chart(Kerr(1.0, 0.9)).get<Kerr>(); }
 
 // The eye at offset 0 equals the SceneIn fields, bit for bit, and those
 // equal `expected` (worked out the old way).

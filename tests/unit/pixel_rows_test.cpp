@@ -24,6 +24,8 @@
 #include "objects/sphere.hpp"
 #include "render/pixel_rows.hpp"
 #include "render/scene_builder.hpp"
+#include "spacetime/dihole.hpp"
+#include "spacetime/kerr.hpp"
 #include "test_scenes.hpp"
 
 namespace lc {

@@ -7,6 +7,7 @@
 
 #include "camera/pinhole_params.hpp"
 #include "render/point_star_stage.hpp"
+#include "spacetime/minkowski.hpp"
 
 #include <gtest/gtest.h>
 

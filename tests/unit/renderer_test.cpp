@@ -18,6 +18,9 @@
 #include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
+#include "spacetime/dihole.hpp"
+#include "spacetime/kerr.hpp"
+#include "spacetime/minkowski.hpp"
 #include "test_scenes.hpp"
 
 namespace lc {

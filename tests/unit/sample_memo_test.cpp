@@ -16,6 +16,7 @@
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
 #include "script/shot.hpp"
+#include "spacetime/dihole.hpp"
 #include "test_scenes.hpp"
 
 namespace lc {

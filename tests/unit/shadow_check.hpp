@@ -23,6 +23,7 @@
 #include "core/hit_kind.hpp"
 #include "render/pixel_rows.hpp"
 #include "render/scene_builder.hpp"
+#include "spacetime/kerr.hpp"
 
 namespace lc::test {
 

@@ -22,6 +22,7 @@
 #include "render/trace.hpp"
 #include "scratch_dir.hpp"
 #include "script/shot.hpp"
+#include "spacetime/minkowski.hpp"
 
 namespace lc {
 namespace {

@@ -18,6 +18,7 @@
 #include "core/constants.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
+#include "spacetime/kerr.hpp"
 #include "stars/sky_quad.hpp"
 #include "stars/star_pass.hpp"
 

@@ -9,6 +9,8 @@
 #include "camera/pinhole.hpp"
 #include "camera/stereo.hpp"
 #include "objects/sphere.hpp"
+#include "spacetime/dihole.hpp"
+#include "spacetime/minkowski.hpp"
 
 #include <gtest/gtest.h>
 

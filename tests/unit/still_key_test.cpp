@@ -9,6 +9,8 @@
 #include "objects/disk_params.hpp"
 #include "objects/sphere_params.hpp"
 #include "scene/still_key.hpp"
+#include "spacetime/kerr.hpp"
+#include "spacetime/minkowski.hpp"
 
 #include <string>
 

@@ -3,8 +3,9 @@
 // worldline; the dihole oscillation that worldlines are checked against.
 
 #include "geodesic/geodesic_solver.hpp"
-#include "scene/scene_spec.hpp"
 #include "objects/sphere.hpp"
+#include "scene/scene_spec.hpp"
+#include "spacetime/dihole.hpp"
 
 namespace lc::test {
 

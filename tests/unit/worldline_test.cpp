@@ -7,8 +7,10 @@
 
 #include "core/constants.hpp"
 #include "geodesic/geodesic_solver.hpp"
-#include "worldline/worldline.hpp"
+#include "spacetime/dihole.hpp"
+#include "spacetime/kerr.hpp"
 #include "test_scenes.hpp"
+#include "worldline/worldline.hpp"
 
 namespace lc {
 namespace {
@@ -124,7 +126,7 @@ TEST(Worldline, AFallIsFramedUntilJustOutsideTheHorizon) {
   spec.duration = 7.7;
   spec.where = "test";
   const Worldline w = Worldline::integrate(spec);
-  const Kerr& st = std::get<Kerr>(w.spacetime());
+  const Kerr& st = w.spacetime().get<Kerr>();
   for (double tau = 7.40; tau <= 7.7; tau += 0.005) {
     const WorldlineEvent ev = w.at_proper_time(tau);
     const Mat4 g = st.metric(ev.x);
@@ -145,7 +147,7 @@ TEST(Worldline, AFallMayStartInsideTheErgoregion) {
   spec.duration = 0.2;
   spec.where = "test";
   const Worldline w = Worldline::integrate(spec);
-  const Kerr& st = std::get<Kerr>(w.spacetime());
+  const Kerr& st = w.spacetime().get<Kerr>();
   const Vec4 u = w.at_proper_time(0.0).frame.e[0];
   const Vec4 zamo = zamo_velocity(st, st.trace_from_scene(spec.start));
   for (int m = 0; m < 4; ++m) EXPECT_NEAR(u[m], zamo[m], 1e-12) << m;
