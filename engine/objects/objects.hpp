@@ -21,7 +21,6 @@
 #include "objects/surface_point.hpp"
 #include "objects/sphere.hpp"
 #include "objects/step_query.hpp"
-#include "spacetime/spacetime.hpp"
 
 namespace lc {
 
@@ -63,14 +62,6 @@ struct ListsOf<Registry<O...>> {
   using type = std::tuple<std::vector<O>...>;
 };
 }  // namespace detail
-// One assertion per kind and spacetime: the compiler's notes name the pair
-// that fails and the requirement it misses.
-static_assert(every_kind<SpacetimeList>([]<class S>() {
-  every_kind<ObjectRegistry>([]<class O>() {
-    static_assert(ObjectKind<O, S>, "a registered object kind must satisfy ObjectKind in every registered spacetime");
-  });
-}));
-
 // The object a shot asked for (objects/object_spec.hpp): the kinds'
 // parameters, listed apart in the same order.
 static_assert(std::is_same_v<ObjectRegistry::Spec, ObjectSpecs::Spec>,

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "render/scene_visit.hpp"
 #include "scene/scene_json.hpp"
 
 namespace lc {
@@ -31,7 +32,7 @@ std::string evaluated(const SceneIn<S>& sc) {
 }  // namespace
 
 std::string evaluated_json(const Scene& scene) {
-  return std::visit([](const auto& sc) { return evaluated(sc); }, scene);
+  return visit_scene([](const auto& sc) { return evaluated(sc); }, scene);
 }
 
 }  // namespace lc

@@ -3,6 +3,7 @@
 #include "core/parallel_for.hpp"
 #include "render/layers.hpp"
 #include "render/pixel_rows.hpp"
+#include "render/scene_visit.hpp"
 
 #include <algorithm>
 #include <array>
@@ -27,16 +28,20 @@ FrameImage make_frame(const RenderSettings& rs) {
 }
 
 void prepare_frame(const Scene& scene, FrameImage& image) {
-  const bool stars = std::visit([](const auto& sc) { return sc.sky.point_stars() != nullptr; }, scene);
+  const bool stars = visit_scene([](const auto& sc) { return sc.sky.point_stars() != nullptr; }, scene);
   // A plane per instant of a blurred frame's shutter (docs/motion_blur.md).
-  const std::size_t planes = std::visit([](const auto& sc) { return std::max<std::size_t>(1, sc.instants.size()); }, scene);
+  const std::size_t planes = visit_scene([](const auto& sc) { return std::max<std::size_t>(1, sc.instants.size()); }, scene);
   const std::size_t n = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * planes;
   if (stars && image.sky.size() != n) image.sky.assign(n, SkyPoint{});
 }
 
 RenderStats render_rows(const Scene& scene, const RenderSettings& rs, std::span<const int> rows, FrameImage& image,
                         SampleMemo* memo) {
-  return std::visit([&](const auto& sc) { return render_rows_with(sc, sc.camera, rs, rows, image, memo); }, scene);
+  return visit_scene([&](const auto& sc) { return render_rows_with(sc, sc.camera, rs, rows, image, memo); }, scene);
+}
+
+RaySample trace_image_point(const Scene& scene, double px, double py) {
+  return visit_scene([&](const auto& sc) { return trace_sample(sc, sc.camera.direction(px, py)); }, scene);
 }
 
 FrameImage render_frame(const Scene& scene, const RenderSettings& rs, int threads, RenderStats* stats,

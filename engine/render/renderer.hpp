@@ -8,12 +8,13 @@
 #include <span>
 
 #include "image/image.hpp"
+#include "render/hit_record.hpp"
 #include "render/render_settings.hpp"
 
 namespace lc {
 
 class SampleMemo;
-struct Scene;  // render/scene.hpp
+class Scene;  // render/scene.hpp
 
 // Makes room in `image` (made by make_frame) for its rays' sky points when
 // the scene's sky has stars drawn as points (FrameImage::sky, a plane per
@@ -31,6 +32,11 @@ RenderStats render_rows(const Scene& scene, const RenderSettings& rs, std::span<
 
 // Renders a whole frame with `threads` threads (0: every core), rows handed
 // out dynamically.  `rows_done`, when given, counts finished rows (progress).
+// The sample through image point (px, py) of the scene's camera, from the
+// frame's eye, traced and shaded: what a test or a tool that looks at
+// single pixels reads, without visiting every spacetime itself.
+RaySample trace_image_point(const Scene& scene, double px, double py);
+
 FrameImage render_frame(const Scene& scene, const RenderSettings& rs, int threads, RenderStats* stats = nullptr,
                         std::atomic<int>* rows_done = nullptr);
 

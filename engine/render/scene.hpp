@@ -20,7 +20,6 @@
 #include "light/light.hpp"
 #include "observers/observers.hpp"
 #include "sky/sky.hpp"
-#include "spacetime/spacetime.hpp"
 
 namespace lc {
 
@@ -67,22 +66,77 @@ struct SceneIn {
   }
 };
 
-// A scene in any registered spacetime (spacetime/spacetime.hpp).
-template <class V>
-struct SceneVariantOf;
-template <class... S>
-struct SceneVariantOf<std::variant<S...>> {
-  using type = std::variant<SceneIn<S>...>;
-};
-// A class, not an alias of the variant, so that a header that only passes
-// scenes on (render/renderer.hpp) declares `struct Scene;` and does not
-// bring every registry into the files that include it (docs/architecture.md,
-// "What a new kind rebuilds").  std::visit and std::get take it as the
-// variant it is.
-struct Scene : SceneVariantOf<SpacetimeList>::type {
-  using Base = SceneVariantOf<SpacetimeList>::type;
-  using Base::Base;
+// A frame's scene in whichever registered spacetime: one SceneIn<S>, held
+// so that what builds, keeps, passes on or reads a scene in a spacetime it
+// names (get<S>) does not include the list of spacetimes, and is not
+// rebuilt for a new one (docs/architecture.md, "What a new kind
+// rebuilds").  What does something in every spacetime visits it
+// (visit_scene, render/scene_visit.hpp), which includes the list.  A value:
+// a copy is a copy of the SceneIn.
+class Scene {
+ public:
+  template <class S>
+  Scene(SceneIn<S> sc) : held_(new SceneIn<S>(std::move(sc))), kind_(&kind_of<S>) {}
+  Scene(const Scene& other) : held_(other.kind_->copy(other.held_)), kind_(other.kind_) {}
+  Scene(Scene&& other) noexcept : held_(std::exchange(other.held_, nullptr)), kind_(other.kind_) {}
+  Scene& operator=(Scene other) noexcept {
+    std::swap(held_, other.held_);
+    std::swap(kind_, other.kind_);
+    return *this;
+  }
+  ~Scene() {
+    if (held_) kind_->destroy(held_);
+  }
+
+  // The scene in spacetime S, if it is in S.
+  template <class S>
+  const SceneIn<S>* get_if() const {
+    return kind_ == &kind_of<S> ? static_cast<const SceneIn<S>*>(held_) : nullptr;
+  }
+  template <class S>
+  SceneIn<S>* get_if() {
+    return kind_ == &kind_of<S> ? static_cast<SceneIn<S>*>(held_) : nullptr;
+  }
+  // The same; throws std::bad_variant_access if it is in another.
+  template <class S>
+  const SceneIn<S>& get() const {
+    if (const SceneIn<S>* p = get_if<S>()) return *p;
+    throw std::bad_variant_access();
+  }
+  template <class S>
+  SceneIn<S>& get() {
+    if (SceneIn<S>* p = get_if<S>()) return *p;
+    throw std::bad_variant_access();
+  }
+  // Whether both are in the same spacetime (kind, not parameters).
+  bool same_spacetime_kind(const Scene& other) const { return kind_ == other.kind_; }
+
+ private:
+  // How a held SceneIn<S> is copied and destroyed; its address names S.
+  struct Kind {
+    void* (*copy)(const void*);
+    void (*destroy)(void*);
+  };
+  template <class S>
+  static constexpr Kind kind_of = {
+      [](const void* p) -> void* { return new SceneIn<S>(*static_cast<const SceneIn<S>*>(p)); },
+      [](void* p) { delete static_cast<SceneIn<S>*>(p); }};
+  void* held_;  // a SceneIn<S>, S as kind_ says; null only when moved from
+  const Kind* kind_;
 };
 
+// scene.get<S>(), also of a temporary scene (by value then).
+template <class S>
+const SceneIn<S>& scene_get(const Scene& scene) {
+  return scene.get<S>();
+}
+template <class S>
+SceneIn<S>& scene_get(Scene& scene) {
+  return scene.get<S>();
+}
+template <class S>
+SceneIn<S> scene_get(Scene&& scene) {
+  return std::move(scene.get<S>());
+}
 
 }  // namespace lc

@@ -9,12 +9,31 @@
 #include "assets/asset_path.hpp"
 #include "core/constants.hpp"
 #include "objects/objects.hpp"
+#include "observers/observers.hpp"
 #include "render/ray_start.hpp"
+#include "render/scene_visit.hpp"
 #include "scene/still_key.hpp"
 #include "spacetime/chart.hpp"
 #include "spacetime/spacetime.hpp"
 
 namespace lc {
+
+// The kinds of each registry that are built in a spacetime, checked against
+// every registered spacetime here, where they are built (and not in their
+// registries' headers, so that those need not include the list of
+// spacetimes: docs/architecture.md, "What a new kind rebuilds").
+static_assert(every_kind<SpacetimeList>([]<class S>() {
+  every_kind<ObjectRegistry>([]<class O>() {
+    static_assert(ObjectKind<O, S>, "a registered object kind must satisfy ObjectKind in every registered spacetime");
+  });
+}));
+
+static_assert(every_kind<SpacetimeList>([]<class S>() {
+  every_kind<ObserverRegistry>([]<class O>() {
+    static_assert(ObserverModel<O, S>,
+                  "a registered observer kind must satisfy ObserverModel in every registered spacetime");
+  });
+}));
 
 namespace {
 
@@ -116,12 +135,12 @@ Scene build_scene(const FrameSpecs& specs, int width, int height, ShotResources&
       throw std::invalid_argument(
           fmt::format("at {:+g} of the frame (an instant of its shutter): {}", specs.times[k], e.what()));
     }
-    if (at->index() != scene.index())  // (Shot::frame_specs refuses a change of spacetime first)
+    if (!at->same_spacetime_kind(scene))  // (Shot::frame_specs refuses a change of spacetime first)
       throw std::invalid_argument(fmt::format("at {:+g} of the frame: the spacetime changes kind within the shutter",
                                               specs.times[k]));
-    std::visit(
+    visit_scene(
         [&](auto& sc) {
-          auto& instant = std::get<std::decay_t<decltype(sc)>>(*at);
+          auto& instant = at->get<std::decay_t<decltype(sc.spacetime)>>();
           instant.moment = specs.times[k];
           sc.instants.push_back(std::move(instant));
         },

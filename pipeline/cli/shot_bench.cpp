@@ -9,6 +9,7 @@
 #include "core/cpu_time.hpp"
 #include "core/parallel_for.hpp"
 #include "render/scene_builder.hpp"
+#include "render/scene_visit.hpp"
 #include "render/trace.hpp"
 #include "script/shot.hpp"
 
@@ -29,7 +30,7 @@ std::vector<RaySample> trace_all(const Scene& scene, int width, int height, int 
   double cpu = 0.0;
   const double cpu0 = thread_cpu_seconds();
   parallel_for(rows, {.threads = threads, .helpers_cpu = &cpu}, [&](std::size_t j, std::size_t worker) {
-    std::visit(
+    visit_scene(
         [&](const auto& sc) {
           // A row at a time, as the renderer traces (several rays at once
           // where the spacetime allows).

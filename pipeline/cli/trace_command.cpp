@@ -9,12 +9,13 @@
 
 #include "command_output.hpp"
 #include "core/json.hpp"
-#include "job/frame_range.hpp"
-#include "render/hit_kind_names.hpp"
 #include "geodesic_csv.hpp"
-#include "render/scene_builder.hpp"
+#include "job/frame_range.hpp"
 #include "job/image_size.hpp"
+#include "render/hit_kind_names.hpp"
 #include "render/layers.hpp"
+#include "render/scene_builder.hpp"
+#include "render/scene_visit.hpp"
 #include "render/trace_templates.hpp"
 #include "script/shot.hpp"
 
@@ -77,7 +78,7 @@ int run_trace(const TraceCommand& cmd) {
   GeodesicPath path;
   Spacetime st_out = Minkowski{};
   std::string_view end;  // the end a sky ray escaped to
-  const RaySample s = std::visit(
+  const RaySample s = visit_scene(
       [&](const auto& sc) {
         st_out = sc.spacetime;
         auto record = [&](const RayState& y, double mu) {

@@ -128,7 +128,7 @@ TEST(Fisheye, TheShadowsEdgeLandsWhereTheProjectionPutsItsAngle) {
   fs.camera = fisheye(180, 0, 0, 0, 0);
   ShotResources res;
   const RenderSettings rs{256, 256, 1, true, false};
-  const auto sc = std::get<SceneIn<Kerr>>(build_scene(fs, rs.width, rs.height, res));
+  const auto sc = scene_get<Kerr>(build_scene(fs, rs.width, rs.height, res));
   FrameImage img = make_frame(rs);
   std::vector<int> rows;
   for (int j = 0; j < rs.height; ++j) rows.push_back(j);

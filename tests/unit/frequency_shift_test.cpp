@@ -15,7 +15,9 @@
 #include "light/novikov_thorne.hpp"
 #include "objects/disk.hpp"
 #include "objects/sphere.hpp"
+#include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
+#include "render/scene_visit.hpp"
 #include "render/trace.hpp"
 #include "render/trace_templates.hpp"
 #include "spacetime/dihole.hpp"
@@ -105,7 +107,7 @@ int check_disk_against_cunningham(double a, double theta_deg, KerrChart chart) {
   int checked = 0;
   for (int j = 0; j < W; ++j)
     for (int i = 0; i < W; ++i) {
-      const RaySample s = std::visit(
+      const RaySample s = visit_scene(
           [&](const auto& sc) {
             // A path recorder, even one that keeps nothing, has the Kerr
             // fast path fill hit.end, which this check reads.
@@ -152,8 +154,7 @@ TEST(FrequencyShift, TheSkyIsBlueshiftedByTheStaticObserversLapse) {
     int sky = 0;
     for (int j = 0; j < 4; ++j)
       for (int i = 0; i < 4; ++i) {
-        const RaySample s = std::visit(
-            [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5)); }, scene);
+        const RaySample s = trace_image_point(scene, i + 0.5, j + 0.5);
         if (s.hit.kind == HitKind::horizon) {
           EXPECT_EQ(s.hit.g, 0.0);
         }
@@ -169,7 +170,7 @@ TEST(FrequencyShift, TheSkyIsBlueshiftedByTheStaticObserversLapse) {
   ShotResources res;
   const Scene scene = build_scene(di, 1, 1, res);
   const RaySample s =
-      std::visit([&](const auto& sc) { return trace_sample(sc, sc.camera.direction(0.5, 0.5)); }, scene);
+      trace_image_point(scene, 0.5, 0.5);
   ASSERT_EQ(s.hit.kind, HitKind::sky);
   EXPECT_NEAR(s.hit.g, Dihole(0.4, 0.4, 1.0).potential({0, 6, 2, 1}), 1e-12);
 }
@@ -178,7 +179,7 @@ TEST(FrequencyShift, TheSkyIsBlueshiftedByTheStaticObserversLapse) {
 RaySample centre_sample(const SceneSpec& fs) {
   ShotResources res;
   const Scene scene = build_scene(fs, 2, 2, res);
-  return std::visit([&](const auto& sc) { return trace_sample(sc, sc.camera.direction(1.0, 1.0)); }, scene);
+  return trace_image_point(scene, 1.0, 1.0);
 }
 
 TEST(FrequencyShift, SpheresAndObserversInFlatSpaceGiveTheDopplerFactor) {
@@ -257,9 +258,7 @@ std::vector<Color> glowing_disk(double a, KerrChart chart) {
   std::vector<Color> out;
   for (int j = 0; j < 16; ++j)
     for (int i = 0; i < 24; ++i)
-      out.push_back(std::visit(
-          [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5)).color; },
-          scene));
+      out.push_back(trace_image_point(scene, i + 0.5, j + 0.5).color);
   return out;
 }
 
@@ -305,8 +304,7 @@ TEST(GlowingDisk, InPhysicalUnitsItsLightIsInCandelasPerSquareMetre) {
   int disk = 0;
   for (int j = 0; j < 12; ++j)
     for (int i = 0; i < 12; ++i) {
-      const RaySample s = std::visit(
-          [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5)); }, scene);
+      const RaySample s = trace_image_point(scene, i + 0.5, j + 0.5);
       if (s.hit.kind != Disk::hit_kind) continue;
       const double expected = 683 * blackbody_xyz(flux.temperature(s.hit.r, 4.3e6, 1e-8)).Y;
       EXPECT_NEAR(luminance(s.color), expected, 1e-3 * expected) << i << "," << j;

@@ -16,6 +16,7 @@
 #include "light/light.hpp"
 #include "objects/disk.hpp"
 #include "objects/sphere.hpp"
+#include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
 #include "render/trace.hpp"
 #include "spacetime/kerr.hpp"
@@ -80,8 +81,7 @@ std::vector<RaySample> samples(const SceneSpec& fs, int W, KerrChart chart = Ker
   std::vector<RaySample> out;
   for (int j = 0; j < W; ++j)
     for (int i = 0; i < W; ++i)
-      out.push_back(std::visit(
-          [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5)); }, scene));
+      out.push_back(trace_image_point(scene, i + 0.5, j + 0.5));
   return out;
 }
 

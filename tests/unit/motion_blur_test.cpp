@@ -63,7 +63,7 @@ return {{name = 's', frames = 3, width = 256, height = 32, supersample = 4, shut
   const int W = 256, H = 32;
   RenderSettings rs{W, H, 4, false, true};
   const Scene blurred = build_frame(shot, 1, W, H, res);
-  ASSERT_EQ(std::get<SceneIn<Minkowski>>(blurred).instants.size(), 16u);
+  ASSERT_EQ(scene_get<Minkowski>(blurred).instants.size(), 16u);
   const FrameImage img = render_frame(blurred, rs, 2);
   // The pinhole's image coordinates of the limbs at time t (frames from
   // the frame's moment), the sphere at angle atan(x / D) from the axis.
@@ -184,7 +184,7 @@ return {{name = 's', frames = 3, width = 256, height = 64, shutter = 1, time_sam
   // The star where the frame's centre ray escapes (flat space: its own
   // direction, in the sky's frame).
   const Scene blurred_scene = build_frame(shot, 1, W, H, res);
-  const auto& sc = std::get<SceneIn<Minkowski>>(blurred_scene);
+  const auto& sc = scene_get<Minkowski>(blurred_scene);
   EXPECT_EQ(sc.instants.size(), static_cast<std::size_t>(time_samples));
   const RaySample centre = trace_sample(sc, unit3(sc.camera.direction(0.5 * W + 0.3, 0.5 * H + 0.2)));
   EXPECT_EQ(centre.hit.kind, HitKind::sky);
@@ -195,7 +195,7 @@ return {{name = 's', frames = 3, width = 256, height = 64, shutter = 1, time_sam
   const PointStars star{field};
   PannedStar out;
   Scene sharp_scene = blurred_scene;
-  std::get<SceneIn<Minkowski>>(sharp_scene).instants.clear();
+  scene_get<Minkowski>(sharp_scene).instants.clear();
   out.sharp = render_frame(sharp_scene, rs, 2);
   for (float& c : out.sharp.rgb) c = 0.0f;
   out.sharp_images = draw_point_stars(star, sc.camera, out.sharp.sky, out.sharp);
@@ -299,7 +299,7 @@ return {name = 's', frames = 100, width = 16, height = 16, shutter = 0.5, time_s
   const FrameSpecs specs = shot.frame_specs(50);
   ASSERT_TRUE(specs.blurred());
   const Scene scene = build_scene(specs, 16, 16, res);
-  const auto& sc = std::get<SceneIn<Kerr>>(scene);
+  const auto& sc = scene_get<Kerr>(scene);
   const auto& w = std::get<FreeFall::Params>(specs.frame.observer).worldline;
   const auto worldline = res.worldline(w);
   ASSERT_EQ(sc.instants.size(), 4u);

@@ -43,7 +43,7 @@ SceneIn<Kerr> kerr_scene(const ObserverSpec& observer, ShotResources& res, bool 
   fs.spacetime = Kerr(1.0, 0.9);
   fs.observer = observer;
   if (split) fs.light = splitting_light();
-  return std::get<SceneIn<Kerr>>(build_scene(fs, 8, 8, res));
+  return scene_get<Kerr>(build_scene(fs, 8, 8, res));
 }
 
 // The trace chart the builder puts Kerr in.

@@ -24,6 +24,7 @@
 #include "objects/sphere.hpp"
 #include "render/pixel_rows.hpp"
 #include "render/scene_builder.hpp"
+#include "render/scene_visit.hpp"
 #include "spacetime/dihole.hpp"
 #include "spacetime/kerr.hpp"
 #include "test_scenes.hpp"
@@ -87,7 +88,7 @@ TEST(PixelRows, RecordsShadeToTheSamePixels) {
     ShotResources res;
     const RenderSettings rs{32, 18, 2, true, true};
     const Scene scene = build_scene(fs, rs.width, rs.height, res);
-    std::visit(
+    visit_scene(
         [&](const auto& sc) {
           KeptRecords kept;
           RenderStats traced;
@@ -147,7 +148,7 @@ TEST(PixelRows, PointsWithoutARayAreBlackTransparentAndNeverTraced) {
   fs.objects.push_back(Disk::Params{6, 15, 9, 24});
   ShotResources res;
   const RenderSettings rs{16, 8, 2, true, true};
-  const auto sc = std::get<SceneIn<Kerr>>(build_scene(fs, rs.width, rs.height, res));
+  const auto sc = scene_get<Kerr>(build_scene(fs, rs.width, rs.height, res));
   const HalfCamera half{PinholeCamera(fs.camera.get<PinholeCamera::Params>(), rs.width, rs.height), rs.width};
   RenderStats whole_stats, half_stats;
   const FrameImage whole = render_with(sc, sc.camera, rs, &whole_stats);
@@ -205,7 +206,7 @@ TEST(PixelRows, AMovedEyeSeesTheImageShiftAsFlatSpaceSays) {
   fs.objects.push_back(sp);
   ShotResources res;
   const RenderSettings rs{400, 1, 1, true, false};
-  const auto sc = std::get<SceneIn<Dihole>>(build_scene(fs, rs.width, rs.height, res));
+  const auto sc = scene_get<Dihole>(build_scene(fs, rs.width, rs.height, res));
   const double t = std::tan(6 * degree);
   auto column_of = [&](double angle) { return rs.width / 2.0 * (1 + std::tan(angle) / t); };
   for (const double d : {0.0, 2.0, -3.0}) {

@@ -40,7 +40,7 @@ TEST(PointStarStage, AStarsLightHoldsStillThroughASlowPan) {
   {
     fs.camera.get<PinholeParams>().fov = fov;
     const Scene scene = build_scene(fs, W, H, res);
-    const auto& sc = std::get<SceneIn<Minkowski>>(scene);
+    const auto& sc = scene_get<Minkowski>(scene);
     std::vector<Vec3> dirs;
     for (const auto& p : at) dirs.push_back(sc.camera.direction(p[0], p[1]));
     std::vector<RaySample> out(dirs.size());

@@ -17,6 +17,7 @@
 #include "render/accuracy.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
+#include "render/scene_visit.hpp"
 #include "render/trace.hpp"
 #include "spacetime/dihole.hpp"
 #include "spacetime/kerr.hpp"
@@ -36,7 +37,7 @@ SceneSpec kerr_scene(double M, double a, double r, double theta_deg, double fov,
 }
 
 RaySample sample_at(const Scene& scene, double px, double py) {
-  return std::visit([&](const auto& sc) { return trace_sample(sc, sc.camera.direction(px, py)); }, scene);
+  return trace_image_point(scene, px, py);
 }
 
 // Every pixel-centre sample of a W x H image of `fs`, traced with `chart`
@@ -327,7 +328,7 @@ TEST(Renderer, LanesGiveWhatOneRayGives) {
     const int W = 24, H = 12;
     ShotResources res;
     const Scene scene = build_scene(fs, W, H, res);
-    std::visit(
+    visit_scene(
         [&](const auto& sc) {
           std::vector<Vec3> dirs;
           for (int j = 0; j < H; ++j)
@@ -420,7 +421,7 @@ TEST(Renderer, SphereSimultaneityIsSolvedNearAMovingSphere) {
   // doubled the error at each iteration instead.)
   ShotResources res;
   const Scene scene = falling_sphere_scene(Dihole(0.4, 0.4, 1.0), {0, 0, 0}, 1.0, res);
-  const auto& sc = std::get<SceneIn<Dihole>>(scene);
+  const auto& sc = scene_get<Dihole>(scene);
   const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects->lists).front();
   double worst = 0.0;
   for (double t = 30.0; t < 150.0; t += 0.37) {
@@ -474,7 +475,7 @@ TEST(Renderer, SphereTubeHoldsTheSphere) {
   {
     ShotResources res;
     const Scene scene = falling_sphere_scene(Dihole(0.4, 0.4, 1.0), {0, 0, 0}, 1.0, res);
-    const auto& sc = std::get<SceneIn<Dihole>>(scene);
+    const auto& sc = scene_get<Dihole>(scene);
     const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects->lists).front();
     const double seen = farthest_surface_point(sc.spacetime, sphere, -3.0, 230.0);
     EXPECT_LE(seen, sphere.tube_radius());
@@ -484,7 +485,7 @@ TEST(Renderer, SphereTubeHoldsTheSphere) {
   {
     ShotResources res;
     const Scene scene = falling_sphere_scene(Minkowski{}, {-0.6, 0, 0}, 2.0, res);
-    const auto& sc = std::get<SceneIn<Minkowski>>(scene);
+    const auto& sc = scene_get<Minkowski>(scene);
     const Sphere& sphere = std::get<std::vector<Sphere>>(sc.objects->lists).front();
     // Once moving, the contracted sphere reaches R across its motion (to
     // 1e-5: the directions pass within ~0.005 rad of that circle) ...
@@ -529,7 +530,7 @@ TEST(Renderer, MovingSphereKeepsACircularOutline) {
   // measurement of a sphere at rest at the same apparent place instead.
   SceneSpec still = fs;
   // Apparent position: straight back along the centre ray of the moving image.
-  const Vec3 n = std::get<SceneIn<Minkowski>>(scene).camera.direction(cx0, H / 2.0);
+  const Vec3 n = scene_get<Minkowski>(scene).camera.direction(cx0, H / 2.0);
   const Tetrad rest = static_polar_tetrad(Minkowski{}, std::get<StaticObserver::Params>(fs.observer).position);
   double dir[3] = {0, 0, 0};
   for (int k = 0; k < 3; ++k)
@@ -566,7 +567,7 @@ TEST(Renderer, MovingObserverSeesAberration) {
   ShotResources res;
   const int W = 64;
   const Scene scene = build_scene(fs, W, 1, res);
-  const auto& sc = std::get<SceneIn<Minkowski>>(scene);
+  const auto& sc = scene_get<Minkowski>(scene);
   for (double px : {40.5, 50.5, 60.5}) {
     const Vec3 n = sc.camera.direction(px, 0.5);
     const double cos_seen = n[0] * -1.0;  // angle from forward (-leg 1) in the moving frame

@@ -151,7 +151,7 @@ TEST(SampleMemo, ARayClearOfTheSwingingSphereStaysClearForItsWindow) {
   double time[2];
   for (int k = 0; k < 2; ++k) {
     const Scene scene = build_scene(shot.frame(514 + k), 640, 360, res);
-    const auto& sc = std::get<SceneIn<Dihole>>(scene);
+    const auto& sc = scene_get<Dihole>(scene);
     const RayStart start{&sc.eye, unit3(sc.camera.direction(187.75, 196.75))};
     seen[k].reuse_window = std::numeric_limits<float>::infinity();  // work it out
     trace_records(sc, std::span<const RayStart>(&start, 1), std::span<HitRecord>(&seen[k], 1));

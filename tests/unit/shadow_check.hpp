@@ -48,7 +48,7 @@ ShadowCheck check_shadow(const CameraParams& camera, int width, int height) {
   fs.camera = camera;
   ShotResources res;
   const RenderSettings rs{width, height, 1, true, false};
-  const auto sc = std::get<SceneIn<Kerr>>(build_scene(fs, width, height, res));
+  const auto sc = scene_get<Kerr>(build_scene(fs, width, height, res));
   const double edge = schwarzschild_shadow_angle_at_30();
   const Vec3 hole = {-1, 0, 0};
   auto angle = [&](double px, double py) {

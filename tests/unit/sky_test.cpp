@@ -43,9 +43,7 @@ std::vector<Color> sky_frame(const SkySpec& sky, int W = 24, int H = 12) {
   std::vector<Color> out;
   for (int j = 0; j < H; ++j)
     for (int i = 0; i < W; ++i)
-      out.push_back(std::visit(
-          [&](const auto& sc) { return trace_sample(sc, sc.camera.direction(i + 0.5, j + 0.5)).color; },
-          scene));
+      out.push_back(trace_image_point(scene, i + 0.5, j + 0.5).color);
   return out;
 }
 

@@ -35,7 +35,7 @@ TEST(StarLensing, ASchwarzschildHolesTwoImagesFollowThePointLens) {
   ShotResources res;
   RayOptions rays;
   const Scene scene = build_scene(fs, N, N, res, rays);
-  const auto& sc = std::get<SceneIn<Kerr>>(scene);
+  const auto& sc = scene_get<Kerr>(scene);
   std::vector<Vec3> dirs;
   for (int j = 0; j < N; ++j)
     for (int i = 0; i < N; ++i) dirs.push_back(sc.camera.direction(i + 0.5, j + 0.5));

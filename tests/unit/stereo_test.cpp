@@ -140,7 +140,7 @@ TEST(Stereo, OdsDisparityInFlatSpaceIsTheFormulas) {
   ShotResources res;
   const int W = 1440;  // 4 pixels a degree; eye pictures 1440 x 720
   const RenderSettings rs{W, W, 1, true, false};
-  const auto sc = std::get<SceneIn<Dihole>>(build_scene(fs, W, W, res));
+  const auto sc = scene_get<Dihole>(build_scene(fs, W, W, res));
   FrameImage img = make_frame(rs);
   const std::vector<int> rows = {360, 1080};  // each eye's row just below its equator (-0.125 degrees)
   const RenderStats stats = render_rows_with(sc, sc.camera, rs, std::span<const int>(rows), img, nullptr,
@@ -190,7 +190,7 @@ TEST(Stereo, PointStarsAreDrawnInEachEyesPictureOnce) {
   // at infinity along the same direction).
   std::vector<PointStar> stars;
   {
-    const auto& sc = std::get<SceneIn<Minkowski>>(scene);
+    const auto& sc = scene_get<Minkowski>(scene);
     const Vec3 dir = camera.direction(20.3, 35.9);
     RaySample s;
     trace_batch(sc, std::span<const Vec3>(&dir, 1), std::span<RaySample>(&s, 1));

@@ -74,7 +74,7 @@ TEST(WeakFieldTail, RaysEscapeWhereTheRestIsKnown) {
     RayOptions o;
     o.escape = rule;
     const Scene sc = build_scene(fs, 4, 4, res, o);
-    return std::get<SceneIn<Dihole>>(sc).rays.escape_radius;
+    return scene_get<Dihole>(sc).rays.escape_radius;
   };
   EXPECT_NEAR(escape_radius(0.4, 0.4, EscapeRule::far_field), std::cbrt(0.8e6), 1e-9);
   EXPECT_NEAR(escape_radius(0.6, 0.2, EscapeRule::far_field), std::sqrt(0.4e6), 1e-9);
