@@ -23,6 +23,7 @@
 #include "light/light.hpp"
 #include "light/novikov_thorne.hpp"
 #include "objects/disk_params.hpp"
+#include "objects/disk_physics.hpp"
 #include "objects/step_query.hpp"
 #include "objects/surface_point.hpp"
 #include "spacetime/chart.hpp"
@@ -45,7 +46,7 @@ class Disk {
   // disk.
   template <class S>
   Disk(const Params& p, const S& st, ShotResources& res, const Vec4&) : p_(p) {
-    if (p.glows()) glow(st.thin_disk_flux(), res);
+    if (p.glows()) glow(DiskPhysics<S>::flux(st), res);
   }
   // A checkered disk.
   explicit Disk(const Params& p) : p_(p) {}
@@ -96,11 +97,10 @@ class Disk {
   }
   Color color_at(const SurfacePoint& at, const SeenShift& shift) const { return color(at.u, at.v, shift); }
 
-  // Its matter's 4-velocity at the trace event y: the spacetime's thin-disk
-  // motion (SpacetimeModel::disk_velocity).
+  // Its matter's 4-velocity at the trace event y (objects/disk_physics.hpp).
   template <class S>
   Vec4 emitter_velocity(const S& st, const RayState& y) const {
-    return st.disk_velocity({y[0], y[1], y[2], y[3]});
+    return DiskPhysics<S>::velocity(st, {y[0], y[1], y[2], y[3]});
   }
 
  private:

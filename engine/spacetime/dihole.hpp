@@ -16,12 +16,11 @@
 
 namespace lc {
 
-// No thin-disk theory is worked out for two holes (NoDiskTheory).
+// No thin-disk flux is worked out for two holes (objects/disk_physics.hpp).
 class Dihole : public CartesianScene,
                public HamiltonianFromRhs<Dihole>,
                public CartesianInfinity,
-               public ObserversOutsideHorizons<Dihole>,
-               public NoDiskTheory {
+               public ObserversOutsideHorizons<Dihole> {
  public:
   static constexpr std::string_view name = "dihole";
   static constexpr SceneChart chart = SceneChart::cartesian;

@@ -26,6 +26,7 @@
 #include "core/fields.hpp"
 #include "core/lanes.hpp"
 #include "core/tensor.hpp"
+#include "light/novikov_thorne.hpp"
 #include "spacetime/model.hpp"
 
 namespace lc {

@@ -12,8 +12,7 @@ namespace lc {
 class Minkowski : public CartesianScene,
                   public HamiltonianFromRhs<Minkowski>,
                   public CartesianInfinity,
-                  public NoHorizon,
-                  public NoDiskTheory {
+                  public NoHorizon {
  public:
   static constexpr std::string_view name = "minkowski";
   static constexpr SceneChart chart = SceneChart::cartesian;
@@ -37,9 +36,6 @@ class Minkowski : public CartesianScene,
     dy = {-y[4], y[5], y[6], y[7], T{}, T{}, T{}, T{}};
   }
   double asymptotic_mass() const { return 0.0; }
-  // Thin-disk matter: nothing pulls it into orbit, so it is at rest (and
-  // nothing heats it: NoDiskTheory).
-  Vec4 disk_velocity(const Vec4&) const { return {1.0, 0.0, 0.0, 0.0}; }
   Mat4 metric(const Vec4&) const { return {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
   Vec4 diagonal_metric(const Vec4&) const { return {-1, 1, 1, 1}; }
   Mat4 inverse_metric(const Vec4& x) const { return metric(x); }

@@ -41,11 +41,6 @@
 //   escape_direction(x, d)    the direction at infinity of a ray leaving x
 //                             along unit spatial direction d (the bending
 //                             still to come)
-//   disk_velocity(x)          u^mu of thin-disk matter at the trace event x in
-//                             the equatorial plane (for hit.g, docs/light.md)
-//   thin_disk_flux()          the Novikov–Thorne flux of its thin disk, where it
-//                             has one (a glowing disk needs it), else nullopt
-//                             (NoDiskTheory below)
 //   trace_from_scene, scene_from_trace, scene_vector, scene_time_gradient,
 //   polar_basis               scene <-> trace coordinates
 //   for_tracing(direction)    itself in the chart regular where curves traced
@@ -55,13 +50,21 @@
 //   examples()                parameter sets with the radii between which
 //                             the generic self-test may sample events
 //
+// The requirements come in three parts, each a concept of its own so that
+// the compiler's note names the part a class misses: what it is
+// (SpacetimeMetric: the metric and Hamilton's equations), where rays end
+// (SpacetimeEnds: its far ends, horizons and capture, the far field) and
+// its charts (SpacetimeCharts: scene <-> trace coordinates).  A thin disk's
+// physics is no part of it: a trait beside the disk
+// (objects/disk_physics.hpp), so a spacetime without a disk theory writes
+// no disk code.
+//
 // What most spacetimes would write alike comes from bases they name
 // (below), each a choice the class states rather than a default it falls
 // into: HamiltonianFromRhs<S> (hamiltonian_rhs from rhs<double>),
 // CartesianInfinity (spacetime/ends.hpp: one infinity, by the trace chart's
 // Cartesian radius), NoHorizon (rays are never captured, observers stand
-// anywhere), ObserversOutsideHorizons<S> and NoDiskTheory (no
-// Novikov–Thorne flux).
+// anywhere) and ObserversOutsideHorizons<S>.
 
 #include <array>
 #include <concepts>
@@ -72,7 +75,6 @@
 #include "core/fields.hpp"
 #include "core/lanes.hpp"
 #include "core/tensor.hpp"
-#include "light/novikov_thorne.hpp"
 #include "spacetime/chart.hpp"
 #include "spacetime/ends.hpp"
 
@@ -86,43 +88,59 @@ struct SpacetimeExample {
   double r_min, r_max;
 };
 
+// What it is: its name, scene chart, whether it is stationary, its
+// parameters, the metric and Hamilton's equations in the trace chart, the
+// mass seen from far away, and the examples the self-test samples.
 template <class S>
-concept SpacetimeModel =
-    requires(const S& s, const typename S::Params& params, const Vec4& x, const Vec3& d, const std::array<double, 8>& y,
-             std::array<double, 8>& dy, const std::array<LaneVec, 8>& yl, std::array<LaneVec, 8>& dyl, Vec4& out,
-             const StateComponents& c, const FlightRadii& radii) {
-      requires std::same_as<std::remove_cv_t<decltype(S::name)>, std::string_view>;
-      requires std::same_as<std::remove_cv_t<decltype(S::chart)>, SceneChart>;
-      requires std::same_as<std::remove_cv_t<decltype(S::stationary)>, bool>;
-      requires HasFields<typename S::Params>;
-      requires ends_are_well_formed<S>();
-      S(params);
-      { s.params() } -> std::same_as<typename S::Params>;
-      s.rhs(y, dy);
-      s.rhs(yl, dyl);
-      s.hamiltonian_rhs(x, x, out, out);
-      { s.metric(x) } -> std::same_as<Mat4>;
-      { s.inverse_metric(x) } -> std::same_as<Mat4>;
-      { s.metric_derivatives(x) } -> std::same_as<Mat4Derivs>;
-      { s.captured(x) } -> std::same_as<bool>;
-      { s.capture_margin(x) } -> std::same_as<double>;
-      { s.inside_horizon(x) } -> std::same_as<bool>;
-      { s.flight(c, c, radii) } -> std::same_as<Flight>;
-      { s.why_no_observer(x) } -> std::same_as<std::string_view>;
-      { s.asymptotic_mass() } -> std::same_as<double>;
-      { s.photon_reach() } -> std::same_as<double>;
-      { s.far_field_radius() } -> std::same_as<double>;
-      { s.escape_direction(x, d) } -> std::same_as<Vec3>;
-      { s.disk_velocity(x) } -> std::same_as<Vec4>;
-      { s.thin_disk_flux() } -> std::same_as<std::optional<NovikovThorneFlux>>;
-      { s.trace_from_scene(x) } -> std::same_as<Vec4>;
-      { s.scene_from_trace(x) } -> std::same_as<Vec4>;
-      { s.scene_vector(x, x) } -> std::same_as<Vec4>;
-      { s.scene_time_gradient(x) } -> std::same_as<Vec4>;
-      { s.polar_basis(x) } -> std::same_as<std::array<Vec4, 4>>;
-      { s.for_tracing(TimeDirection::past) } -> std::same_as<S>;
-      { S::examples() } -> std::same_as<std::vector<SpacetimeExample<S>>>;
-    };
+concept SpacetimeMetric = requires(const S& s, const typename S::Params& params, const Vec4& x,
+                                   const std::array<double, 8>& y, std::array<double, 8>& dy,
+                                   const std::array<LaneVec, 8>& yl, std::array<LaneVec, 8>& dyl, Vec4& out) {
+  requires std::same_as<std::remove_cv_t<decltype(S::name)>, std::string_view>;
+  requires std::same_as<std::remove_cv_t<decltype(S::chart)>, SceneChart>;
+  requires std::same_as<std::remove_cv_t<decltype(S::stationary)>, bool>;
+  requires HasFields<typename S::Params>;
+  S(params);
+  { s.params() } -> std::same_as<typename S::Params>;
+  s.rhs(y, dy);
+  s.rhs(yl, dyl);
+  s.hamiltonian_rhs(x, x, out, out);
+  { s.metric(x) } -> std::same_as<Mat4>;
+  { s.inverse_metric(x) } -> std::same_as<Mat4>;
+  { s.metric_derivatives(x) } -> std::same_as<Mat4Derivs>;
+  { s.asymptotic_mass() } -> std::same_as<double>;
+  { S::examples() } -> std::same_as<std::vector<SpacetimeExample<S>>>;
+};
+
+// Where rays end: its ends, which one a ray moving on has reached, capture
+// by its horizons, where observers may stand, and its far field.
+template <class S>
+concept SpacetimeEnds = requires(const S& s, const Vec4& x, const Vec3& d, const StateComponents& c,
+                                 const FlightRadii& radii) {
+  requires ends_are_well_formed<S>();
+  { s.captured(x) } -> std::same_as<bool>;
+  { s.capture_margin(x) } -> std::same_as<double>;
+  { s.inside_horizon(x) } -> std::same_as<bool>;
+  { s.flight(c, c, radii) } -> std::same_as<Flight>;
+  { s.why_no_observer(x) } -> std::same_as<std::string_view>;
+  { s.photon_reach() } -> std::same_as<double>;
+  { s.far_field_radius() } -> std::same_as<double>;
+  { s.escape_direction(x, d) } -> std::same_as<Vec3>;
+};
+
+// Its charts: scene <-> trace coordinates, and itself in the chart regular
+// where curves traced one way in time go.
+template <class S>
+concept SpacetimeCharts = requires(const S& s, const Vec4& x) {
+  { s.trace_from_scene(x) } -> std::same_as<Vec4>;
+  { s.scene_from_trace(x) } -> std::same_as<Vec4>;
+  { s.scene_vector(x, x) } -> std::same_as<Vec4>;
+  { s.scene_time_gradient(x) } -> std::same_as<Vec4>;
+  { s.polar_basis(x) } -> std::same_as<std::array<Vec4, 4>>;
+  { s.for_tracing(TimeDirection::past) } -> std::same_as<S>;
+};
+
+template <class S>
+concept SpacetimeModel = SpacetimeMetric<S> && SpacetimeEnds<S> && SpacetimeCharts<S>;
 
 // hamiltonian_rhs for the CRTP class S from its rhs<double>: the state
 // (x, p) packed as rhs takes it, the derivative unpacked.  Inline and
@@ -155,12 +173,6 @@ struct ObserversOutsideHorizons {
   std::string_view why_no_observer(const Vec4& x) const {
     return static_cast<const S&>(*this).inside_horizon(x) ? "inside a horizon" : std::string_view{};
   }
-};
-
-// A spacetime with no thin-disk theory worked out: a glowing disk is
-// refused there (objects/disk.hpp), a checkered one is drawn.
-struct NoDiskTheory {
-  std::optional<NovikovThorneFlux> thin_disk_flux() const { return std::nullopt; }
 };
 
 // The direction at infinity of a ray leaving the Kerr–Schild-like point x

@@ -29,7 +29,7 @@ namespace {
 // x -> b^2 x / rho^2 is an isometry that swaps them (Ellis 1973; Morris and
 // Thorne 1988, the "drainhole" of their example).  A ray's radial measure
 // for the far-end rule is l, the proper distance from the throat.
-class Wormhole : public CartesianScene, public HamiltonianFromRhs<Wormhole>, public NoHorizon, public NoDiskTheory {
+class Wormhole : public CartesianScene, public HamiltonianFromRhs<Wormhole>, public NoHorizon {
  public:
   static constexpr std::string_view name = "toy_wormhole";
   static constexpr SceneChart chart = SceneChart::cartesian;
@@ -82,7 +82,6 @@ class Wormhole : public CartesianScene, public HamiltonianFromRhs<Wormhole>, pub
     const T k = -p2 * iom2 / om * b2_ / (rho2 * rho2);
     dy = {-y[4], iom2 * y[5], iom2 * y[6], iom2 * y[7], T{}, k * y[1], k * y[2], k * y[3]};
   }
-  Vec4 disk_velocity(const Vec4&) const { return {1.0, 0.0, 0.0, 0.0}; }
   Mat4 metric(const Vec4& x) const {
     const double o2 = omega(x) * omega(x);
     return {{{-1, 0, 0, 0}, {0, o2, 0, 0}, {0, 0, o2, 0}, {0, 0, 0, o2}}};
