@@ -75,8 +75,8 @@ std::string constructor_tables() {
   std::string out = "### The shot table\n\n";
   out += table<ShotInfo>("", "The table a shot returns, besides its `frame` function");
   out += "### Spacetimes\n\n";
-  for_each_spacetime_type([&](auto tag) {
-    using S = typename decltype(tag)::type;
+  SpacetimeRegistry::for_each([&](auto* kind) {
+    using S = std::remove_pointer_t<decltype(kind)>;
     out += table<typename S::Params>(S::name);
   });
   auto kinds = [&](const char* heading, auto registry) {

@@ -200,7 +200,7 @@ void install_engine_api(lua::Sandbox& sandbox, EngineMemo* memo) {
     lua_setfield(L, groups, name.c_str());
   };
   // Every registered spacetime (spacetime/spacetime.hpp) by its name.
-  for_each_spacetime_type([&](auto tag) { add(decltype(tag)::type::name, validate_spacetime, NameGroup::spacetimes); });
+  SpacetimeRegistry::for_each([&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_spacetime, NameGroup::spacetimes); });
   SkyRegistry::for_each(
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_sky, NameGroup::skies); });
   ObserverRegistry::for_each(

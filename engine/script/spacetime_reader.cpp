@@ -10,20 +10,20 @@ namespace lc {
 // Every registered spacetime's constructor, by name: its declared
 // parameters read, then the class's own checks.
 Spacetime read_spacetime(lua::TableReader& t) {
-  const auto kind = t.optional_string("__kind");
-  if (!kind) {
+  const auto asked = t.optional_string("__kind");
+  if (!asked) {
     std::string examples;
-    for_each_spacetime_type([&](auto tag) {
-      examples += fmt::format("{}lc.{}{{...}}", examples.empty() ? "" : ", ", decltype(tag)::type::name);
+    SpacetimeRegistry::for_each([&](auto* kind) {
+      examples += fmt::format("{}lc.{}{{...}}", examples.empty() ? "" : ", ", std::remove_pointer_t<decltype(kind)>::name);
     });
     throw lua::FieldError(
         fmt::format("{}: not a spacetime; make one with a constructor: {}", t.context(), examples));
   }
   t.mark_known({"__where"});
   std::optional<Spacetime> out;
-  for_each_spacetime_type([&](auto tag) {
-    using S = typename decltype(tag)::type;
-    if (out || *kind != S::name) return;
+  SpacetimeRegistry::for_each([&](auto* kind) {
+    using S = std::remove_pointer_t<decltype(kind)>;
+    if (out || *asked != S::name) return;
     typename S::Params p;
     read_fields(t, p);
     t.finish();
@@ -37,7 +37,7 @@ Spacetime read_spacetime(lua::TableReader& t) {
       throw lua::FieldError(fmt::format("{}: {}", t.context(), msg));
     }
   });
-  if (!out) throw lua::FieldError(fmt::format("{}: a {} is not a spacetime", t.context(), *kind));
+  if (!out) throw lua::FieldError(fmt::format("{}: a {} is not a spacetime", t.context(), *asked));
   return *out;
 }
 

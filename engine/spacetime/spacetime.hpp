@@ -18,8 +18,10 @@
 
 namespace lc {
 
-// Every spacetime, one line each.
-using SpacetimeList = std::variant<Minkowski, Kerr, Dihole>;
+// Every spacetime, one line each: a registry of the same shape as the
+// others (core/registry.hpp), its kinds' variant the list.
+using SpacetimeRegistry = Registry<Minkowski, Kerr, Dihole>;
+using SpacetimeList = SpacetimeRegistry::Kinds;
 
 // The variant itself, as a class so that spacetime/spacetime_spec.hpp can
 // name it before the list.
@@ -30,18 +32,9 @@ struct SpacetimeKinds : SpacetimeList {
 
 // One assertion per spacetime: the compiler's notes name the one that fails
 // and the requirement it misses.
-static_assert(every_kind<SpacetimeList>([]<class S>() {
+static_assert(every_kind<SpacetimeRegistry>([]<class S>() {
   static_assert(SpacetimeModel<S>, "a registered spacetime must satisfy SpacetimeModel (spacetime/model.hpp)");
 }));
 
-// A type tag: for_each_spacetime_type calls f(TypeTag<S>{}) for each.
-template <class T>
-struct TypeTag {
-  using type = T;
-};
-template <class F>
-void for_each_spacetime_type(F&& f) {
-  [&]<class... S>(std::variant<S...>*) { (f(TypeTag<S>{}), ...); }(static_cast<SpacetimeList*>(nullptr));
-}
 
 }  // namespace lc

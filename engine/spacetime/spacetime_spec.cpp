@@ -47,8 +47,8 @@ std::string spacetime_json(const Spacetime& s) {
 
 std::string spacetimes_in_chart(SceneChart c) {
   std::string out;
-  for_each_spacetime_type([&](auto tag) {
-    using S = typename decltype(tag)::type;
+  SpacetimeRegistry::for_each([&](auto* kind) {
+    using S = std::remove_pointer_t<decltype(kind)>;
     if (S::chart == c) out += fmt::format("{}{}", out.empty() ? "" : ", ", S::name);
   });
   return out;

@@ -154,8 +154,8 @@ TEST(Ends, CartesianInfinityIsReachedBeyondTheEscapeRadiusMovingOut) {
 // Every registered spacetime names its ends: infinity first, then its
 // horizons, whose index the hit records of captured rays carry.
 TEST(Ends, RegisteredSpacetimesListInfinityFirst) {
-  for_each_spacetime_type([&](auto tag) {
-    using S = typename decltype(tag)::type;
+  SpacetimeRegistry::for_each([&](auto* kind) {
+    using S = std::remove_pointer_t<decltype(kind)>;
     EXPECT_EQ(S::ends[0].kind, EndKind::infinity) << S::name;
     EXPECT_EQ(S::ends[0].name, "infinity") << S::name;
   });

@@ -121,8 +121,8 @@ void expect_chart_maps_and_disk(const S& st, const std::vector<Vec4>& pts, doubl
 // multiply-adds differently).
 TEST(Spacetime, EveryRegisteredSpacetimePassesTheSelfTest) {
   int checked = 0;
-  for_each_spacetime_type([&](auto tag) {
-    using S = typename decltype(tag)::type;
+  SpacetimeRegistry::for_each([&](auto* kind) {
+    using S = std::remove_pointer_t<decltype(kind)>;
     const auto examples = S::examples();
     ASSERT_FALSE(examples.empty()) << S::name;
     for (const SpacetimeExample<S>& ex : examples) {
@@ -405,8 +405,8 @@ TEST(Spacetime, ANewSpacetimeNeedNotWriteTheAdapterNorTheNoHorizonDefaultsNorAny
 // The shared adapter is each registered spacetime's rhs<double>, to the bit.
 TEST(Spacetime, TheSharedHamiltonianAdapterIsEachSpacetimesRhs) {
   const Vec4 x = {0.5, 7.0, -3.0, 2.5}, p = {-1.0, 0.3, -0.6, 0.2};
-  for_each_spacetime_type([&](auto tag) {
-    using S = typename decltype(tag)::type;
+  SpacetimeRegistry::for_each([&](auto* kind) {
+    using S = std::remove_pointer_t<decltype(kind)>;
     for (const auto& ex : S::examples()) {
       std::array<double, 8> d;
       ex.spacetime.template rhs<double>({x[0], x[1], x[2], x[3], p[0], p[1], p[2], p[3]}, d);
