@@ -11,7 +11,7 @@
 //
 // Assumes a trace chart whose spatial coordinates are Cartesian-like
 // (x, y, z as components 1-3 of the state), as the general path's objects
-// do (render/hamiltonian_ray.hpp).
+// do (render/general_path_ray.hpp).
 
 #include <algorithm>
 #include <utility>

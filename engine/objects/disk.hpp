@@ -36,7 +36,7 @@ class Disk {
  public:
   static constexpr std::string_view name = DiskParams::name;
   static constexpr HitKind hit_kind = HitKind{1};  // hit.kind 1
-  // The BL–Mino path finds it at its own equatorial crossings (render/mino_ray.hpp).
+  // The BL–Mino path finds it at its own equatorial crossings (render/kerr_fast_path_ray.hpp).
   static constexpr bool in_fast_path = true;
 
   using Params = DiskParams;

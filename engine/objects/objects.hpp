@@ -26,7 +26,7 @@ namespace lc {
 
 // What an object kind is, in the spacetime S (its trace chart): a name (its
 // Lua constructor lc.<name>{...}), the hit.kind its hits are, whether the
-// Boyer–Lindquist–Mino fast path handles it (render/mino_ray.hpp does, by
+// Boyer–Lindquist–Mino fast path handles it (render/kerr_fast_path_ray.hpp does, by
 // kind; else a scene with one takes the general path), Params with declared
 // fields, a constructor from them (with the shot's resources and the
 // frame's observer event), how far from the origin it reaches (for the

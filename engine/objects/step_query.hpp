@@ -1,6 +1,6 @@
 #pragma once
 // What the objects' tests share within one accepted step of one ray in the
-// general path (render/hamiltonian_ray.hpp): the step, the earliest hit
+// general path (render/general_path_ray.hpp): the step, the earliest hit
 // found in it so far, the step's hull (made on first use), the ray's
 // per-object warm starts, and where it crosses the equatorial plane.
 

@@ -1,6 +1,6 @@
 #pragma once
 // How one camera ray ended, as a plain record: the trace stage fills it
-// (render/hamiltonian_ray.hpp, render/mino_ray.hpp: both paths the same
+// (render/general_path_ray.hpp, render/kerr_fast_path_ray.hpp: both paths the same
 // fields), and everything after reads it — the shade stage
 // (render/shade.hpp) that turns it into colour, the data layers
 // (render/layers.hpp), the sample memo, `lightcone trace` and the star

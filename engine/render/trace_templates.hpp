@@ -18,8 +18,8 @@
 
 #include "core/lanes.hpp"
 #include "geodesic/ray_loop.hpp"
-#include "render/hamiltonian_ray.hpp"
-#include "render/mino_ray.hpp"
+#include "render/general_path_ray.hpp"
+#include "render/kerr_fast_path_ray.hpp"
 #include "render/ray_start.hpp"
 #include "render/scene.hpp"
 #include "render/shade.hpp"

@@ -1,6 +1,7 @@
 #pragma once
 // One camera ray through a scene in the general path (render/trace.hpp):
-// Hamilton's equations in the spacetime's trace chart, with the visitor that
+// the Hamiltonian formulation (HamiltonianPath, geodesic/null_ray.hpp,
+// beside the integrator) in the spacetime's trace chart, with the visitor that
 // tests each step against the scene's objects, counts equatorial crossings
 // (hit.order) and, at the end, fills the ray's hit record
 // (render/hit_record.hpp): the object met and where, the sky direction or

@@ -1,7 +1,7 @@
 #pragma once
 // One camera ray through a Kerr scene without spheres in the fast path
-// (render/trace.hpp): the Boyer–Lindquist–Mino equations
-// (geodesic/kerr_mino.hpp), with the visitor that finds disk hits,
+// (render/trace.hpp): the Boyer–Lindquist–Mino formulation (MinoPath,
+// geodesic/kerr_mino.hpp, beside the integrator), with the visitor that finds disk hits,
 // equatorial crossings, the escape and capture events and the direction at
 // infinity, and fills the ray's hit record as the general path does.
 
@@ -15,7 +15,7 @@
 #include "geodesic/crossing.hpp"
 #include "geodesic/kerr_mino.hpp"
 #include "objects/objects.hpp"
-#include "render/hamiltonian_ray.hpp"
+#include "render/general_path_ray.hpp"
 #include "render/hit_record.hpp"
 #include "render/scene.hpp"
 
