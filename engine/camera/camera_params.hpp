@@ -19,6 +19,7 @@ using CameraSpecs = SpecRegistry<PinholeParams, FisheyeParams, EquirectParams>;
 // The variant itself, as a class so that camera/camera_spec.hpp can name
 // it before the list.
 struct CameraSpecKinds : CameraSpecs::Spec {
+  using Specs = CameraSpecs;
   using CameraSpecs::Spec::Spec;
   CameraSpecKinds() = default;
   CameraSpecKinds(const CameraSpecs::Spec& spec) : CameraSpecs::Spec(spec) {}

@@ -7,20 +7,17 @@
 
 namespace lc {
 
-// The box's members, and for each camera kind how a box is made from its
-// parameters and read back: one line per kind, as camera/camera_params.hpp
-// lists them.  A kind missing here is a link error naming
-// SpecAccess<CameraSpecKinds, ItsParams>.
+// The box's members, its name, key and JSON, and for each camera kind how a
+// box is made from its parameters and read back: one line per kind, as
+// camera/camera_params.hpp lists them.  A kind missing here is a link error
+// naming SpecAccess<CameraSpecKinds, ItsParams>.
 template class SpecBox<CameraSpecKinds>;
+template std::string_view kind_name(const CameraSpec&);
+template std::string kind_key(const CameraSpec&);
+template std::string kind_json(const CameraSpec&, bool);
 template struct SpecAccess<CameraSpecKinds, PinholeParams>;
 template struct SpecAccess<CameraSpecKinds, FisheyeParams>;
 template struct SpecAccess<CameraSpecKinds, EquirectParams>;
-
-std::string_view camera_name(const CameraSpec& spec) { return CameraSpecs::name(spec.kinds()); }
-
-std::string camera_key(const CameraSpec& spec) { return CameraSpecs::key(spec.kinds()); }
-
-std::string camera_json(const CameraSpec& spec) { return CameraSpecs::json(spec.kinds()); }
 
 double stereo_separation(const CameraSpec& spec) {
   return std::visit(

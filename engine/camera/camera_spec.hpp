@@ -8,9 +8,6 @@
 // (CameraSpec{PinholeParams{...}}); read back with get<P>() or, where the
 // list is included, visited through kinds().
 
-#include <string>
-#include <string_view>
-
 #include "core/spec_box.hpp"
 
 namespace lc {
@@ -20,13 +17,8 @@ using CameraSpec = SpecBox<CameraSpecKinds>;
 // Its members are compiled once, beside the list; nowhere else, even where
 // core/spec_box_impl.hpp is seen.
 extern template class SpecBox<CameraSpecKinds>;
+// Its name, key and JSON: kind_name, kind_key, kind_json (core/spec_box.hpp).
 
-// Its kind's name (its Lua constructor's: "camera", "fisheye", ...).
-std::string_view camera_name(const CameraSpec& spec);
-// "name field=value ...", exactly (core/registry.hpp, spec_key).
-std::string camera_key(const CameraSpec& spec);
-// {"kind": "name", <each field>: value}.
-std::string camera_json(const CameraSpec& spec);
 // Its eyes' `separation` (M), 0 for a kind without one.
 double stereo_separation(const CameraSpec& spec);
 

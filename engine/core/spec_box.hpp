@@ -14,6 +14,8 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
+#include <string_view>
 #include <type_traits>
 #include <variant>
 
@@ -81,5 +83,17 @@ class SpecBox {
   // Null only in a moved-from box, which may only be assigned or destroyed.
   std::unique_ptr<Kinds> kinds_;
 };
+
+// Its kind's name (its Lua constructor's), "name field=value ..." exactly
+// (core/registry.hpp, spec_key) and {"kind": "name", <each field>: value}
+// (polar: whether the scene's positions are polar, for a field holding
+// one), for a box whose list is a SpecRegistry (Kinds::Specs); compiled
+// beside the list (core/spec_box_impl.hpp).
+template <class Kinds>
+std::string_view kind_name(const SpecBox<Kinds>& spec);
+template <class Kinds>
+std::string kind_key(const SpecBox<Kinds>& spec);
+template <class Kinds>
+std::string kind_json(const SpecBox<Kinds>& spec, bool polar = false);
 
 }  // namespace lc

@@ -1,6 +1,7 @@
 #pragma once
-// SpecBox's members (core/spec_box.hpp), for the one file beside each list
-// that instantiates them, where the list's variant is complete:
+// SpecBox's members and kind_name/key/json (core/spec_box.hpp), for the one
+// file beside each list that instantiates them, where the list's variant
+// is complete:
 //   template class SpecBox<CameraSpecKinds>;
 //   template struct SpecAccess<CameraSpecKinds, PinholeParams>;  // one per kind
 
@@ -51,6 +52,21 @@ SpecBox<Kinds>::~SpecBox() = default;
 template <class Kinds>
 std::size_t SpecBox<Kinds>::index() const {
   return kinds_->index();
+}
+
+template <class Kinds>
+std::string_view kind_name(const SpecBox<Kinds>& spec) {
+  return Kinds::Specs::name(spec.kinds());
+}
+
+template <class Kinds>
+std::string kind_key(const SpecBox<Kinds>& spec) {
+  return Kinds::Specs::key(spec.kinds());
+}
+
+template <class Kinds>
+std::string kind_json(const SpecBox<Kinds>& spec, bool polar) {
+  return Kinds::Specs::json(spec.kinds(), polar);
 }
 
 }  // namespace lc

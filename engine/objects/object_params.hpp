@@ -18,6 +18,7 @@ using ObjectSpecs = SpecRegistry<DiskParams, SphereParams>;
 // The variant itself, as a class so that objects/object_spec.hpp can name
 // it before the list.
 struct ObjectSpecKinds : ObjectSpecs::Spec {
+  using Specs = ObjectSpecs;
   using ObjectSpecs::Spec::Spec;
   ObjectSpecKinds() = default;
   ObjectSpecKinds(const ObjectSpecs::Spec& spec) : ObjectSpecs::Spec(spec) {}

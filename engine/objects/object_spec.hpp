@@ -7,9 +7,6 @@
 // kind's Params (ObjectSpec{DiskParams{...}}); read back with get<P>() or,
 // where the list is included, visited through kinds().
 
-#include <string>
-#include <string_view>
-
 #include "core/spec_box.hpp"
 
 namespace lc {
@@ -19,13 +16,6 @@ using ObjectSpec = SpecBox<ObjectSpecKinds>;
 // Its members are compiled once, beside the list; nowhere else, even where
 // core/spec_box_impl.hpp is seen.
 extern template class SpecBox<ObjectSpecKinds>;
-
-// Its kind's name (its Lua constructor's: "disk", "sphere", ...).
-std::string_view object_name(const ObjectSpec& spec);
-// "name field=value ...", exactly (core/registry.hpp, spec_key).
-std::string object_key(const ObjectSpec& spec);
-// {"kind": "name", <each field>: value}; polar: whether the scene's
-// positions are polar (for a field holding one).
-std::string object_json(const ObjectSpec& spec, bool polar);
+// Its name, key and JSON: kind_name, kind_key, kind_json (core/spec_box.hpp).
 
 }  // namespace lc

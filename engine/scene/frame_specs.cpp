@@ -10,7 +10,7 @@ namespace {
 
 // "lc.camera (flat, mono)": what a player must be told of a camera's frames.
 std::string kind_and_layout(const CameraSpec& spec, const VideoLayout& layout) {
-  return fmt::format("lc.{} ({}, {})", camera_name(spec), name_of(layout.projection), name_of(layout.stereo));
+  return fmt::format("lc.{} ({}, {})", kind_name(spec), name_of(layout.projection), name_of(layout.stereo));
 }
 
 }  // namespace

@@ -33,9 +33,9 @@ static_assert(sizeof(AtRestParams<StaticObserver>) ==
 std::string key_without_clock(const SceneSpec& fs) {
   std::string k = "spacetime " + describe(fs.spacetime, true);
   k += "|observer " + ObserverRegistry::key(fs.observer);
-  k += "|camera " + camera_key(fs.camera);
+  k += "|camera " + kind_key(fs.camera);
   k += "|sky " + SkyRegistry::key(fs.sky);
-  for (const ObjectSpec& o : fs.objects) k += "|object " + object_key(o);
+  for (const ObjectSpec& o : fs.objects) k += "|object " + kind_key(o);
   k += "|light" + fields_key(fs.light);
   // Not the shutter: a frame whose scene changes within an open shutter
   // neither takes nor keeps samples (render/pixel_rows.hpp), and any other
