@@ -6,7 +6,6 @@
 // (docs/architecture.md, "What a new kind rebuilds"); code for one spacetime
 // reads scene.get<S>() instead.
 
-#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -17,15 +16,16 @@
 namespace lc {
 
 namespace detail {
+// f on the scene as the first of the spacetimes it can be in; the last one
+// left is taken by get<>, which throws std::bad_variant_access for a scene
+// in an unregistered spacetime (none is built).
 template <class Scn, class F, class First, class... Rest>
 decltype(auto) visit_scene_in(Scn& scene, F& f, std::variant<First, Rest...>*) {
-  if (auto* sc = scene.template get_if<First>()) return f(*sc);
-  if constexpr (sizeof...(Rest) > 0) {
-    return visit_scene_in(scene, f, static_cast<std::variant<Rest...>*>(nullptr));
+  if constexpr (sizeof...(Rest) == 0) {
+    return f(scene.template get<First>());
   } else {
-    // Unreachable for a scene built from a registered spacetime.
-    throw std::logic_error("a scene in an unregistered spacetime");
-    return f(*scene.template get_if<First>());
+    if (auto* sc = scene.template get_if<First>()) return f(*sc);
+    return visit_scene_in(scene, f, static_cast<std::variant<Rest...>*>(nullptr));
   }
 }
 }  // namespace detail
