@@ -6,6 +6,7 @@
 // only where the box its centre keeps over the step's time range (the
 // paper's spacetime tube) allows (objects/sphere_intersection.hpp).
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>

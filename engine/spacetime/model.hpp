@@ -66,6 +66,7 @@
 // Cartesian radius), NoHorizon (rays are never captured, observers stand
 // anywhere) and ObserversOutsideHorizons<S>.
 
+#include <algorithm>
 #include <array>
 #include <concepts>
 #include <optional>

@@ -6,6 +6,7 @@
 // as it moves across pixels (no flicker).  Then the deposits on each pixel
 // are summed, a crowded lensed ring putting many on one.
 
+#include <algorithm>
 #include <vector>
 
 #include "core/color.hpp"

@@ -1,7 +1,8 @@
 #include "render_command.hpp"
 
-#include <csignal>
+#include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <map>
 #include <memory>
 #include <optional>

@@ -6,6 +6,7 @@
 #include "stars/star_bins.hpp"
 #include "stars/star_field.hpp"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <cmath>

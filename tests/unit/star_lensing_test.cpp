@@ -9,6 +9,7 @@
 // the 200 x 200 pixels' (mu interpolated at the star) a few 0.1%.  At the
 // production integrator tolerance.
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <cmath>

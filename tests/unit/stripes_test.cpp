@@ -1,6 +1,7 @@
 // How a frame is cut into working sets (job/stripes.hpp): interleaved rows
 // cover the image exactly once.
 
+#include <algorithm>
 #include <set>
 #include <vector>
 
