@@ -99,6 +99,9 @@ struct Field {
   std::optional<Bound> lo = std::nullopt, hi = std::nullopt;
   std::string_view doc = {};
   std::string_view unit = {};  // "degrees", "M", ...: for messages and the docs
+  // Left out of a kind's text, JSON and key while it holds its default
+  // (quiet_at_default below).
+  bool quiet = false;
 };
 
 template <class Owner, class T>
@@ -106,6 +109,26 @@ constexpr Field<Owner, T> field(std::string_view name, T Owner::*member, std::op
                                 std::optional<Bound> lo, std::optional<Bound> hi, std::string_view doc,
                                 std::string_view unit = {}) {
   return {name, member, fallback, lo, hi, doc, unit};
+}
+
+// A field added to a kind after frames were made with it (a Kerr hole's
+// charge): the text, JSON and key of a value leave it out while it holds
+// its default, so the kind's earlier scenes are described (and their frame
+// files written) byte for byte as before, and only a value that uses the
+// field names it.
+template <class Owner, class T>
+constexpr Field<Owner, T> quiet_at_default(Field<Owner, T> f) {
+  f.quiet = true;
+  return f;
+}
+
+// Whether the field f of a value holding v is left out of its text.
+template <class F>
+bool left_out(const F& f, const typename F::Value& v) {
+  if constexpr (std::equality_comparable_with<typename F::Value, FieldDefaultOf<typename F::Value>>)
+    return f.quiet && f.fallback && v == *f.fallback;
+  else
+    return false;
 }
 
 // Whether a struct declares its fields.
@@ -213,6 +236,7 @@ std::string fields_key(const S& s) {
   std::string out;
   for_each_field<S>([&](const auto& f) {
     const auto& v = s.*(f.member);
+    if (left_out(f, v)) return;
     out += fmt::format(" {}={}", field_key_name(f, v), field_text(v, true));
   });
   return out;
@@ -225,6 +249,7 @@ std::string fields_json(const S& s, bool polar = false) {
   std::string out;
   for_each_field<S>([&](const auto& f) {
     const auto& v = s.*(f.member);
+    if (left_out(f, v)) return;
     out += fmt::format(", \"{}\": {}", field_key_name(f, v), field_json_text(v, polar));
   });
   return out;

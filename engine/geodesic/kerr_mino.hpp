@@ -3,11 +3,11 @@
 // fast path for rays through Kerr scenes without moving objects
 // (docs/physics.md, "Two integrators for Kerr").
 //
-// With the constants E = -p_t, L = p_phi and Carter's K = Q + (L - a E)^2,
-// and Mino time lambda (d lambda = d sigma / Sigma, sigma affine), the radial
+// With the constants E = -p_t, L = p_phi and Carter's K = Q + (L - a E)^2
+// (Q Carter's constant; the hole's charge is e below), and Mino time lambda (d lambda = d sigma / Sigma, sigma affine), the radial
 // and polar motions separate (Carter 1968, Phys. Rev. 174, 1559; Mino 2003,
 // Phys. Rev. D 67, 084027).  In u = 1/r:
-//   (du/dl)^2  = U(u)  = Pu^2 - u^2 D K,   Pu = E + a (a E - L) u^2,  D = 1 - 2 M u + a^2 u^2
+//   (du/dl)^2  = U(u)  = Pu^2 - u^2 D K,   Pu = E + a (a E - L) u^2,  D = 1 - 2 M u + (a^2 + e^2) u^2
 //   (dth/dl)^2 = Theta = Q + a^2 E^2 cos^2 - L^2 cot^2
 //   dphi/dl    = L / sin^2 - a E + a Pu / D
 //   dt/dl      = a (L - a E sin^2) + (1 + a^2 u^2) Pu / (u^2 D)
@@ -41,7 +41,10 @@
 // spin axis) cross the axis with sin th changing sign, which stands for the
 // same point at (-th, phi + pi); rays with L != 0 turn before the axis.  BL
 // is singular at the horizon, but rays are stopped at the capture radius,
-// well outside it.  Valid for M > 0 and M = 0 alike.
+// well outside it.  Valid for M > 0 and M = 0 alike, and for a charged
+// (Kerr–Newman) hole of charge e: the charge enters only through
+// D = Delta / r^2 (the separation and Carter's constant survive it: Carter
+// 1968), as d = a^2 + e^2 where D has a^2; at e = 0 d is a^2 exactly.
 
 #include <array>
 #include <cmath>
@@ -61,13 +64,15 @@ using MinoStep = DenseStep<8>;
 
 // One ray's constants of motion and of the chart (doubles).
 struct KerrMinoConstants {
-  double M, a, E, L, K;
-  double a2, aE, a2E2, L2, alpha;  // alpha = a (a E - L)
+  double M, a, e, E, L, K;            // e: the hole's charge
+  double a2, d, aE, a2E2, L2, alpha;  // d = a^2 + e^2, alpha = a (a E - L)
   double u_floor2;                 // t and sigma are followed out to r = 1 / u_floor only
   double sign_P = 1.0;             // sgn(Pu): tau = t - sgn(Pu) V
 
-  KerrMinoConstants(double mass, double spin, double energy, double ang_mom, double carter_k, double u_floor)
-      : M(mass), a(spin), E(energy), L(ang_mom), K(carter_k), a2(spin * spin), aE(spin * energy),
+  KerrMinoConstants(double mass, double spin, double charge, double energy, double ang_mom, double carter_k,
+                    double u_floor)
+      : M(mass), a(spin), e(charge), E(energy), L(ang_mom), K(carter_k), a2(spin * spin),
+        d(spin * spin + charge * charge), aE(spin * energy),
         a2E2(spin * spin * energy * energy), L2(ang_mom * ang_mom), alpha(spin * (spin * energy - ang_mom)),
         u_floor2(u_floor * u_floor) {}
 };
@@ -77,7 +82,7 @@ struct KerrMinoConstants {
 // (zeros before: a finite right-hand side for an idle lane).
 template <class T>
 struct KerrMinoRhs {
-  T M{}, a{}, E{}, L{}, K{}, a2{}, aE{}, a2E2{}, alpha{}, u_floor2{}, sign_P{};
+  T M{}, a{}, E{}, L{}, K{}, a2{}, d{}, aE{}, a2E2{}, alpha{}, u_floor2{}, sign_P{};
 
   void set(int i, const KerrMinoConstants& k) {
     set_lane(M, i, k.M);
@@ -86,6 +91,7 @@ struct KerrMinoRhs {
     set_lane(L, i, k.L);
     set_lane(K, i, k.K);
     set_lane(a2, i, k.a2);
+    set_lane(d, i, k.d);
     set_lane(aE, i, k.aE);
     set_lane(a2E2, i, k.a2E2);
     set_lane(alpha, i, k.alpha);
@@ -104,18 +110,18 @@ struct KerrMinoRhs {
     const T u = y[1], c = y[2], s = y[3], U = y[5], w = y[6];
     const T u2 = u * u;
     const T Pu = E + alpha * u2;
-    const T inv_D = one / (one - 2.0 * M * u + a2 * u2);
+    const T inv_D = one / (one - 2.0 * M * u + d * u2);
     const T inv_u2 = one / (u2 > u_floor2 ? u2 : u_floor2);
     const T s2 = s * s;
     const T L_s2 = L == zero ? zero : L / s2;  // L / sin^2 (0 on the axis when L = 0)
-    const T W2 = Pu * Pu - u2 * (one - 2.0 * M * u + a2 * u2) * K;
+    const T W2 = Pu * Pu - u2 * (one - 2.0 * M * u + d * u2) * K;
     const T W = sqrt_of(W2 > zero ? W2 : zero);
     dy[0] = a * (L - aE * s2) + sign_P * (one + a2 * u2) * K / (abs_of(Pu) + W);
     dy[1] = U;
     dy[2] = -s * w;
     dy[3] = c * w;
     dy[4] = L_s2 - aE + a * Pu * inv_D;
-    dy[5] = 2.0 * alpha * u * Pu - K * u * (one - 3.0 * M * u + 2.0 * a2 * u2);
+    dy[5] = 2.0 * alpha * u * Pu - K * u * (one - 3.0 * M * u + 2.0 * d * u2);
     dy[6] = c * s * (L_s2 * L_s2 - a2E2);  // c (L^2 / s^3 - a^2 E^2 s)
     dy[7] = inv_u2 + a2 * c * c;           // d sigma / d lambda = Sigma
   }
@@ -144,16 +150,16 @@ struct KerrMinoStart {
   // the same as the Kerr–Schild path's first step in sigma.
   double first_step() const { return 1e-2 * std::min(1.0, y0[1]); }
 };
-inline KerrMinoStart kerr_mino_start(double M, double a, const Vec4& s, const Vec4& p,
+inline KerrMinoStart kerr_mino_start(double M, double a, double charge, const Vec4& s, const Vec4& p,
                                      double escape_radius = default_escape_radius) {
   const double r = s[1], c = std::cos(s[2]), sn = std::sin(s[2]);
   const double E = -p[0];
   const double L = sn == 0.0 ? 0.0 : p[3];
   const double u = 1.0 / r;
-  const double D = 1.0 - 2.0 * M * u + a * a * u * u;  // Delta / r^2
+  const double D = 1.0 - 2.0 * M * u + (a * a + charge * charge) * u * u;  // Delta / r^2
   const double Q = p[2] * p[2] - a * a * E * E * c * c + (L == 0.0 ? 0.0 : L * L * c * c / (sn * sn));
   const double K = Q + (L - a * E) * (L - a * E);
-  KerrMinoConstants k(M, a, E, L, K, 0.5 / escape_radius);
+  KerrMinoConstants k(M, a, charge, E, L, K, 0.5 / escape_radius);
   k.sign_P = E + k.alpha * u * u < 0.0 ? -1.0 : 1.0;
   // du/dl = -u^2 dr/dl = -u^2 Delta p_r = -D p_r.
   return {k, {s[0], u, c, sn, s[3], -D * p[1], p[2], 0.0}};
@@ -169,7 +175,7 @@ inline void kerr_mino_event(const KerrMinoConstants& k, const MinoState& y, Vec4
   if (phi < 0.0) phi += two_pi;
   if (phi >= two_pi) phi = 0.0;
   const double u = y[1];
-  const double D = 1.0 - 2.0 * k.M * u + k.a2 * u * u;
+  const double D = 1.0 - 2.0 * k.M * u + k.d * u * u;
   s = {y[0], 1.0 / u, th, phi};
   p = {-k.E, -y[5] / D, flip ? -y[6] : y[6], k.L};
 }
@@ -211,7 +217,7 @@ class MinoClock {
   }
 
  private:
-  double r_star(double u) const { return 1.0 / u + kerr_radial_time(k_.M, k_.a, 1.0 / u); }
+  double r_star(double u) const { return 1.0 / u + kerr_radial_time(k_.M, k_.a, k_.e, 1.0 / u); }
 
   const KerrMinoConstants& k_;
   double u_leg_;

@@ -11,8 +11,8 @@ void Disk::glow(const std::optional<NovikovThorneFlux>& flux, ShotResources& res
                                                               p_.accretion_rate);
   if (!flux)
     throw std::invalid_argument(fmt::format(
-        "disk: {} makes a glowing Novikov–Thorne disk, which needs a Kerr hole with mass > 0 and |spin| < mass "
-        "(leave temperature, solar_masses and accretion_rate at 0 for the checker)",
+        "disk: {} makes a glowing Novikov–Thorne disk, which needs an uncharged Kerr hole with mass > 0 and |spin| < mass "
+        "(lightcone has the flux of no other spacetime's disk, a charged hole's included; leave temperature, solar_masses and accretion_rate at 0 for the checker)",
         how));
   flux_ = flux;
   const double peak = flux_->peak_radius();

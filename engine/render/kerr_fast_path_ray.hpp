@@ -200,7 +200,7 @@ class MinoRay {
       p_bl[2] = std::hypot(pa[2], pb[2]);
       p_bl[3] = 0.0;
     }
-    return kerr_mino_start(st.mass(), st.spin(), s0, p_bl, sc.rays.escape_radius);
+    return kerr_mino_start(st.mass(), st.spin(), st.charge(), s0, p_bl, sc.rays.escape_radius);
   }
   // An event as a trace-coordinate state (x^mu, p_mu), for the path
   // recorder and the layers' end event.

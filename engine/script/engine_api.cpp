@@ -126,7 +126,8 @@ constexpr std::array<std::string_view, 7> kGroupTitles = {
 
 // lc's __index (scripts/lightcone.lua): lc.<name> for a name lc lacks.
 // Arguments: lc and the key; upvalue 1 maps each constructor's name to its
-// NameGroup.  Raises, at the script line that reads the name, an error that
+// NameGroup, upvalue 2 the other names of special cases (a spacetime's
+// other_names: lc.kerr_newman) to how they are written.  Raises, at the script line that reads the name, an error that
 // says it is no lightcone constructor or function, suggests the nearest
 // name and lists every name lc has by group, so `lc.fisheye{...}` fails
 // there instead of as "attempt to call field 'fisheye' (a nil value)".  A
@@ -162,8 +163,14 @@ int l_unknown_name(lua_State* L) {
       constexpr std::size_t kShown = 64;
       shown = n <= kShown ? "lc." + key : fmt::format("lc.{}...", key.substr(0, kShown));
       std::sort(all.begin(), all.end());
+      lua_pushvalue(L, 2);
+      lua_rawget(L, lua_upvalueindex(2));  // a special case's other name
+      if (lua_type(L, -1) == LUA_TSTRING)
+        throw lua::FieldError(fmt::format("{} is no constructor of its own: it is written {} (docs/physics.md)", shown,
+                                          lua_tostring(L, -1)));
       if (const std::string near = lua::nearest(key, all); !near.empty())
         suggestion = fmt::format(" (did you mean lc.{}?)", near);
+      lua_pop(L, 1);
     } else if (lua_type(L, 2) == LUA_TNUMBER) {
       shown = fmt::format("lc[{}]", lua_tonumber(L, 2));
     } else {
@@ -211,7 +218,16 @@ void install_engine_api(lua::Sandbox& sandbox, EngineMemo* memo) {
       [&](auto* kind) { add(std::remove_pointer_t<decltype(kind)>::name, validate_object, NameGroup::objects); });
   add("worldline", validate_worldline, NameGroup::observers);
   add("light", validate_light, NameGroup::light);
-  lua_pushcclosure(L, &l_unknown_name, 1);  // takes the group table
+  lua_newtable(L);  // other name -> how it is written, for l_unknown_name
+  SpacetimeRegistry::for_each([&](auto* kind) {
+    using S = std::remove_pointer_t<decltype(kind)>;
+    if constexpr (requires { S::other_names; })
+      for (const OtherName& o : S::other_names) {
+        lua_pushlstring(L, o.written.data(), o.written.size());
+        lua_setfield(L, -2, std::string(o.name).c_str());
+      }
+  });
+  lua_pushcclosure(L, &l_unknown_name, 2);  // takes the group and other-name tables
   lua_setfield(L, api, "__unknown_name");
   lua_pushlightuserdata(L, memo);
   lua_pushcclosure(L, l_apocentres, 1);

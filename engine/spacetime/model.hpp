@@ -49,15 +49,20 @@
 //   so that a ray's p_t is its energy there: the sky's hit.g reads it)
 //   examples()                parameter sets with the radii between which
 //                             the generic self-test may sample events
+//   other_names               optional, static: names a user may try for
+//                             special cases it covers, each with how it is
+//                             written (lc.kerr_newman: lc.kerr{..., charge});
+//                             lc's unknown-name error says so
 //
 // The requirements come in three parts, each a concept of its own so that
 // the compiler's note names the part a class misses: what it is
 // (SpacetimeMetric: the metric and Hamilton's equations), where rays end
 // (SpacetimeEnds: its far ends, horizons and capture, the far field) and
-// its charts (SpacetimeCharts: scene <-> trace coordinates).  A thin disk's
-// physics is no part of it: a trait beside the disk
-// (objects/disk_physics.hpp), so a spacetime without a disk theory writes
-// no disk code.
+// its charts (SpacetimeCharts: scene <-> trace coordinates).  How its
+// equatorial matter moves and a thin disk's physics are no part of it:
+// traits beside it (spacetime/equatorial_flow.hpp) and beside the disk
+// (objects/disk_physics.hpp), so a spacetime without them writes no orbit
+// or disk code.
 //
 // What most spacetimes would write alike comes from bases they name
 // (below), each a choice the class states rather than a default it falls
@@ -80,6 +85,12 @@
 #include "spacetime/ends.hpp"
 
 namespace lc {
+
+// A name a user may try for a special case of a spacetime (S::other_names)
+// and how the case is written in a shot.
+struct OtherName {
+  std::string_view name, written;
+};
 
 // A spacetime and where events may be sampled in it (trace coordinates,
 // Cartesian radius in [r_min, r_max]), for the generic self-test.

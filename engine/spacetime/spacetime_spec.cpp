@@ -72,6 +72,7 @@ std::string describe(const Spacetime& s, bool exact) {
         bool first = true;
         for_each_field<P>([&](const auto& f) {
           const double v = p.*(f.member);
+          if (left_out(f, v)) return;
           out += fmt::format("{}{}={}", first ? "" : ", ", f.name, exact ? fmt::format("{:a}", v) : fmt::format("{:g}", v));
           first = false;
         });

@@ -23,6 +23,13 @@ awk -F, 'NR == 2003 { if ($2 < 221.187 || $2 > 221.189 || $3 < 4.9999 || $3 > 5.
 awk -F, 'NR > 2 { if ($3 < 5.9999999 || $3 > 6.0000001) { print "r off: " $3; exit 1 } last = $5 }
          END { if (last < 6.2831 || last > 6.2833) { print "final phi " last; exit 1 } }' isco.csv || fail "isco: orbit off"
 
+# A charged hole (Reissner–Nordström, Q = 0.8): a circular orbit at r = 6
+# closes after the coordinate time 2 pi r^2 / sqrt(M r - Q^2) = 97.701 M.
+"$LIGHTCONE" geodesic "$SRC/shots/geodesics/reissner_nordstrom_orbit.lua" -o rn.csv 2>rn.log
+grep -q "stop reason: reached (coordinate time 97.70" rn.log || fail "rn orbit: $(cat rn.log)"
+awk -F, 'NR > 2 { if ($3 < 5.9999999 || $3 > 6.0000001) { print "r off: " $3; exit 1 } last = $5 }
+         END { if (last < 6.2831 || last > 6.2833) { print "final phi " last; exit 1 } }' rn.csv || fail "rn orbit: off"
+
 "$LIGHTCONE" geodesic "$SRC/shots/geodesics/kerr_ray_bundle.lua" -o bundle.csv 2>bundle.log
 [ "$(sed -n 2p bundle.csv | cut -d, -f1)" = "ray" ] || fail "bundle: no ray column"
 [ "$(cut -d, -f1 bundle.csv | sort -u | grep -c '^[0-9]')" -eq 21 ] || fail "bundle: want 21 rays"

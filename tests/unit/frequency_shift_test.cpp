@@ -353,7 +353,7 @@ TEST(GlowingDisk, NeedsAKerrHole) {
       build_scene(fs, 4, 4, res);
       ADD_FAILURE() << "a glowing disk was built around " << describe(fs.spacetime);
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("needs a Kerr hole with mass > 0 and |spin| < mass"), std::string::npos)
+      EXPECT_NE(std::string(e.what()).find("needs an uncharged Kerr hole with mass > 0 and |spin| < mass"), std::string::npos)
           << e.what();
     }
   }

@@ -25,7 +25,7 @@ double polar_potential(const KerrMinoConstants& k, double c, double s) {
 
 // A ray from r0 in the given BL direction constants, moving inwards.
 KerrMinoStart inward_ray(double M, double a, double r0, double theta, double L, double p_theta) {
-  KerrMinoStart st = kerr_mino_start(M, a, {0, r0, theta, 0}, {-1, 0, p_theta, L});
+  KerrMinoStart st = kerr_mino_start(M, a, 0.0, {0, r0, theta, 0}, {-1, 0, p_theta, L});
   st.y0[5] = std::sqrt(radial_potential(st.k, 1 / r0));  // du/dl > 0: r falls
   return st;
 }

@@ -56,8 +56,8 @@ TEST(ScriptErrors, UnknownNameInLcIsAnErrorAtItsLine) {
   EXPECT_EQ(msg.rfind(file.string() + ":3: lc.orthographic is not a lightcone constructor or function; lc has ", 0), 0u)
       << msg;
   for (const char* listed :
-       {"spacetimes: lc.dihole, lc.kerr, lc.minkowski;", "observers and worldlines: lc.free_fall, lc.static_observer, "
-                                                         "lc.worldline, lc.zamo;",
+       {"spacetimes: lc.dihole, lc.kerr, lc.minkowski;", "observers and worldlines: lc.circular_orbit, lc.free_fall, "
+                                                         "lc.static_observer, lc.worldline, lc.zamo;",
         "cameras: lc.camera, lc.equirect, lc.fisheye;", "skies: lc.sky_checker, lc.sky_image, lc.sky_stars, lc.starfield;",
         "objects: lc.disk, lc.sphere;", "light: lc.light;", "helpers: lc.apocentres, ", "lc.look_at", "lc.timeline",
         "(docs/shots.md)"})
@@ -74,9 +74,15 @@ TEST(ScriptErrors, UnknownNameSuggestsTheNearestOne) {
     const fs::path file = shot_running(dir, line);
     return first_line(error_of<ScriptError>([&] { lc::Shot shot(file); }));
   };
-  EXPECT_NE(error("local st = lc.kerr_newman{mass = 1, charge = 0.5}")
-                .find(":2: lc.kerr_newman is not a lightcone constructor or function (did you mean lc.kerr?); lc has "),
+  EXPECT_NE(error("local st = lc.kerr_nemwan{mass = 1, charge = 0.5}")
+                .find(":2: lc.kerr_nemwan is not a lightcone constructor or function (did you mean lc.kerr?); lc has "),
             std::string::npos);
+  // A special case of a spacetime, by its own name: how it is written.
+  EXPECT_NE(error("local st = lc.kerr_newman{mass = 1, charge = 0.5}")
+                .find(":2: lc.kerr_newman is no constructor of its own: it is written lc.kerr{mass = M, spin = a, "
+                      "charge = Q} (docs/physics.md)"),
+            std::string::npos);
+  EXPECT_NE(error("local st = lc.schwarzschild{mass = 1}").find("it is written lc.kerr{mass = M}"), std::string::npos);
   const std::string wormhole = error("local st = lc.wormhole{throat = 1}");
   EXPECT_NE(wormhole.find(":2: lc.wormhole is not a lightcone constructor or function; lc has "), std::string::npos)
       << wormhole;
@@ -128,8 +134,8 @@ TEST(ScriptErrors, UnknownNameInAGeodesicSpecIsAnErrorAtItsLine) {
                                    "return {spacetime = lc.kerr_newman{mass = 1},\n"
                                    "  curve = 'null', start = {r = 10, theta = 90, phi = 0}}\n");
   const std::string msg = first_line(error_of<ScriptError>([&] { lc::load_geodesic_specs(file); }));
-  EXPECT_EQ(msg.rfind(file.string() + ":2: lc.kerr_newman is not a lightcone constructor or function (did you mean "
-                                       "lc.kerr?)",
+  EXPECT_EQ(msg.rfind(file.string() + ":2: lc.kerr_newman is no constructor of its own: it is written lc.kerr{mass = M, "
+                                       "spin = a, charge = Q}",
                       0),
             0u)
       << msg;
@@ -143,7 +149,7 @@ TEST(ScriptErrors, UnknownFieldsAreReportedBeforeBadValues) {
   ScratchDir dir;
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"lc.camera{fov = 180, projection = 'fisheye'}", "camera: unknown field 'projection'"},
-      {"lc.kerr{mass = -1, charge = 0.5}", "kerr: unknown field 'charge'"},
+      {"lc.kerr{mass = -1, chrage = 0.5}", "kerr: unknown field 'chrage' (did you mean 'charge'?)"},
       {"lc.dihole{m1 = -1, m2 = 1, distance = 2}", "dihole: unknown field 'distance'"},
       {"lc.minkowski{mass = 1}", "minkowski: unknown field 'mass'"},
       {"lc.sky_checker{rows = 0, colour = {{1, 1, 1}, {0, 0, 0}}}", "sky_checker: unknown field 'colour' (did you "

@@ -2,7 +2,8 @@
 // inverse, analytic derivatives against finite differences, Hamilton's
 // equations against finite differences of H, the Kerr–Schild form against the
 // Boyer–Lindquist form through the coordinate map, and the special cases
-// (a = 0 is Schwarzschild, M = 0 is flat).
+// (a = 0 is Schwarzschild, M = 0 is flat), with and without a charge
+// (Kerr–Newman, Reissner–Nordström).
 
 #include <gtest/gtest.h>
 
@@ -156,6 +157,10 @@ TEST(Spacetime, EveryRegisteredSpacetimePassesTheSelfTest) {
 
 constexpr KerrSchildSense both_senses[] = {KerrSchildSense::ingoing, KerrSchildSense::outgoing};
 
+// Spin and charge pairs of Kerr–Newman holes (M = 1) for the checks below:
+// Reissner–Nordström, charged and spinning either way, and extremal.
+constexpr std::pair<double, double> charged[] = {{0.0, 0.7}, {0.5, -0.6}, {-0.6, 0.8}, {0.3, 0.2}};
+
 TEST(Kerr, MetricTimesInverseIsIdentity) {
   for (auto sense : both_senses)
     for (double a : {0.0, 0.5, 0.9, 0.999, 1.0})
@@ -172,6 +177,38 @@ TEST(Kerr, HamiltonEquationsMatchFiniteDifferences) {
   for (auto sense : both_senses)
     for (double a : {0.0, 0.6, -0.9, 1.0})
       expect_hamilton_equations(Kerr(1.0, a, sense), test::cartesian_points(200, 2.1, 40));
+}
+
+TEST(Kerr, ChargedMetricInverseDerivativesAndHamiltonEquations) {
+  for (auto sense : both_senses)
+    for (auto [a, q] : charged) {
+      const Kerr k(1.0, a, q, sense);
+      expect_inverse(k, test::cartesian_points(100, 1.5, 60));
+      expect_derivatives(k, test::cartesian_points(100, 2.1, 40));
+      expect_hamilton_equations(k, test::cartesian_points(100, 2.1, 40));
+    }
+}
+
+TEST(Kerr, ChargedKerrSchildFormIsReissnerNordstromAtZeroSpin) {
+  // Reissner–Nordström in ingoing Kerr–Schild form: g = eta + (2M/r - Q^2/r^2) l l,
+  // l = (1, x/r, y/r, z/r).
+  const double M = 1.3, Q = 0.9;
+  const Kerr k(M, 0.0, Q, KerrSchildSense::ingoing);
+  for (const auto& x : test::cartesian_points(100, 2.7, 50)) {
+    const double r = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    const Vec4 l = {1.0, x[1] / r, x[2] / r, x[3] / r};
+    const Mat4 g = k.metric(x);
+    for (int m = 0; m < 4; ++m)
+      for (int n = 0; n < 4; ++n)
+        EXPECT_NEAR(g[m][n], (m == n ? (m == 0 ? -1.0 : 1.0) : 0.0) + (2 * M / r - Q * Q / (r * r)) * l[m] * l[n],
+                    1e-14);
+  }
+  // And its Boyer–Lindquist form: -g_tt = 1 / g_rr = 1 - 2M/r + Q^2/r^2.
+  const double r = 4.0, th = 0.8;
+  const Mat4 gb = k.bl_metric({0, r, th, 1.0});
+  EXPECT_NEAR(gb[0][0], -(1 - 2 * M / r + Q * Q / (r * r)), 1e-15);
+  EXPECT_NEAR(gb[1][1], 1 / (1 - 2 * M / r + Q * Q / (r * r)), 1e-14);
+  EXPECT_NEAR(gb[3][3], r * r * std::sin(th) * std::sin(th), 1e-14);
 }
 
 TEST(Kerr, ZeroSpinIsSchwarzschildInKerrSchildForm) {
@@ -205,8 +242,8 @@ TEST(Kerr, KerrSchildPullsBackToBoyerLindquist) {
   std::mt19937_64 rng(4);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (auto sense : both_senses)
-  for (double a : {0.0, 0.5, -0.7, 0.99}) {
-    const Kerr k(1.0, a, sense);
+  for (auto [a, q] : {std::pair{0.0, 0.0}, {0.5, 0.0}, {-0.7, 0.0}, {0.99, 0.0}, {0.0, 0.7}, {0.5, -0.6}, {-0.6, 0.8}}) {
+    const Kerr k(1.0, a, q, sense);
     for (int i = 0; i < 100; ++i) {
       const Vec4 s = {5 * u(rng), k.horizon_radius() + 0.05 + 40 * u(rng), 0.05 + 3.0 * u(rng), 6.2 * u(rng)};
       const Mat4 J = k.trace_jacobian(s);
@@ -217,15 +254,16 @@ TEST(Kerr, KerrSchildPullsBackToBoyerLindquist) {
           double v = 0.0;
           for (int p = 0; p < 4; ++p)
             for (int q = 0; q < 4; ++q) v += J[p][m] * gks[p][q] * J[q][n];
-          EXPECT_NEAR(v, gbl[m][n], 1e-9 * std::max(1.0, std::abs(gbl[m][n]))) << m << n << " a=" << a;
+          EXPECT_NEAR(v, gbl[m][n], 1e-9 * std::max(1.0, std::abs(gbl[m][n]))) << m << n << " a=" << a << " Q=" << q;
         }
     }
   }
 }
 
 TEST(Kerr, JacobianMatchesFiniteDifferencesOfTheMap) {
-  for (auto sense : both_senses) {
-  const Kerr k(1.0, 0.8, sense);
+  for (auto sense : both_senses)
+  for (double q : {0.0, 0.55}) {
+  const Kerr k(1.0, 0.8, q, sense);
   const Vec4 s = {1.0, 6.5, 0.9, 2.0};
   const Mat4 J = k.trace_jacobian(s);
   for (int n = 0; n < 4; ++n) {
@@ -256,8 +294,9 @@ TEST(Kerr, SceneCoordinatesRoundTrip) {
 }
 
 TEST(Kerr, SceneTimeGradientMatchesFiniteDifferences) {
-  for (auto sense : both_senses) {
-  const Kerr k(1.0, 0.7, sense);
+  for (auto sense : both_senses)
+  for (double q : {0.0, 0.65}) {
+  const Kerr k(1.0, 0.7, q, sense);
   for (const auto& x : test::cartesian_points(50, 3, 30)) {
     const Vec4 g = k.scene_time_gradient(x);
     for (int m = 0; m < 4; ++m) {
@@ -286,6 +325,18 @@ TEST(Kerr, RejectsUnphysicalParameters) {
   EXPECT_THROW(Kerr(1.0, -1.01), std::invalid_argument);
   EXPECT_THROW(Kerr(0.0, 0.1), std::invalid_argument);
   EXPECT_THROW(Kerr(std::nan(""), 0.0), std::invalid_argument);
+  // a^2 + Q^2 > M^2: no horizon.
+  EXPECT_THROW(Kerr(1.0, 0.0, 1.01), std::invalid_argument);
+  EXPECT_THROW(Kerr(1.0, 0.6, -0.81), std::invalid_argument);
+  EXPECT_THROW(Kerr(0.0, 0.0, 0.1), std::invalid_argument);
+  EXPECT_THROW(Kerr(1.0, 0.0, std::nan("")), std::invalid_argument);
+  EXPECT_NO_THROW(Kerr(1.0, 0.6, 0.8));
+  try {
+    Kerr(1.0, 0.9, 0.5);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("a^2 + Q^2 <= M^2"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Kerr, ChartsDescribeTheSameSpacetime) {
@@ -307,6 +358,28 @@ TEST(Kerr, HorizonAndCaptureRadii) {
   EXPECT_GT(k.capture_radius(), k.horizon_radius());
   EXPECT_LT(k.capture_radius(), 1.5578);
   EXPECT_NEAR(Kerr(1.0, 0.0).capture_radius(), 2.5, 1e-12);
+  // Kerr–Newman: r_+- = M +- sqrt(M^2 - a^2 - Q^2), the capture radius
+  // between the horizon and the prograde photon orbit.
+  for (auto [a, q] : charged) {
+    const Kerr c(1.0, a, q);
+    const double root = std::sqrt(std::max(0.0, 1 - a * a - q * q));  // 0.6^2 + 0.8^2 rounds above 1
+    EXPECT_NEAR(c.horizon_radius(), 1 + root, 1e-15);
+    EXPECT_NEAR(c.inner_horizon_radius(), 1 - root, 1e-15);
+    EXPECT_GT(c.capture_radius(), c.horizon_radius());
+    // Extremal: the prograde photon orbit is on the horizon; rays are
+    // captured just outside it.
+    EXPECT_LE(c.capture_radius(), std::max(c.photon_orbit_radius(true), 1.001 * c.horizon_radius()));
+  }
+}
+
+TEST(Kerr, ChargeIsLeftOutOfTheDescriptionOfAnUnchargedHole) {
+  // Frames of Kerr shots name their spacetime in their files: an uncharged
+  // hole is described as before the charge existed.
+  EXPECT_EQ(describe(Spacetime(Kerr(1.0, 0.5))), "kerr(mass=1, spin=0.5)");
+  EXPECT_EQ(spacetime_json(Spacetime(Kerr(1.0, 0.5))), R"({"kind": "kerr", "mass": 1, "spin": 0.5})");
+  EXPECT_EQ(describe(Spacetime(Kerr(1.0, 0.5, 0.25))), "kerr(mass=1, spin=0.5, charge=0.25)");
+  EXPECT_EQ(spacetime_json(Spacetime(Kerr(1.0, 0.5, 0.25))),
+            R"({"kind": "kerr", "mass": 1, "spin": 0.5, "charge": 0.25})");
 }
 
 TEST(Dihole, MetricTimesInverseIsIdentity) {
