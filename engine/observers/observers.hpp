@@ -20,6 +20,7 @@
 #include "core/registry.hpp"
 #include "eye/eye.hpp"
 #include "eye/tetrad.hpp"
+#include "observers/circular_orbit.hpp"
 #include "observers/free_fall.hpp"
 #include "observers/observer_point.hpp"
 #include "observers/static_observer.hpp"
@@ -53,7 +54,7 @@ concept ObserverModel = requires(const O& o, const typename O::Params& p, const 
 };
 
 // Every observer kind, one line each.
-using ObserverRegistry = Registry<StaticObserver, Zamo, FreeFall>;
+using ObserverRegistry = Registry<StaticObserver, Zamo, FreeFall, CircularOrbit>;
 
 // The observer a shot asked for: one of the registered kinds' parameters.
 using ObserverSpec = ObserverRegistry::Spec;

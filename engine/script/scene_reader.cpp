@@ -187,6 +187,8 @@ void read_observer_extra(TableReader& t, FreeFall::Params& o, const Spacetime*) 
   auto w = t.table("worldline");
   o.worldline = read_worldline(w);
 }
+// A kind with only declared fields (a circular orbit) holds nothing more.
+void read_observer_extra(TableReader&, CircularOrbit::Params&, const Spacetime*) {}
 
 }  // namespace
 

@@ -173,7 +173,10 @@ TEST(Observers, APathNotBuiltHasNoEye) {
 }
 
 TEST(Observers, TheRegistryGivesNamesJsonKeysAndTheReference) {
-  EXPECT_EQ(ObserverRegistry::names.size(), 3u);
+  // Every kind has a name of its own (the list itself is the registry's:
+  // nothing here counts it).
+  for (std::size_t i = 0; i < ObserverRegistry::names.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) EXPECT_NE(ObserverRegistry::names[i], ObserverRegistry::names[j]);
   EXPECT_EQ(ObserverRegistry::name(ObserverSpec{Zamo::Params{}}), "zamo");
   SceneSpec fs;
   fs.spacetime = Kerr(1.0, 0.9);
