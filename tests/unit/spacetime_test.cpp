@@ -189,21 +189,10 @@ TEST(Kerr, ChargedMetricInverseDerivativesAndHamiltonEquations) {
     }
 }
 
-TEST(Kerr, ChargedKerrSchildFormIsReissnerNordstromAtZeroSpin) {
-  // Reissner–Nordström in ingoing Kerr–Schild form: g = eta + (2M/r - Q^2/r^2) l l,
-  // l = (1, x/r, y/r, z/r).
+TEST(Kerr, ChargedBoyerLindquistIsReissnerNordstromAtZeroSpin) {
   const double M = 1.3, Q = 0.9;
   const Kerr k(M, 0.0, Q, KerrSchildSense::ingoing);
-  for (const auto& x : test::cartesian_points(100, 2.7, 50)) {
-    const double r = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
-    const Vec4 l = {1.0, x[1] / r, x[2] / r, x[3] / r};
-    const Mat4 g = k.metric(x);
-    for (int m = 0; m < 4; ++m)
-      for (int n = 0; n < 4; ++n)
-        EXPECT_NEAR(g[m][n], (m == n ? (m == 0 ? -1.0 : 1.0) : 0.0) + (2 * M / r - Q * Q / (r * r)) * l[m] * l[n],
-                    1e-14);
-  }
-  // And its Boyer–Lindquist form: -g_tt = 1 / g_rr = 1 - 2M/r + Q^2/r^2.
+  // -g_tt = 1 / g_rr = 1 - 2M/r + Q^2/r^2.
   const double r = 4.0, th = 0.8;
   const Mat4 gb = k.bl_metric({0, r, th, 1.0});
   EXPECT_NEAR(gb[0][0], -(1 - 2 * M / r + Q * Q / (r * r)), 1e-15);
@@ -211,17 +200,20 @@ TEST(Kerr, ChargedKerrSchildFormIsReissnerNordstromAtZeroSpin) {
   EXPECT_NEAR(gb[3][3], r * r * std::sin(th) * std::sin(th), 1e-14);
 }
 
-TEST(Kerr, ZeroSpinIsSchwarzschildInKerrSchildForm) {
-  // Schwarzschild in ingoing Kerr–Schild: g = eta + (2M/r) l l, l = (1, x/r, y/r, z/r).
+TEST(Kerr, ZeroSpinIsSchwarzschildOrReissnerNordstromInKerrSchildForm) {
+  // In ingoing Kerr–Schild form: g = eta + (2M/r - Q^2/r^2) l l, l = (1, x/r, y/r, z/r).
   const double M = 1.3;
-  const Kerr k(M, 0.0, KerrSchildSense::ingoing);
+  for (const double Q : {0.0, 0.9}) {
+  const Kerr k(M, 0.0, Q, KerrSchildSense::ingoing);
   for (const auto& x : test::cartesian_points(100, 2.7, 50)) {
     const double r = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
     const Vec4 l = {1.0, x[1] / r, x[2] / r, x[3] / r};
     const Mat4 g = k.metric(x);
     for (int m = 0; m < 4; ++m)
       for (int n = 0; n < 4; ++n)
-        EXPECT_NEAR(g[m][n], (m == n ? (m == 0 ? -1.0 : 1.0) : 0.0) + 2 * M / r * l[m] * l[n], 1e-14);
+        EXPECT_NEAR(g[m][n], (m == n ? (m == 0 ? -1.0 : 1.0) : 0.0) + (2 * M / r - Q * Q / (r * r)) * l[m] * l[n], 1e-14)
+            << "Q " << Q;
+  }
   }
 }
 
