@@ -336,15 +336,17 @@ TEST(GlowingDisk, PhysicalUnitsBeyondWhatCanBeShownAreRefused) {
 }
 
 TEST(GlowingDisk, NeedsAKerrHole) {
-  // Around a dihole, and around an extremal Kerr hole (its disk's inner
-  // edge would be on the horizon): a clear error, no scene.
+  // Around a dihole, an extremal Kerr hole (its disk's inner edge would be
+  // on the horizon) and a charged one: a clear error, no scene.
   SceneSpec di;
   di.spacetime = Dihole(0.4, 0.4, 1.0);
   di.observer = StaticObserver::Params{{0, 0, 30, 0}};
   SceneSpec extremal;
   extremal.spacetime = Kerr(1, 1);
   extremal.observer = StaticObserver::Params{{0, 30, 80 * degree, 0}};
-  for (SceneSpec fs : {di, extremal}) {
+  SceneSpec charged = extremal;  // Kerr–Newman: Page & Thorne's closed form is Kerr's
+  charged.spacetime = Kerr(1, 0.5, 0.5);
+  for (SceneSpec fs : {di, extremal, charged}) {
     Disk::Params d{2, 20, 4, 12};
     d.temperature = 8000;
     fs.objects.push_back(d);
