@@ -39,11 +39,13 @@ inline constexpr double default_escape_radius = 1000.0;
 // A pixel of the paper's dihole shots spans ~2e-4 rad.
 inline constexpr double far_field_bending = 1e-6;
 
-// The extreme Reissner–Nordström holes are coordinate points: a ray is taken
-// as captured once U = 1 + Σ m_i/ρ_i exceeds this bound.  U > 11 forces
-// ρ_i < 0.2 m_i for the dominant hole, well inside its photon sphere (ρ ≈ m),
-// from where no ray comes back out.
-inline constexpr double dihole_capture_potential = 11.0;
+// The extreme Reissner–Nordström holes (the dihole, Majumdar–Papapetrou)
+// are coordinate points: a ray is taken as captured once
+// U = 1 + Σ m_i/ρ_i exceeds this bound.  U > 11 forces ρ_i < 0.1 N m_i for
+// the dominant of N holes, inside its photon sphere (ρ ≈ m) for N < 10,
+// from where no ray comes back out; holes far apart each have their own
+// capture sphere of radius ≈ m_i / 10.
+inline constexpr double extreme_hole_capture_potential = 11.0;
 
 // Kerr capture: inside the prograde equatorial photon orbit no ray (and no
 // timelike geodesic) has a radial turning point, so an ingoing one is lost.
