@@ -26,6 +26,8 @@ std::string default_text(const T& v) {
     return fmt::format("\"{}\"", v);
   else if constexpr (Choice<T>)
     return fmt::format("\"{}\"", choice_name(v));
+  else if constexpr (std::is_same_v<T, HoleList>)
+    return people_text(v);
   else
     return fmt::format("{:g}", static_cast<double>(v));
 }

@@ -23,6 +23,7 @@
 #include "core/color.hpp"
 #include "core/fields.hpp"
 #include "lua/table_reader.hpp"
+#include "spacetime/hole_list.hpp"
 #include "spacetime/spacetime_spec.hpp"
 #include "worldline/placement.hpp"
 
@@ -44,6 +45,31 @@ inline Palette read_palette(lua::TableReader& list) {
       colour[k - 1] = static_cast<float>(v);
     }
     c.finish();
+  }
+  list.finish();
+  return out;
+}
+
+// holes = {{mass = m, position = {x = .., y = .., z = ..}}, ...}: one to
+// HoleList::capacity holes (spacetime/hole_list.hpp); the spacetime checks
+// the values.
+inline HoleList read_hole_list(lua::TableReader& list) {
+  const std::size_t n = list.length();
+  if (n == 0)
+    throw lua::FieldError(fmt::format(
+        "{}: must list at least one hole {{{{mass = m, position = {{x = .., y = .., z = ..}}}}, ...}}", list.context()));
+  if (n > HoleList::capacity)
+    throw lua::FieldError(fmt::format("{}: at most {} holes, got {}", list.context(), HoleList::capacity, n));
+  HoleList out;
+  for (std::size_t i = 1; i <= n; ++i) {
+    auto h = list.table_at(i);
+    PointHole hole;
+    hole.mass = h.number("mass");
+    auto at = h.table("position");
+    hole.position = {at.number("x"), at.number("y"), at.number("z")};
+    at.finish();
+    h.finish();
+    out.add(hole);
   }
   list.finish();
   return out;
@@ -86,6 +112,9 @@ void read_fields(lua::TableReader& t, S& out, const Spacetime* st = nullptr) {
         v = *f.fallback;
       else
         throw lua::FieldError(fmt::format("{}: missing field '{}'", t.context(), f.name));
+    } else if constexpr (std::is_same_v<T, HoleList>) {
+      auto list = t.table(f.name);
+      v = read_hole_list(list);
     } else if constexpr (Choice<T>) {
       const std::string name = f.fallback ? t.string_or(f.name, std::string(choice_name(*f.fallback))) : t.string(f.name);
       const auto names = choice_names(T{});
@@ -98,7 +127,7 @@ void read_fields(lua::TableReader& t, S& out, const Spacetime* st = nullptr) {
       v = f.fallback ? t.number_or(f.name, *f.fallback) : t.number(f.name);
     } else {
       static_assert(std::is_integral_v<T>,
-                    "read_fields reads numbers, strings, palettes, choices and placements: teach it a new field type");
+                    "read_fields reads numbers, strings, palettes, hole lists, choices and placements: teach it a new field type");
       const std::int64_t i = f.fallback ? t.integer_or(f.name, static_cast<std::int64_t>(*f.fallback)) : t.integer(f.name);
       if (!in_range(static_cast<double>(i), f.lo, f.hi))
         throw lua::FieldError(fmt::format("{}: field '{}' must be {}{}{}, got {}", t.context(), f.name, integer_range_text(f.lo, f.hi),

@@ -7,6 +7,8 @@
 // A thin disk's matter moves so (objects/disk_physics.hpp), and an observer
 // may ride the circular orbits (observers/circular_orbit.hpp).
 
+#include <cmath>
+
 #include "core/tensor.hpp"
 #include "spacetime/dihole.hpp"
 #include "spacetime/kerr.hpp"
@@ -14,11 +16,14 @@
 namespace lc {
 
 // velocity(st, x): the matter's 4-velocity at the trace event x in the
-// plane; orbits: whether it is on circular orbits (somewhere).
+// plane; orbits: whether it is on circular orbits (somewhere).  Elsewhere
+// the matter is at rest in the trace chart: u = ∂_t / sqrt(-g_tt) (for a
+// chart whose ∂_t is timelike there, as a static spacetime's is outside
+// its horizons).
 template <class S>
 struct EquatorialFlow {
   static constexpr bool orbits = false;
-  static Vec4 velocity(const S&, const Vec4&) { return {1.0, 0.0, 0.0, 0.0}; }
+  static Vec4 velocity(const S& st, const Vec4& x) { return {1.0 / std::sqrt(-st.metric(x)[0][0]), 0.0, 0.0, 0.0}; }
 };
 
 // Kerr and Kerr–Newman: Keplerian orbits co-rotating with the hole outside

@@ -13,6 +13,7 @@
 #include "core/registry.hpp"
 #include "spacetime/dihole.hpp"
 #include "spacetime/kerr.hpp"
+#include "spacetime/majumdar_papapetrou.hpp"
 #include "spacetime/minkowski.hpp"
 #include "spacetime/spacetime_spec.hpp"
 
@@ -20,7 +21,7 @@ namespace lc {
 
 // Every spacetime, one line each: a registry of the same shape as the
 // others (core/registry.hpp), its kinds' variant the list.
-using SpacetimeRegistry = Registry<Minkowski, Kerr, Dihole>;
+using SpacetimeRegistry = Registry<Minkowski, Kerr, Dihole, MajumdarPapapetrou>;
 using SpacetimeList = SpacetimeRegistry::Kinds;
 
 // The variant itself, as a class so that spacetime/spacetime_spec.hpp can

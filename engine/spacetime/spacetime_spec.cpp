@@ -11,6 +11,15 @@
 
 namespace lc {
 
+namespace {
+
+// A parameter's value in describe(): a number as %a (exact) or %g, a list
+// of holes by its own text.
+std::string describe_text(double v, bool exact) { return exact ? fmt::format("{:a}", v) : fmt::format("{:g}", v); }
+std::string describe_text(const HoleList& v, bool exact) { return exact ? field_text(v, true) : people_text(v); }
+
+}  // namespace
+
 // The box's members, and for each spacetime how a box is made from it and
 // read back: one line per spacetime, as spacetime/spacetime.hpp lists them.
 // A spacetime missing here is a link error naming
@@ -19,6 +28,7 @@ template class SpecBox<SpacetimeKinds>;
 template struct SpecAccess<SpacetimeKinds, Minkowski>;
 template struct SpecAccess<SpacetimeKinds, Kerr>;
 template struct SpecAccess<SpacetimeKinds, Dihole>;
+template struct SpecAccess<SpacetimeKinds, MajumdarPapapetrou>;
 
 std::string_view spacetime_name(const Spacetime& s) {
   return std::visit([](const auto& st) { return std::decay_t<decltype(st)>::name; }, s.kinds());
@@ -71,9 +81,9 @@ std::string describe(const Spacetime& s, bool exact) {
         out += '(';
         bool first = true;
         for_each_field<P>([&](const auto& f) {
-          const double v = p.*(f.member);
+          const auto& v = p.*(f.member);
           if (left_out(f, v)) return;
-          out += fmt::format("{}{}={}", first ? "" : ", ", f.name, exact ? fmt::format("{:a}", v) : fmt::format("{:g}", v));
+          out += fmt::format("{}{}={}", first ? "" : ", ", f.name, describe_text(v, exact));
           first = false;
         });
         return out + ')';
