@@ -30,6 +30,17 @@ grep -q "stop reason: reached (coordinate time 97.70" rn.log || fail "rn orbit: 
 awk -F, 'NR > 2 { if ($3 < 5.9999999 || $3 > 6.0000001) { print "r off: " $3; exit 1 } last = $5 }
          END { if (last < 6.2831 || last > 6.2833) { print "final phi " last; exit 1 } }' rn.csv || fail "rn orbit: off"
 
+# Three holes in a triangle (Majumdar–Papapetrou): the body on the axis is
+# back at z = 4 after two periods of the energy integral (2 T = 183.8393,
+# proper 128.2582) and at z = -4 half a period in (row 503: t = T/2).
+"$LIGHTCONE" geodesic "$SRC/shots/geodesics/triangle_swing.lua" -o triangle.csv 2>triangle.log
+grep -q "stop reason: reached (coordinate time 183.839" triangle.log || fail "triangle: $(cat triangle.log)"
+[ "$(head -1 triangle.csv)" = "# chart: cartesian (t, x, y, z; majumdar_papapetrou)" ] || fail "triangle: chart line $(head -1 triangle.csv)"
+awk -F, 'NR == 2003 { if ($1 < 128.2581 || $1 > 128.2583 || $5 < 3.9999 || $5 > 4.0001) { print "end row " $0; exit 1 } }
+         NR == 503  { if ($5 > -3.9999 || $5 < -4.0001) { print "half row " $0; exit 1 } }
+         NR > 2 { if ($3 > 1e-9 || $3 < -1e-9 || $4 > 1e-9 || $4 < -1e-9) { print "off the axis " $0; exit 1 } }' triangle.csv \
+  || fail "triangle: swing rows off"
+
 "$LIGHTCONE" geodesic "$SRC/shots/geodesics/kerr_ray_bundle.lua" -o bundle.csv 2>bundle.log
 [ "$(sed -n 2p bundle.csv | cut -d, -f1)" = "ray" ] || fail "bundle: no ray column"
 [ "$(cut -d, -f1 bundle.csv | sort -u | grep -c '^[0-9]')" -eq 21 ] || fail "bundle: want 21 rays"
