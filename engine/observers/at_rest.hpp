@@ -36,7 +36,7 @@ struct AtRestParams {
   // ... for the reference (lightcone fields) ...
   static constexpr std::string_view extra_doc =
       "Its fields are its position: `r, theta, phi` (Kerr: Boyer–Lindquist, degrees) or `x, y, z` (dihole, "
-      "Minkowski), all three required, and `t`, the scene time (default 0; the scene's `time` replaces it); see "
+      "Majumdar–Papapetrou, Minkowski), all three required, and `t`, the scene time (default 0; the scene's `time` replaces it); see "
       "Positions.";
   // ... as JSON ...
   std::string extra_json(bool polar) const { return ", \"position\": " + json_position(position, polar); }
