@@ -54,6 +54,13 @@ inline constexpr double extreme_hole_capture_potential = 11.0;
 // Kerr–Schild time (where t diverges logarithmically).
 inline constexpr double kerr_capture_fraction = 0.5;
 
+// Kottler's outer stop rule (spacetime/kottler.hpp): a ray moving outwards
+// ends where F = -g_tt of the static chart falls to this, just below the
+// cosmological horizon (a static observer there is redshifted 30-fold),
+// and is carried straight to it.  Closer, the integration follows the
+// chart's time diverging (logarithmically) for no change in direction.
+inline constexpr double kottler_stop_lapse2 = 1e-3;
+
 // Default step-control tolerance (relative and absolute) of the production
 // Dormand–Prince integrator, chosen by measured image error
 // (docs/performance.md, change 6): at 5e-8 no pixel of the benchmark shots

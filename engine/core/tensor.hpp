@@ -12,6 +12,10 @@ namespace lc {
 using Vec4 = std::array<double, 4>;
 using Vec3 = std::array<double, 3>;
 using Mat4 = std::array<std::array<double, 4>, 4>;
+
+// η, the flat metric in Cartesian coordinates (the background of the
+// Kerr–Schild forms).
+inline constexpr Mat4 minkowski_metric = {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
 using Mat4Derivs = std::array<Mat4, 4>;
 
 // Contraction g_{mu nu} a^mu b^nu.

@@ -134,7 +134,8 @@ class HamiltonianRay {
     out.kind = HitKind::sky;
     out.spacetime_end = res.end;
     sky_direction(sc_.spacetime, x, {res.y[4], res.y[5], res.y[6], res.y[7]}, out.sky_theta, out.sky_phi);
-    out.g = 1.0 / res.y[4];  // the source at rest far away: p.u = p_t
+    // The source at rest at that end: p.u = p_t / its lapse there.
+    out.g = sc_.spacetime.sky_source_lapse(res.end) / res.y[4];
     // ... where it is its own ZAMO: g_grav = D(u_ref,obs) g.
     out.g_gravity = observer_reference() * out.g;
   }

@@ -96,6 +96,9 @@ struct CartesianInfinity {
     const bool outward = y(1) * dy(1) + y(2) * dy(2) + y(3) * dy(3) > 0.0;
     return {rho2 > radii.free2 && outward, rho2 > radii.escape2 && outward, 0};
   }
+  // A source at rest far away is at rest in the trace chart, where
+  // g_tt -> -1: the sky's light is measured against it as it is.
+  static double sky_source_lapse(std::size_t) { return 1.0; }
 };
 
 }  // namespace lc

@@ -47,8 +47,6 @@ KerrSchildFields fields(double M, double a, double Q2, double lt, double r, cons
   return F;
 }
 
-const Mat4 minkowski_metric = {{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
-
 }  // namespace
 
 Kerr::Kerr(double mass, double spin, double charge, KerrSchildSense sense)

@@ -25,6 +25,11 @@
 //   flight(y, dy, radii)      which far end a ray moving on has reached, in
 //                             its own chart (CartesianInfinity below: the one
 //                             infinity of a Cartesian-like chart)
+//   sky_source_lapse(end)     √(-g_tt) of the source at rest, in the trace
+//                             chart, that a far end's sky light is measured
+//                             against (its hit.g is this over p_t): 1 where
+//                             g_tt -> -1 at infinity (CartesianInfinity);
+//                             Kottler's, with no such region, its own
 //   captured(x), capture_margin(x), inside_horizon(x)   where rays are captured
 //                             by a horizon (none are: NoHorizon below)
 //   why_no_observer(x)        why no observer may stand at the trace event x,
@@ -45,8 +50,9 @@
 //   polar_basis               scene <-> trace coordinates
 //   for_tracing(direction)    itself in the chart regular where curves traced
 //                             that way go
-//   (the trace chart's t must be the time of static observers far away,
-//   so that a ray's p_t is its energy there: the sky's hit.g reads it)
+//   (the trace chart's t must be a static observer's time up to the lapse
+//   sky_source_lapse gives, so that a ray's p_t is its energy there: the
+//   sky's hit.g reads it)
 //   examples()                parameter sets with the radii between which
 //                             the generic self-test may sample events
 //   other_names               optional, static: names a user may try for
@@ -133,6 +139,7 @@ concept SpacetimeEnds = requires(const S& s, const Vec4& x, const Vec3& d, const
   { s.capture_margin(x) } -> std::same_as<double>;
   { s.inside_horizon(x) } -> std::same_as<bool>;
   { s.flight(c, c, radii) } -> std::same_as<Flight>;
+  { s.sky_source_lapse(std::size_t{}) } -> std::same_as<double>;
   { s.why_no_observer(x) } -> std::same_as<std::string_view>;
   { s.photon_reach() } -> std::same_as<double>;
   { s.far_field_radius() } -> std::same_as<double>;

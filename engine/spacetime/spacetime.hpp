@@ -13,6 +13,7 @@
 #include "core/registry.hpp"
 #include "spacetime/dihole.hpp"
 #include "spacetime/kerr.hpp"
+#include "spacetime/kottler.hpp"
 #include "spacetime/majumdar_papapetrou.hpp"
 #include "spacetime/minkowski.hpp"
 #include "spacetime/spacetime_spec.hpp"
@@ -21,7 +22,7 @@ namespace lc {
 
 // Every spacetime, one line each: a registry of the same shape as the
 // others (core/registry.hpp), its kinds' variant the list.
-using SpacetimeRegistry = Registry<Minkowski, Kerr, Dihole, MajumdarPapapetrou>;
+using SpacetimeRegistry = Registry<Minkowski, Kerr, Dihole, MajumdarPapapetrou, Kottler>;
 using SpacetimeList = SpacetimeRegistry::Kinds;
 
 // The variant itself, as a class so that spacetime/spacetime_spec.hpp can

@@ -29,6 +29,7 @@ template struct SpecAccess<SpacetimeKinds, Minkowski>;
 template struct SpecAccess<SpacetimeKinds, Kerr>;
 template struct SpecAccess<SpacetimeKinds, Dihole>;
 template struct SpecAccess<SpacetimeKinds, MajumdarPapapetrou>;
+template struct SpecAccess<SpacetimeKinds, Kottler>;
 
 std::string_view spacetime_name(const Spacetime& s) {
   return std::visit([](const auto& st) { return std::decay_t<decltype(st)>::name; }, s.kinds());

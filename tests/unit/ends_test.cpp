@@ -62,6 +62,9 @@ class Wormhole : public CartesianScene, public HamiltonianFromRhs<Wormhole>, pub
     const bool away = l > 0.0 ? x_dx > 0.0 : x_dx < 0.0;
     return {l2 > radii.free2 && away, l2 > radii.escape2 && away, static_cast<std::uint8_t>(l > 0.0 ? 0 : 1)};
   }
+  // Both infinities are asymptotically flat: their sky's source at rest has
+  // lapse 1.
+  double sky_source_lapse(std::size_t) const { return 1.0; }
   // Beyond the throat the directions of the other side's sky are those of
   // the inverted chart, where the ray moves outwards: d reflected in the
   // plane normal to x (the inversion's differential, up to scale).
@@ -151,16 +154,21 @@ TEST(Ends, CartesianInfinityIsReachedBeyondTheEscapeRadiusMovingOut) {
   EXPECT_FALSE(at(far, in_x).escaped);  // moving in (x . dx = 0 here: not out)
 }
 
-// Every registered spacetime names its ends: infinity first, then its
-// horizons, whose index the hit records of captured rays carry.
-TEST(Ends, RegisteredSpacetimesListInfinityFirst) {
+// Every registered spacetime names its ends: the far end where the
+// scene's sky is first (infinity, or a cosmological horizon where there is
+// no infinity to reach), each end's name its kind's, then its horizons,
+// whose index the hit records of captured rays carry.
+TEST(Ends, RegisteredSpacetimesListTheirSkysEndFirst) {
   SpacetimeRegistry::for_each([&](auto* kind) {
     using S = std::remove_pointer_t<decltype(kind)>;
-    EXPECT_EQ(S::ends[0].kind, EndKind::infinity) << S::name;
-    EXPECT_EQ(S::ends[0].name, "infinity") << S::name;
+    EXPECT_TRUE(is_far(S::ends[0].kind)) << S::name;
+    for (const SpacetimeEnd& e : S::ends)
+      if (e.kind != EndKind::infinity) EXPECT_EQ(e.name, to_string(e.kind)) << S::name;
   });
   EXPECT_EQ(end_index<Kerr>(EndKind::horizon), 1u);
   EXPECT_EQ(end_index<Dihole>(EndKind::horizon), 1u);
+  EXPECT_EQ(end_index<Kottler>(EndKind::horizon), 1u);
+  EXPECT_EQ(end_index<Kottler>(EndKind::cosmological_horizon), 0u);
   EXPECT_EQ(end_index<Minkowski>(EndKind::horizon), Minkowski::ends.size());
   EXPECT_EQ(to_string(EndKind::cosmological_horizon), "cosmological horizon");
 }

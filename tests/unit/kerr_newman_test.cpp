@@ -20,6 +20,7 @@
 #include "render/accuracy.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
+#include "shadow_check.hpp"
 #include "spacetime/kerr.hpp"
 
 namespace lc {
@@ -140,24 +141,6 @@ Scene scene_on(const SceneSpec& fs, int W, int H, KerrChart chart, ShotResources
   return build_scene(fs, W, H, res, o);
 }
 
-// The angles (radians, signed: left < 0) of the shadow's two edges along the
-// centre row of a 1-row pinhole image W wide of horizontal field `fov`
-// degrees, found by bisecting between the centre (horizon) and either end
-// (sky) to ~1e-9 of the field.
-std::pair<double, double> shadow_edges(const Scene& scene, int W, double fov) {
-  auto edge = [&](double sky_end) {
-    double in = W / 2.0, out = sky_end;
-    EXPECT_EQ(trace_image_point(scene, in, 0.5).hit.kind, HitKind::horizon);
-    EXPECT_EQ(trace_image_point(scene, out, 0.5).hit.kind, HitKind::sky);
-    for (int it = 0; it < 40; ++it) {
-      const double mid = 0.5 * (in + out);
-      (trace_image_point(scene, mid, 0.5).hit.kind == HitKind::horizon ? in : out) = mid;
-    }
-    return std::atan((2 * in / W - 1) * std::tan(0.5 * fov * degree));
-  };
-  return {edge(0.0), edge(W)};
-}
-
 constexpr KerrChart both_charts[] = {KerrChart::boyer_lindquist_mino, KerrChart::kerr_schild};
 
 TEST(KerrNewman, ReissnerNordstromShadowOfAStaticObserver) {
@@ -173,7 +156,7 @@ TEST(KerrNewman, ReissnerNordstromShadowOfAStaticObserver) {
     const double expected = std::asin(rph * std::sqrt(f(ro)) / (ro * std::sqrt(f(rph))));
     for (auto chart : both_charts) {
       ShotResources res;
-      const auto [left, right] = shadow_edges(scene_on(charged_scene(0.0, q, ro, 90, fov, false), 200, 1, chart, res), 200, fov);
+      const auto [left, right] = test::shadow_edges(scene_on(charged_scene(0.0, q, ro, 90, fov, false), 200, 1, chart, res), 200, fov);
       EXPECT_NEAR(-left, expected, 4e-6) << "Q " << q;
       EXPECT_NEAR(right, expected, 4e-6) << "Q " << q;
     }
@@ -219,7 +202,7 @@ TEST(KerrNewman, ShadowEdgesOfADistantObserverAreTheCriticalCurves) {
     const double scale = ro / std::sqrt(1 - 2 / ro + q * q / (ro * ro));
     for (auto chart : both_charts) {
       ShotResources res;
-      const auto [left, right] = shadow_edges(scene_on(charged_scene(a, q, ro, th, fov, false), 400, 1, chart, res), 400, fov);
+      const auto [left, right] = test::shadow_edges(scene_on(charged_scene(a, q, ro, th, fov, false), 400, 1, chart, res), 400, fov);
       std::vector<double> seen = {std::sin(-left) * scale, std::sin(right) * scale};
       std::sort(seen.begin(), seen.end());
       EXPECT_NEAR(seen[0], expected[0], 3e-3) << "a " << a << " Q " << q << " theta " << th;

@@ -1,5 +1,8 @@
 #pragma once
-// A Schwarzschild shadow seen through any camera, for the cameras' tests:
+// Shadows for the tests.  shadow_edges: the two edges of a shadow along a
+// one-row pinhole image, by bisection (the spacetimes' tests compare them
+// with closed forms).  check_shadow: a Schwarzschild shadow seen through
+// any camera, for the cameras' tests:
 // a static observer at r = 30 M (M = 1) sees the hole's shadow as a disc of
 // angular radius 9.6327 degrees about the direction to the hole (sin =
 // 3 sqrt(3) M / r sqrt(1 - 2M/r), Synge 1966), forward's default (-e_1).
@@ -17,11 +20,13 @@
 #include <cmath>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/constants.hpp"
 #include "core/hit_kind.hpp"
 #include "render/pixel_rows.hpp"
+#include "render/renderer.hpp"
 #include "render/scene_builder.hpp"
 #include "spacetime/kerr.hpp"
 
@@ -84,6 +89,24 @@ ShadowCheck check_shadow(const CameraParams& camera, int width, int height) {
                           std::to_string(a / degree) + " degrees from the hole is " + (seen ? "" : "not ") + "horizon";
     }
   return out;
+}
+
+// The angles (radians, signed: left < 0) of the shadow's two edges along the
+// centre row of a 1-row pinhole image W wide of horizontal field `fov`
+// degrees, found by bisecting between the centre (horizon) and either end
+// (sky) to ~1e-9 of the field.
+inline std::pair<double, double> shadow_edges(const Scene& scene, int W, double fov) {
+  auto edge = [&](double sky_end) {
+    double in = W / 2.0, out = sky_end;
+    EXPECT_EQ(trace_image_point(scene, in, 0.5).hit.kind, HitKind::horizon);
+    EXPECT_EQ(trace_image_point(scene, out, 0.5).hit.kind, HitKind::sky);
+    for (int it = 0; it < 40; ++it) {
+      const double mid = 0.5 * (in + out);
+      (trace_image_point(scene, mid, 0.5).hit.kind == HitKind::horizon ? in : out) = mid;
+    }
+    return std::atan((2 * in / W - 1) * std::tan(0.5 * fov * degree));
+  };
+  return {edge(0.0), edge(W)};
 }
 
 }  // namespace lc::test
