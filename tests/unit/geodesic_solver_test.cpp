@@ -69,21 +69,14 @@ TEST(GeodesicSolver, DiholeOscillationPeriod) {
   ASSERT_EQ(path.reason, StopReason::reached);
   ASSERT_EQ(path.samples.size(), 11201u);
   // The return to x = 5 is where u^x turns from positive to negative after
-  // the swing through x = -5; interpolate the zero linearly between rows.
-  double T = -1, tau = -1, xmin = 0;
-  for (std::size_t i = 1; i < path.samples.size(); ++i) {
-    const auto& a = path.samples[i - 1];
-    const auto& b = path.samples[i];
+  // the swing through x = -5.
+  double xmin = 0;
+  for (const GeodesicSample& b : path.samples) {
     xmin = std::min(xmin, b.x[1]);
     EXPECT_NEAR(b.x[2], 0.0, 1e-12);
     EXPECT_NEAR(b.x[3], 0.0, 1e-12);
-    if (a.x[0] > 50 && a.u[1] > 0 && b.u[1] <= 0) {
-      const double f = a.u[1] / (a.u[1] - b.u[1]);
-      T = a.x[0] + f * (b.x[0] - a.x[0]);
-      tau = a.lambda + f * (b.lambda - a.lambda);
-      break;
-    }
   }
+  const auto [T, tau] = test::turn_after(path, 1, 50.0);
   EXPECT_NEAR(xmin, -5.0, 1e-6);
   EXPECT_NEAR(T, 110.594, 1e-3);
   EXPECT_NEAR(tau, 78.753, 1e-3);

@@ -100,17 +100,7 @@ TEST(MajumdarPapapetrou, TwoHolesOnTheAxisSwingTheDiholesSphere) {
   pb.samples = 11201;
   const GeodesicPath path = solve_geodesic(pb);
   ASSERT_EQ(path.reason, StopReason::reached);
-  double T = -1, tau = -1;
-  for (std::size_t i = 1; i < path.samples.size(); ++i) {
-    const auto& a = path.samples[i - 1];
-    const auto& b = path.samples[i];
-    if (a.x[0] > 50 && a.u[1] > 0 && b.u[1] <= 0) {
-      const double f = a.u[1] / (a.u[1] - b.u[1]);
-      T = a.x[0] + f * (b.x[0] - a.x[0]);
-      tau = a.lambda + f * (b.lambda - a.lambda);
-      break;
-    }
-  }
+  const auto [T, tau] = test::turn_after(path, 1, 50.0);
   EXPECT_NEAR(T, 110.594, 1e-3);
   EXPECT_NEAR(tau, 78.753, 1e-3);
 }
@@ -211,20 +201,13 @@ TEST(MajumdarPapapetrou, ABodyOnTheTrianglesAxisSwingsWithTheEnergyIntegralsPeri
   pb.samples = static_cast<int>(pb.stop_value / 0.005) + 1;
   const GeodesicPath path = solve_geodesic(pb);
   ASSERT_EQ(path.reason, StopReason::reached);
-  double found_T = -1, found_tau = -1, zmin = z0;
-  for (std::size_t i = 1; i < path.samples.size(); ++i) {
-    const auto& a = path.samples[i - 1];
-    const auto& b = path.samples[i];
+  double zmin = z0;
+  for (const GeodesicSample& b : path.samples) {
     zmin = std::min(zmin, b.x[3]);
     EXPECT_NEAR(b.x[1], 0.0, 1e-12);
     EXPECT_NEAR(b.x[2], 0.0, 1e-12);
-    if (a.x[0] > 0.75 * T && a.u[3] > 0 && b.u[3] <= 0) {
-      const double f = a.u[3] / (a.u[3] - b.u[3]);
-      found_T = a.x[0] + f * (b.x[0] - a.x[0]);
-      found_tau = a.lambda + f * (b.lambda - a.lambda);
-      break;
-    }
   }
+  const auto [found_T, found_tau] = test::turn_after(path, 3, 0.75 * T);
   EXPECT_NEAR(zmin, -z0, 1e-7);
   EXPECT_NEAR(found_T, T, 1e-6 * T);
   EXPECT_NEAR(found_tau, tau, 1e-6 * tau);

@@ -1,6 +1,7 @@
 #pragma once
 // Scene pieces several tests build: a checkered sphere on a free-fall
-// worldline; the dihole oscillation that worldlines are checked against.
+// worldline; the dihole oscillation that worldlines are checked against,
+// and where a sampled swing turns back.
 
 #include "geodesic/geodesic_solver.hpp"
 #include "objects/sphere.hpp"
@@ -40,6 +41,24 @@ inline GeodesicProblem dihole_oscillation_problem(StopParameter stop, double sto
   pb.stop_parameter = stop;
   pb.stop_value = stop_value;
   return pb;
+}
+
+// Where a sampled swing turns back: the coordinate and proper time at
+// which u^axis first turns from positive to non-positive after coordinate
+// time `after`, linear between the samples (-1 where it never does).
+struct Turn {
+  double t = -1.0, tau = -1.0;
+};
+inline Turn turn_after(const GeodesicPath& path, int axis, double after) {
+  for (std::size_t i = 1; i < path.samples.size(); ++i) {
+    const auto& a = path.samples[i - 1];
+    const auto& b = path.samples[i];
+    if (a.x[0] > after && a.u[axis] > 0 && b.u[axis] <= 0) {
+      const double f = a.u[axis] / (a.u[axis] - b.u[axis]);
+      return {a.x[0] + f * (b.x[0] - a.x[0]), a.lambda + f * (b.lambda - a.lambda)};
+    }
+  }
+  return {};
 }
 
 }  // namespace lc::test
