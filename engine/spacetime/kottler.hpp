@@ -40,8 +40,10 @@ class Kottler : public HamiltonianFromRhs<Kottler> {
     double mass = 0.0, lambda = 0.0;
     static constexpr auto fields = std::tuple{
         field("mass", &Params::mass, std::optional<double>{}, at_least(0.0), std::nullopt, "the hole's mass M"),
-        field("lambda", &Params::lambda, std::optional<double>{}, above(0.0), std::nullopt,
-              "the cosmological constant Λ, 9 Λ M^2 < 1 (a static region between the horizons); Λ = 0 is "
+        // No declared range: the constructor's refusal of Λ <= 0 says what
+        // Λ = 0 is written as.
+        field("lambda", &Params::lambda, std::optional<double>{}, std::nullopt, std::nullopt,
+              "the cosmological constant Λ > 0, 9 Λ M^2 < 1 (a static region between the horizons); Λ = 0 is "
               "lc.kerr{mass = M}",
               "M^-2"),
     };
