@@ -17,6 +17,9 @@ e2e_begin() {
   # installs its module for it (a python3 earlier on PATH, e.g. pyenv's, would not see it).
   PY=python3
   [ -x /usr/bin/python3 ] && PY=/usr/bin/python3
+  # A command that stops the script under `set -e` says which, where: else
+  # ctest shows a failed test with no output at all.
+  trap 'e2e_status=$?; echo "FAIL: stopped at line $LINENO of ${0##*/}: \`$BASH_COMMAND\` exited with status $e2e_status" >&2' ERR
   return 0
 }
 
