@@ -51,6 +51,19 @@ double body_reach(const B& body) {
   return r;
 }
 
+// How near the origin (coordinates) anything of the body may come: the
+// distance from the origin to the box its centre never leaves, less the
+// tube's radius; 0 where that box, grown, holds the origin.
+template <BoundedBody B>
+double body_nearest(const B& body) {
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double out = std::max({body.life_lo[k], -body.life_hi[k], 0.0});
+    d2 += out * out;
+  }
+  return std::max(0.0, std::sqrt(d2) - body.tube_radius());
+}
+
 // How near a step may come to a body, by body_near_step's boxes.
 enum class BodyReach {
   never,    // clear of everywhere the centre ever is: the body's motion cannot matter

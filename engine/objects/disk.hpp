@@ -51,9 +51,20 @@ class Disk {
   // A checkered disk.
   explicit Disk(const Params& p) : p_(p) {}
 
-  // How far from the origin (coordinates) it reaches; the chart's r and the
-  // coordinate radius differ by up to ~M.
-  double reach(double asymptotic_mass) const { return p_.outer + std::abs(asymptotic_mass); }
+  // How far it reaches, in st's flight measure (SpacetimeEnds::flight_reach),
+  // from the trace-chart radii of its edges in the plane: at most the outer
+  // edge's, or outer + |M| (Kerr–Schild's radius exceeds Boyer–Lindquist's
+  // by up to ~M), whichever is larger.  Assumes the trace chart's radius
+  // grows with the scene's r in the plane, as every chart's here does.
+  template <class S>
+  double reach(const S& st) const {
+    const auto chart_radius = [&](double r) {
+      const Vec4 x = st.trace_from_scene(S::chart == SceneChart::polar ? Vec4{0.0, r, 0.5 * pi, 0.0} : Vec4{0.0, r, 0.0, 0.0});
+      return std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    };
+    const double hi = std::max(p_.outer + std::abs(st.asymptotic_mass()), chart_radius(p_.outer));
+    return st.flight_reach(std::min(chart_radius(p_.inner), hi), hi);
+  }
   bool covers(double r) const { return r >= p_.inner && r <= p_.outer; }
 
   // Colour at the chart's (r, phi), r in [inner, outer], phi in [0, 2 pi),

@@ -29,8 +29,8 @@ namespace lc {
 // Boyer–Lindquist–Mino fast path handles it (render/kerr_fast_path_ray.hpp does, by
 // kind; else a scene with one takes the general path), Params with declared
 // fields, a constructor from them (with the shot's resources and the
-// frame's observer event), how far from the origin it reaches (for the
-// free-flight radius), the first hit within a step (before the earliest
+// frame's observer event), how far it reaches in the spacetime's flight
+// measure (for the free-flight radius: SpacetimeEnds::flight_reach), the first hit within a step (before the earliest
 // found so far; objects/step_query.hpp), the 4-velocity of its matter where
 // a ray meets it (trace chart; for hit.g), where on it a ray that ended at
 // a trace event met it (surface_at: a SurfacePoint in its own coordinates,
@@ -44,7 +44,7 @@ concept ObjectKind = requires(const O& o, const typename O::Params& p, const S& 
   requires std::same_as<std::remove_cv_t<decltype(O::in_fast_path)>, bool>;
   requires HasFields<typename O::Params>;
   O(p, st, res, x);
-  { o.reach(1.0) } -> std::same_as<double>;
+  { o.reach(st) } -> std::same_as<double>;
   { o.first_hit(st, t, index) } -> std::same_as<std::optional<double>>;
   { o.surface_at(st, y) } -> std::same_as<SurfacePoint>;
   { o.color_at(SurfacePoint{}, SeenShift{}) } -> std::same_as<Color>;

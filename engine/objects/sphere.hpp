@@ -78,8 +78,13 @@ class Sphere : public SphereBody {
     if (worldline) check_worldline_lasts(observer);
   }
 
-  // How far from the origin (coordinates) anything of it ever is.
-  double reach(double) const { return body_reach(*this); }
+  // How far anything of it ever is, in st's flight measure
+  // (SpacetimeEnds::flight_reach): from the shell of trace-chart radii its
+  // boxes span.
+  template <class S>
+  double reach(const S& st) const {
+    return st.flight_reach(body_nearest(*this), body_reach(*this));
+  }
 
   // The first entry into it within the test's step, if any and before the
   // earliest hit found so far.  A step that comes near where its centre

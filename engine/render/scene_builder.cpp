@@ -37,13 +37,14 @@ static_assert(every_kind<SpacetimeList>([]<class S>() {
 
 namespace {
 
-// A coordinate radius beyond which a ray moving outwards meets nothing more:
-// twice the largest of the objects' reach and the spacetime's photon
-// region.  The factor 2 keeps the relaxed integration well clear.
+// A radius, in the spacetime's flight measure (spacetime/ends.hpp), beyond
+// which a ray moving outwards meets nothing more: twice the largest of the
+// objects' reach and the spacetime's photon region.  The factor 2 keeps
+// the relaxed integration well clear.
 template <class S>
 double free_radius(const SceneIn<S>& sc) {
   double reach = sc.spacetime.photon_reach();
-  for_each_object(sc.objects->lists, [&](const auto& o, std::size_t) { reach = std::max(reach, o.reach(sc.spacetime.asymptotic_mass())); });
+  for_each_object(sc.objects->lists, [&](const auto& o, std::size_t) { reach = std::max(reach, o.reach(sc.spacetime)); });
   return 2.0 * std::max(reach, 1.0);
 }
 

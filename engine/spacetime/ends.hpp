@@ -78,7 +78,11 @@ struct StateComponents {
 
 // The radii a scene gives the far-end rule, squared, in the spacetime's
 // own radial measure (RayOptions::free_radius and escape_radius): where a
-// ray meets nothing more and where it counts as arrived.
+// ray meets nothing more and where it counts as arrived.  The measure is
+// each spacetime's (the trace chart's Cartesian radius for
+// CartesianInfinity, the proper distance |l| from a wormhole's throat):
+// what reaches how far in it — objects, photon orbits — is asked of the
+// spacetime (S::flight_reach), never compared with a chart radius by hand.
 struct FlightRadii {
   double free2 = 1e300, escape2 = 1e300;
 };
@@ -99,6 +103,9 @@ struct CartesianInfinity {
   // A source at rest far away is at rest in the trace chart, where
   // g_tt -> -1: the sky's light is measured against it as it is.
   static double sky_source_lapse(std::size_t) { return 1.0; }
+  // The measure is the Cartesian radius itself: over the shell
+  // lo <= |x| <= hi its largest value is hi.
+  static double flight_reach(double, double hi) { return hi; }
 };
 
 }  // namespace lc

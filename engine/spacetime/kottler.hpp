@@ -99,6 +99,8 @@ class Kottler : public HamiltonianFromRhs<Kottler> {
   // radius, the one static observer in free fall: √F there,
   // √(1 - (9 Λ M^2)^(1/3)) (1 for de Sitter, M = 0, at its centre).
   double sky_source_lapse(std::size_t) const { return sky_lapse_; }
+  // flight()'s measure is the Cartesian radius, as CartesianInfinity's.
+  static double flight_reach(double, double hi) { return hi; }
 
   bool captured(const Vec4& x) const { return M_ > 0.0 && radius(x) < r_capture_; }
   double capture_margin(const Vec4& x) const { return M_ > 0.0 ? radius(x) - r_capture_ : 1.0; }

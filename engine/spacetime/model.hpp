@@ -30,16 +30,22 @@
 //                             against (its hit.g is this over p_t): 1 where
 //                             g_tt -> -1 at infinity (CartesianInfinity);
 //                             Kottler's, with no such region, its own
+//   flight_reach(lo, hi)      the largest value of flight()'s radial
+//                             measure over the trace chart's shell lo <= |x|
+//                             <= hi (an object's reach, objects/objects.hpp):
+//                             hi for CartesianInfinity; a wormhole's |l|
+//                             grows without bound towards x = 0
 //   captured(x), capture_margin(x), inside_horizon(x)   where rays are captured
 //                             by a horizon (none are: NoHorizon below)
 //   why_no_observer(x)        why no observer may stand at the trace event x,
 //                             empty where one may (ObserversOutsideHorizons
 //                             below: anywhere outside a horizon)
 //   asymptotic_mass()         the mass seen from far away
-//   photon_reach()            a coordinate radius within which all of its
-//                             photon orbits lie (rays beyond it, moving out,
-//                             never turn back)
-//   far_field_radius()        where its far field is known well enough
+//   photon_reach()            a radius, in flight()'s measure, within which
+//                             all of its photon orbits lie (rays beyond it,
+//                             moving out, never turn back)
+//   far_field_radius()        where (flight()'s measure) its far field is
+//                             known well enough
 //                             (far_field_bending) for the escape direction
 //                             to be computed instead of integrated; infinity
 //                             where it is not
@@ -140,6 +146,7 @@ concept SpacetimeEnds = requires(const S& s, const Vec4& x, const Vec3& d, const
   { s.inside_horizon(x) } -> std::same_as<bool>;
   { s.flight(c, c, radii) } -> std::same_as<Flight>;
   { s.sky_source_lapse(std::size_t{}) } -> std::same_as<double>;
+  { s.flight_reach(1.0, 2.0) } -> std::same_as<double>;
   { s.why_no_observer(x) } -> std::same_as<std::string_view>;
   { s.photon_reach() } -> std::same_as<double>;
   { s.far_field_radius() } -> std::same_as<double>;

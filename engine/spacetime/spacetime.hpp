@@ -12,6 +12,8 @@
 
 #include "core/registry.hpp"
 #include "spacetime/dihole.hpp"
+#include "spacetime/ellis_wormhole.hpp"
+#include "spacetime/interstellar_wormhole.hpp"
 #include "spacetime/kerr.hpp"
 #include "spacetime/kottler.hpp"
 #include "spacetime/majumdar_papapetrou.hpp"
@@ -22,7 +24,8 @@ namespace lc {
 
 // Every spacetime, one line each: a registry of the same shape as the
 // others (core/registry.hpp), its kinds' variant the list.
-using SpacetimeRegistry = Registry<Minkowski, Kerr, Dihole, MajumdarPapapetrou, Kottler>;
+using SpacetimeRegistry = Registry<Minkowski, Kerr, Dihole, MajumdarPapapetrou, Kottler, EllisWormhole,
+                                   InterstellarWormhole>;
 using SpacetimeList = SpacetimeRegistry::Kinds;
 
 // The variant itself, as a class so that spacetime/spacetime_spec.hpp can

@@ -30,6 +30,8 @@ template struct SpecAccess<SpacetimeKinds, Kerr>;
 template struct SpecAccess<SpacetimeKinds, Dihole>;
 template struct SpecAccess<SpacetimeKinds, MajumdarPapapetrou>;
 template struct SpecAccess<SpacetimeKinds, Kottler>;
+template struct SpecAccess<SpacetimeKinds, EllisWormhole>;
+template struct SpecAccess<SpacetimeKinds, InterstellarWormhole>;
 
 std::string_view spacetime_name(const Spacetime& s) {
   return std::visit([](const auto& st) { return std::decay_t<decltype(st)>::name; }, s.kinds());

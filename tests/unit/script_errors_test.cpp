@@ -101,8 +101,13 @@ TEST(ScriptErrors, UnknownNameSuggestsTheNearestOne) {
             std::string::npos);
   EXPECT_NE(error("local st = lc.schwarzschild{mass = 1}").find("it is written lc.kerr{mass = M}"), std::string::npos);
   const std::string wormhole = error("local st = lc.wormhole{throat = 1}");
-  EXPECT_NE(wormhole.find(":2: lc.wormhole is not a lightcone constructor or function; lc has "), std::string::npos)
+  EXPECT_NE(wormhole.find(":2: lc.wormhole is no constructor of its own: it is written lc.ellis_wormhole{throat = b} "
+                          "or lc.interstellar_wormhole{"),
+            std::string::npos)
       << wormhole;
+  const std::string unknown = error("local st = lc.warp_drive{speed = 2}");
+  EXPECT_NE(unknown.find(":2: lc.warp_drive is not a lightcone constructor or function; lc has "), std::string::npos)
+      << unknown;
   EXPECT_NE(error("local s = lc.sky_chekcer{}").find("(did you mean lc.sky_checker?)"), std::string::npos);
   EXPECT_NE(error("local c = lc.camrea{}").find("(did you mean lc.camera?)"), std::string::npos);
   EXPECT_NE(error("local x = lc[1]").find(":2: lc[1] is not a lightcone constructor or function"), std::string::npos);
