@@ -35,7 +35,7 @@ struct AtRestParams {
   static constexpr std::array<std::string_view, 7> extra_fields = {"t", "r", "theta", "phi", "x", "y", "z"};
   // ... for the reference (lightcone fields) ...
   static constexpr std::string_view extra_doc =
-      "Its fields are its position: `r, theta, phi` (Kerr: Boyer–Lindquist; Kottler: static; degrees) or `x, y, z` (dihole, "
+      "Its fields are its position: `r, theta, phi` (Kerr: Boyer–Lindquist; Kottler: static; a wormhole: r the signed distance from the throat; degrees) or `x, y, z` (dihole, "
       "Majumdar–Papapetrou, Minkowski), all three required, and `t`, the scene time (default 0; the scene's `time` replaces it); see "
       "Positions.";
   // ... as JSON ...

@@ -84,6 +84,7 @@ template <class S>
 Scene build(const S& st, const SceneSpec& fs, int width, int height, ShotResources& res, const RayOptions& rays,
             const ImageWindow& window) {
   SceneIn<S> sc{st, {}, Camera(fs.camera, width, height, window), Sky(fs.sky, res), {}, {}, rays};
+  for (const EndSky& e : fs.end_skies) sc.end_skies.emplace_back(e.end, Sky(e.sky, res));
   if (fs.light.model != LightModel::geometric) sc.light = Light(fs.light, res.spectral_shift());
   // The observer's kind places it and checks where it stands; the frame's
   // own eye is its path at offset 0.

@@ -26,6 +26,15 @@
 
 namespace lc {
 
+// A far end's own sky: the scene's `skies`, by the end's name (its index
+// in the spacetime's ends, spacetime/ends.hpp, found when it was read).
+// Rays that leave by that end see it in place of the scene's `sky`.
+struct EndSky {
+  std::size_t end = 0;
+  std::string name;
+  SkySpec sky;
+};
+
 struct SceneSpec {
   Spacetime spacetime;  // Minkowski unless set
   ObserverSpec observer;            // a registry's variant (observers/observers.hpp)
@@ -39,6 +48,10 @@ struct SceneSpec {
   // The frame's own `exposure` (stops, image/look.hpp), over the shot's;
   // unset: the shot's.  What the PNG shows, not what is traced.
   std::optional<double> exposure{};
+  // The far ends' own skies beyond the first (a wormhole's other side), in
+  // the order of the spacetime's ends; what handles a scene's skies goes
+  // through for_each_sky (scene/scene_skies.hpp).
+  std::vector<EndSky> end_skies{};
 };
 
 }  // namespace lc

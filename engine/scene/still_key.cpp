@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "scene/scene_skies.hpp"
+
 namespace lc {
 
 namespace {
@@ -18,7 +20,8 @@ constexpr std::size_t aligned(std::size_t n, std::size_t a) { return (n + a - 1)
 static_assert(sizeof(SceneSpec) == aligned(sizeof(Spacetime) + sizeof(ObserverSpec) + sizeof(CameraSpec) +
                                                sizeof(SkySpec) + sizeof(std::vector<ObjectSpec>) + sizeof(LightParams) +
                                                sizeof(std::optional<double>) /* shutter: see still_key */ +
-                                               sizeof(std::optional<double>) /* exposure: not in the key */,
+                                               sizeof(std::optional<double>) /* exposure: not in the key */ +
+                                               sizeof(std::vector<EndSky>) /* end_skies: with the sky */,
                                            alignof(SceneSpec)),
               "SceneSpec has a member still_key does not know: add it to still_key");
 // An observer at rest is keyed by its position alone (AtRestParams'
@@ -34,7 +37,9 @@ std::string key_without_clock(const SceneSpec& fs) {
   std::string k = "spacetime " + describe(fs.spacetime, true);
   k += "|observer " + ObserverRegistry::key(fs.observer);
   k += "|camera " + kind_key(fs.camera);
-  k += "|sky " + SkyRegistry::key(fs.sky);
+  for_each_sky(fs, [&](std::string_view end, const SkySpec& sky) {
+    k += "|sky " + (end.empty() ? std::string() : std::string(end) + " ") + SkyRegistry::key(sky);
+  });
   for (const ObjectSpec& o : fs.objects) k += "|object " + kind_key(o);
   k += "|light" + fields_key(fs.light);
   // Not the shutter: a frame whose scene changes within an open shutter

@@ -52,7 +52,8 @@ Start read_start(const S& st, lua::TableReader& t, bool polar) {
   Start s{};
   if (polar) {
     s.scene = {t.number_or("t", 0.0), t.number("r"), t.number("theta") * degree, t.number("phi") * degree};
-    if (!(s.scene[1] > 0.0)) throw lua::FieldError(fmt::format("{}: r must be > 0, got {}", t.context(), s.scene[1]));
+    if (!(s.scene[1] > 0.0) && !scene_radius_is_signed<S>())
+      throw lua::FieldError(fmt::format("{}: r must be > 0, got {}", t.context(), s.scene[1]));
   } else {
     s.scene = {t.number_or("t", 0.0), t.number("x"), t.number("y"), t.number("z")};
   }

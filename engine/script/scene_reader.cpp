@@ -73,6 +73,32 @@ typename R::Spec read_kind(TableReader& t, const char* what, const char* more = 
   return *out;
 }
 
+// The script line that made a value in the plain table t (a constructor's
+// __where: "shot.lua:12"), for errors about the table itself, which has no
+// line of its own; empty where no value has one.
+std::string line_of_a_value(const TableReader& t) {
+  lua_State* L = t.state();
+  const int top = lua_gettop(L);
+  t.push();
+  std::string where;
+  lua_pushnil(L);
+  while (where.empty() && lua_next(L, -2) != 0) {
+    if (lua_istable(L, -1)) {
+      lua_getfield(L, -1, "__where");
+      if (lua_type(L, -1) == LUA_TSTRING) where = lua_tostring(L, -1);
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
+  lua_settop(L, top);
+  return where;
+}
+
+// fail(t, what), led by `where` (a script line) where there is one.
+[[noreturn]] void fail_at(const std::string& where, const TableReader& t, const std::string& what) {
+  throw FieldError(fmt::format("{}{}: {}", where.empty() ? "" : where + ": ", t.context(), what));
+}
+
 double positive(TableReader& t, const char* key, std::optional<double> fallback = std::nullopt) {
   const double v = fallback ? t.number_or(key, *fallback) : t.number(key);
   if (!(v > 0.0)) fail(t, fmt::format("field '{}' must be > 0, got {}", key, v));
@@ -103,7 +129,8 @@ ScriptPosition read_position(TableReader& t) {
   p.polar = has_polar;
   if (p.polar) {
     p.coords = {t.number_or("t", 0.0), t.number("r"), t.number("theta") * degree, t.number("phi") * degree};
-    if (!(p.coords[1] > 0.0)) fail(t, fmt::format("r must be > 0, got {}", p.coords[1]));
+    // r's sign is the spacetime's to judge (resolve_position); a NaN never.
+    if (!std::isfinite(p.coords[1])) fail(t, fmt::format("r must be a finite number, got {}", p.coords[1]));
   } else {
     p.coords = {t.number_or("t", 0.0), t.number("x"), t.number("y"), t.number("z")};
   }
@@ -116,6 +143,8 @@ Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::s
   if (p.polar != polar)
     throw FieldError(fmt::format("{}: positions in {} are {}", context, spacetime_name(st),
                                  polar ? "Boyer–Lindquist {r, theta, phi} (degrees)" : "Cartesian {x, y, z}"));
+  if (polar && !(p.coords[1] > 0.0) && !scene_radius_is_signed(st))
+    throw FieldError(fmt::format("{}: r must be > 0, got {}", context, p.coords[1]));
   return p.coords;
 }
 
@@ -124,6 +153,47 @@ CameraSpec read_camera(TableReader& t) { return CameraSpecKinds(read_kind<Camera
 
 SkySpec read_sky(TableReader& t) {
   return read_kind<SkyRegistry>(t, "a sky constructor");
+}
+
+std::vector<EndSky> read_end_skies(TableReader& t, const Spacetime& st, bool scene_has_sky) {
+  const std::span<const SpacetimeEnd> ends = spacetime_ends(st);
+  const std::string where = line_of_a_value(t);
+  std::string far;
+  for (const SpacetimeEnd& e : ends)
+    if (is_far(e.kind)) far += (far.empty() ? "" : ", ") + std::string(e.name);
+  std::vector<EndSky> out;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    const std::string name(ends[i].name);
+    if (!t.has(name)) continue;
+    if (!is_far(ends[i].kind))
+      fail_at(where, t, fmt::format("'{}' is a horizon of {}: no ray that reaches it sees a sky (the ends with a sky: {})",
+                                    name, spacetime_name(st), far));
+    auto sky = t.table(name);
+    SkySpec spec = read_sky(sky);
+    if (i == 0) {
+      // The first end's sky is the scene's `sky`, given once.
+      if (scene_has_sky)
+        fail_at(where, t,
+                fmt::format("the sky at '{}' is the scene's `sky`, given twice: keep one of `sky` and `skies.{}`", name,
+                            name));
+    } else if (has_point_stars(spec)) {
+      // The star stage draws points from the rays that reached the first
+      // end (render/shade.hpp): a further end's points would be lost.
+      fail_at(where, t,
+              fmt::format("the sky at '{}' is lc.{}, whose stars are drawn as points on the scene's first sky only; "
+                          "give this end lc.sky_stars{{...}} (the same stars painted into the sky) or lc.sky_image, "
+                          "lc.sky_checker",
+                          name, SkyRegistry::name(spec)));
+    }
+    out.push_back({i, name, std::move(spec)});
+  }
+  try {
+    t.finish();
+  } catch (const lua::FieldError& e) {
+    throw lua::FieldError(fmt::format("{}{} ({} has these ends with a sky: {})", where.empty() ? "" : where + ": ",
+                                      e.what(), spacetime_name(st), far));
+  }
+  return out;
 }
 
 LightParams read_light(TableReader& t) {
@@ -164,7 +234,8 @@ Placement read_placement(TableReader& t, const Spacetime* st) {
   if (has_pos) {
     auto p = t.table("position");
     const ScriptPosition sp = read_position(p);
-    out.at = st ? resolve_position(sp, *st, p.context()) : sp.coords;
+    const std::string where = t.string_or("__where", "");
+    out.at = st ? resolve_position(sp, *st, where.empty() ? p.context() : where + ": " + p.context()) : sp.coords;
   } else {
     auto w = t.table("worldline");
     out.at = read_worldline(w);
@@ -181,7 +252,10 @@ namespace {
 template <class Kind>
 void read_observer_extra(TableReader& t, AtRestParams<Kind>& o, const Spacetime* st) {
   const ScriptPosition p = read_position(t);  // reads and finishes t
-  o.position = st ? resolve_position(p, *st, t.context()) : p.coords;
+  // Led by the line that made the observer: the scene's spacetime judges
+  // the position only now, past the constructor's call.
+  const std::string where = t.string_or("__where", "");
+  o.position = st ? resolve_position(p, *st, where.empty() ? t.context() : where + ": " + t.context()) : p.coords;
 }
 void read_observer_extra(TableReader& t, FreeFall::Params& o, const Spacetime*) {
   auto w = t.table("worldline");
@@ -214,6 +288,14 @@ SceneSpec read_scene_spec(TableReader& t) {
   if (auto c = t.optional_table("camera")) fs.camera = read_camera(*c);
   if (auto d = t.optional_table("disk")) fs.objects.push_back(read_object(*d, &fs.spacetime));
   if (auto s = t.optional_table("sky")) fs.sky = read_sky(*s);
+  if (auto s = t.optional_table("skies")) {
+    fs.end_skies = read_end_skies(*s, fs.spacetime, t.has("sky"));
+    // `skies.<first end>` is the scene's `sky` by its end's name.
+    if (!fs.end_skies.empty() && fs.end_skies.front().end == 0) {
+      fs.sky = std::move(fs.end_skies.front().sky);
+      fs.end_skies.erase(fs.end_skies.begin());
+    }
+  }
   if (auto l = t.optional_table("light")) fs.light = read_light(*l);
   if (auto shutter = t.optional_number("shutter")) {
     if (!(*shutter >= 0.0 && *shutter <= 1.0))

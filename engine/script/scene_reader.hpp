@@ -29,6 +29,11 @@ Vec4 resolve_position(const ScriptPosition& p, const Spacetime& st, const std::s
 // A table made by a constructor of the camera or sky registries.
 CameraSpec read_camera(lua::TableReader& t);
 SkySpec read_sky(lua::TableReader& t);
+// The scene's `skies`: a sky for each far end of st by its name
+// (SpacetimeEnd::name), checked against st's ends, in their order;
+// scene_has_sky: whether the scene also gives `sky` (the first end's, then
+// given twice).
+std::vector<EndSky> read_end_skies(lua::TableReader& t, const Spacetime& st, bool scene_has_sky);
 WorldlineSpec read_worldline(lua::TableReader& t);
 // lc.light{...}.
 LightParams read_light(lua::TableReader& t);

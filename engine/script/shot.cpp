@@ -9,6 +9,7 @@
 #include "camera/delivery.hpp"
 #include "lua/table_reader.hpp"
 #include "scene/delivered_sky.hpp"
+#include "scene/scene_skies.hpp"
 #include "scene/frame_specs.hpp"
 #include "scene/scene_spec.hpp"
 #include "script/engine_api.hpp"
@@ -123,6 +124,27 @@ SceneSpec Shot::frame(int i, FieldPaths* fields) {
   return evaluate(i, ctx, fields);
 }
 
+namespace {
+
+// How the skies of `at` differ in kind from the frame's, each end's (the
+// star stage draws each instant's point stars: a sky of another kind is a
+// cut), or empty where they do not.
+std::string sky_cut(const SceneSpec& frame, const SceneSpec& at) {
+  std::vector<std::pair<std::string, std::string_view>> a, b;  // (end, kind)
+  for_each_sky(frame, [&](std::string_view end, const SkySpec& s) { a.emplace_back(end, SkyRegistry::name(s)); });
+  for_each_sky(at, [&](std::string_view end, const SkySpec& s) { b.emplace_back(end, SkyRegistry::name(s)); });
+  if (a == b) return {};
+  const auto list = [](const auto& skies) {
+    std::string out;
+    for (const auto& [end, kind] : skies)
+      out += fmt::format("{}lc.{}{}", out.empty() ? "" : ", ", kind, end.empty() ? "" : fmt::format(" at {}", end));
+    return out;
+  };
+  return fmt::format("the sky is {} at the frame but {}", list(a), list(b));
+}
+
+}  // namespace
+
 FrameSpecs Shot::frame_specs(int i) {
   FrameSpecs out;
   FieldPaths frame_fields;
@@ -142,11 +164,11 @@ FrameSpecs Shot::frame_specs(int i) {
           file_.string(), i, spacetime_name(out.frame.spacetime), spacetime_name(s.spacetime), at));
     // The star stage draws each instant's point stars: a sky of another
     // kind within the shutter is a cut, too.
-    if (s.sky.index() != out.frame.sky.index())
+    if (const std::string cut = sky_cut(out.frame, s); !cut.empty())
       throw std::invalid_argument(fmt::format(
-          "{}: frame {}: the sky is lc.{} at the frame but lc.{} at {:g}, within its shutter; a shutter cannot be "
-          "open across a change of sky: close it for this frame (its `shutter = 0`)",
-          file_.string(), i, SkyRegistry::name(out.frame.sky), SkyRegistry::name(s.sky), at));
+          "{}: frame {}: {} at {:g}, within its shutter; a shutter cannot be open across a change of sky: close it "
+          "for this frame (its `shutter = 0`)",
+          file_.string(), i, cut, at));
     // Each sample takes one instant's camera: a cut between cameras mixes
     // their pictures pixel by pixel.
     if (const auto cut = camera_cut(out.frame.camera, s.camera))

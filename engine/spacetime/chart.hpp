@@ -16,6 +16,17 @@ enum class SceneChart {
   cartesian,  // (t, x, y, z): positions {x, y, z}
 };
 
+// Whether the polar scene chart's r of S is signed, a place on either side
+// of 0 (a wormhole's proper distance l from its throat: S::signed_radius),
+// rather than a radius > 0.
+template <class S>
+constexpr bool scene_radius_is_signed() {
+  if constexpr (requires { S::signed_radius; })
+    return S::signed_radius;
+  else
+    return false;
+}
+
 // Which way in time curves are traced (a chart may be chosen to be regular
 // where they go: Kerr::for_tracing).
 enum class TimeDirection { future, past };

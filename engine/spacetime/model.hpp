@@ -61,6 +61,9 @@
 //   sky's hit.g reads it)
 //   examples()                parameter sets with the radii between which
 //                             the generic self-test may sample events
+//   signed_radius             optional, static: true where the polar scene
+//                             chart's r is signed (a wormhole's l), so
+//                             positions may have r <= 0
 //   other_names               optional, static: names a user may try for
 //                             special cases it covers, each with how it is
 //                             written (lc.kerr_newman: lc.kerr{..., charge});

@@ -50,6 +50,8 @@ struct MorrisThorne {
   // other's (a sky of its own: the scene's `skies.other_side`).
   static constexpr std::array ends = {SpacetimeEnd{"infinity", EndKind::infinity},
                                       SpacetimeEnd{"other_side", EndKind::infinity}};
+  // The scene's r is l: <= 0 at and beyond the throat (spacetime/chart.hpp).
+  static constexpr bool signed_radius = true;
 
   // l at trace-chart radius R, and R at l (exact to rounding on both sides:
   // the form without cancellation for each sign).

@@ -41,6 +41,15 @@ SceneChart scene_chart(const Spacetime& s) {
   return std::visit([](const auto& st) { return std::decay_t<decltype(st)>::chart; }, s.kinds());
 }
 
+bool scene_radius_is_signed(const Spacetime& s) {
+  return std::visit([](const auto& st) { return scene_radius_is_signed<std::decay_t<decltype(st)>>(); }, s.kinds());
+}
+
+std::span<const SpacetimeEnd> spacetime_ends(const Spacetime& s) {
+  return std::visit([](const auto& st) { return std::span<const SpacetimeEnd>(std::decay_t<decltype(st)>::ends); },
+                    s.kinds());
+}
+
 Spacetime for_tracing(const Spacetime& s, TimeDirection d) {
   return std::visit([d](const auto& st) -> Spacetime { return Spacetime(st.for_tracing(d)); }, s.kinds());
 }

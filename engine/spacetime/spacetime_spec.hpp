@@ -7,12 +7,14 @@
 // rebuilds").  Made from one spacetime (Spacetime{Kerr(1, 0.9)}); read back
 // with get<S>() or, where the list is included, visited through kinds().
 
+#include <span>
 #include <string>
 #include <string_view>
 
 #include "core/spec_box.hpp"
 #include "core/tensor.hpp"
 #include "spacetime/chart.hpp"
+#include "spacetime/ends.hpp"
 
 namespace lc {
 
@@ -28,6 +30,14 @@ std::string_view spacetime_name(const Spacetime& s);
 
 // The chart its scene positions are given in.
 SceneChart scene_chart(const Spacetime& s);
+
+// Whether its polar scene r is signed (scene_radius_is_signed,
+// spacetime/chart.hpp): r <= 0 is then a place like any other.
+bool scene_radius_is_signed(const Spacetime& s);
+
+// Its ends (spacetime/ends.hpp), in their order: the far end where the
+// scene's sky is first.
+std::span<const SpacetimeEnd> spacetime_ends(const Spacetime& s);
 
 // The same spacetime in the chart regular where curves traced in direction
 // d go (Kerr: its ingoing or outgoing Kerr–Schild form).

@@ -8,6 +8,7 @@
 #include "store/content_hash.hpp"
 #include "assets/asset_path.hpp"
 #include "scene/frame_specs.hpp"
+#include "scene/scene_skies.hpp"
 
 namespace lc::farm {
 
@@ -26,17 +27,20 @@ ShotSurvey survey_shot(Shot& shot, const std::vector<int>& frames, const std::fu
     out.frames[f].exposure = fs.exposure;
     for (const SceneSpec& at : specs.instants) out.frames[f].instants.push_back({at.sky, at.camera});
     if (specs.blurred()) out.frames[f].shutter = specs.shutter.describe();
-    for (const std::string& asset : sky_assets(fs.sky)) {
-      // The file the render will load (the same rules): checked before
-      // anything reads it, for the hash below.
-      try {
-        sky_files_of[f].push_back(resolve_sky_image(asset, dirs).string());
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(fmt::format("{}: frame {}: {}", shot.file().string(), f, e.what()));
+    // Every sky's files, a further end's too (a wormhole's other side).
+    for_each_sky(fs, [&](std::string_view, const SkySpec& sky) {
+      for (const std::string& asset : sky_assets(sky)) {
+        // The file the render will load (the same rules): checked before
+        // anything reads it, for the hash below.
+        try {
+          sky_files_of[f].push_back(resolve_sky_image(asset, dirs).string());
+        } catch (const std::invalid_argument& e) {
+          throw std::invalid_argument(fmt::format("{}: frame {}: {}", shot.file().string(), f, e.what()));
+        }
       }
-    }
-    // (A catalogue's own checks are the sky's, made when the scene was read.)
-    for (const std::string& file : sky_system_files(fs.sky)) sky_files_of[f].push_back(file);
+      // (A catalogue's own checks are the sky's, made when the scene was read.)
+      for (const std::string& file : sky_system_files(sky)) sky_files_of[f].push_back(file);
+    });
     if (each) each(out.frames.size());
   }
   // Script and modules: after evaluating, so modules required inside

@@ -18,7 +18,9 @@
 
 #include "core/constants.hpp"
 #include "objects/objects.hpp"
-#include "spacetime/spacetime.hpp"
+#include "spacetime/ellis_wormhole.hpp"
+#include "spacetime/interstellar_wormhole.hpp"
+#include "spacetime/kerr.hpp"
 #include "wormhole_scene.hpp"
 
 namespace lc {

@@ -118,9 +118,9 @@ struct KindSeam {
 // The registries, with the translation units a new kind rebuilds today.
 const std::vector<KindSeam> seams = {
     {"a new camera kind", "camera", {"camera/camera_params.hpp", "camera/camera_registry.hpp"}, 7, 15},
-    {"a new object kind", "object", {"objects/object_params.hpp", "objects/objects.hpp"}, 17, 15},
-    {"a new sky kind", "sky", {"sky/sky.hpp"}, 60, 15},
-    {"a new observer kind", "observer", {"observers/observers.hpp"}, 54, 15},
+    {"a new object kind", "object", {"objects/object_params.hpp", "objects/objects.hpp"}, 18, 15},
+    {"a new sky kind", "sky", {"sky/sky.hpp"}, 61, 15},
+    {"a new observer kind", "observer", {"observers/observers.hpp"}, 55, 15},
     {"a new spacetime kind", "spacetime", {"spacetime/spacetime.hpp"}, 19, 20},
     // A camera's code apart from its parameters (camera/fisheye_params.hpp):
     // only what builds cameras (camera/camera.cpp) and its tests include it.
