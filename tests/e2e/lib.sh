@@ -136,6 +136,27 @@ tiny_fall_render() {
     2>"$1.render.log" || fail "render: $(cat "$1.render.log")"
 }
 
+# The shot NAME.lua, written here, is refused at its line LINE with a
+# message holding PART, and leaves no files.
+expect_refused_at() {  # name, line, part
+  CHECKS=$((CHECKS + 1))
+  "$LIGHTCONE" render "$1.lua" --out "$1" --size 8x8 >"$1.out" 2>"$1.err" && fail "$1 was accepted"
+  grep -qF "$1.lua:$2:" "$1.err" || fail "$1: not at the shot's line: $(cat "$1.err")"
+  grep -qF "$3" "$1.err" || fail "$1: $(cat "$1.err")"
+  [ ! -e "$1" ] || [ -z "$(ls -A "$1")" ] || fail "$1: a refused shot left files: $(ls "$1")"
+}
+
+# A one-frame shot NAME.lua whose frame returns the scene fields FIELDS, all
+# on line 3, is refused there with a message holding PART.
+refused_scene() {  # name, scene fields, part
+  cat >"$1.lua" <<LUA
+local lc = require "lightcone"
+return {name = "$1", frames = 1, width = 8, height = 8, frame = function()
+  return {$2} end}
+LUA
+  expect_refused_at "$1" 3 "$3"
+}
+
 e2e_end() {
   echo "$CHECKS error checks; $FAILURES failures"
   [ "$FAILURES" -eq 0 ]

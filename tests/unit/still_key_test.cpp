@@ -9,6 +9,7 @@
 #include "objects/disk_params.hpp"
 #include "objects/sphere_params.hpp"
 #include "scene/still_key.hpp"
+#include "spacetime/ellis_wormhole.hpp"
 #include "spacetime/kerr.hpp"
 #include "spacetime/minkowski.hpp"
 
@@ -60,6 +61,21 @@ TEST(StillKey, OnlyTheStaticObserversTimeIsLeftOut) {
   EXPECT_TRUE(differs([](SceneSpec& fs) { fs.objects.push_back(fs.objects[1]); }));
   // A sphere at rest ignores the time in its position.
   EXPECT_FALSE(differs([](SceneSpec& fs) { std::get<Vec4>(fs.objects[1].get<SphereParams>().placement.at)[0] = 99.0; }));
+}
+
+// A further end's sky (a wormhole's other side) is keyed with the scene's
+// own (for_each_sky): another there, or a change in it, is another scene.
+TEST(StillKey, EverySkyIsKeyedByItsEnd) {
+  SceneSpec fs;
+  fs.spacetime = EllisWormhole({1.0});
+  fs.observer = StaticObserver::Params{{0.0, 5.0, 1.2, 0.3}};
+  const std::string one_sky = still_key(fs);
+  fs.end_skies.push_back({1, "other_side", CheckerSky::Params{}});
+  const std::string two_skies = still_key(fs);
+  EXPECT_NE(two_skies, one_sky);
+  EXPECT_NE(two_skies.find("|sky other_side "), std::string::npos) << two_skies;
+  std::get<CheckerSky::Params>(fs.end_skies[0].sky).rotate = 1e-12;
+  EXPECT_NE(still_key(fs), two_skies);
 }
 
 TEST(StillKey, AFreeFallingObserverHasNone) {
