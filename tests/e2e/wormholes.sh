@@ -3,7 +3,8 @@
 # binary: shots/wormhole.lua renders its first and last frames; from 6
 # throat radii out the other universe's sky fills a disc of the closed-form
 # angular radius arcsin(b/√(l² + b²)); a sphere beyond the throat is met
-# there, its hit.r the signed l; trace names the end a ray reached;
+# there, its hit.r the signed l, and one flying through is seen beyond it;
+# trace names the end a ray reached;
 # the throat's photon orbit closes after 2πb; the other side's sky image is
 # one of the render's inputs; bad input is refused at the shot's line.
 source "$(dirname "$0")/lib.sh"
@@ -54,6 +55,35 @@ kind, r = px[names.index("hit.kind")], px[names.index("hit.r")]
 print(f"centre pixel: hit.kind {kind}, hit.r {r}")
 if kind != 3 or abs(r + 4.7) > 0.05:
     sys.exit("sphere off")
+PY
+
+# A sphere flies through: from l = 4 at 0.5 c along the axis, seen by a
+# static observer at l = 8.  At t = 24 the light that arrives left it at
+# t = 13.3, when it was at l = -2.67, beyond the throat: the pixels that
+# meet it have hit.r < -2 (its near side at -2.17 and the rim round it).
+cat >fly.lua <<'LUA'
+local lc = require "lightcone"
+local st = lc.ellis_wormhole{throat = 1}
+local w = lc.worldline{spacetime = st, start = {r = 4, theta = 90, phi = 0}, velocity = {r = -0.5, theta = 0, phi = 0},
+                       duration = 30}
+return {name = "fly", frames = 3, width = 192, height = 108, frame = function(i)
+  return {spacetime = st, observer = lc.static_observer{r = 8, theta = 90, phi = 0, t = 12 * i},
+          skies = {other_side = lc.sky_checker{colors = {{0.9, 0.45, 0.1}, {0.1, 0.2, 0.6}}}},
+          objects = {lc.sphere{radius = 0.5, worldline = w}}}
+end}
+LUA
+CHECKS=$((CHECKS + 1))
+"$LIGHTCONE" render fly.lua --out fly --frames 2 --layers --progress 0 >fly.out 2>fly.err || fail "fly: $(cat fly.err)"
+"$PY" - fly/fly.0002.exr <<'PY' || fail "the sphere beyond the throat is not seen"
+import sys
+import OpenImageIO as oiio
+buf = oiio.ImageBuf(sys.argv[1])
+names = list(buf.spec().channelnames)
+k, r = names.index("hit.kind"), names.index("hit.r")
+rs = [buf.getpixel(i, j)[r] for j in range(buf.spec().height) for i in range(buf.spec().width) if buf.getpixel(i, j)[k] == 3]
+print(f"sphere pixels {len(rs)}, deepest hit.r {min(rs) if rs else None}")
+if len(rs) < 5 or min(rs) > -2:
+    sys.exit("not beyond")
 PY
 
 # inspect writes the other side's sky by its end's name.
