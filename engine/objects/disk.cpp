@@ -11,8 +11,9 @@ void Disk::glow(const std::optional<NovikovThorneFlux>& flux, ShotResources& res
                                                               p_.accretion_rate);
   if (!flux)
     throw std::invalid_argument(fmt::format(
-        "disk: {} makes a glowing Novikov–Thorne disk, which needs an uncharged Kerr hole with mass > 0 and |spin| < mass "
-        "(lightcone has the flux of no other spacetime's disk, a charged hole's included; leave temperature, solar_masses and accretion_rate at 0 for the checker)",
+        "disk: {} makes a glowing Novikov–Thorne disk, which needs a Kerr or Kerr–Newman hole with mass > 0 and "
+        "spin^2 + charge^2 < mass^2 (lightcone has the flux of no other spacetime's disk; leave temperature, "
+        "solar_masses and accretion_rate at 0 for the checker)",
         how));
   flux_ = flux;
   const double peak = flux_->peak_radius();

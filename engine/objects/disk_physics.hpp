@@ -23,8 +23,8 @@ struct DiskPhysics {
   static std::optional<NovikovThorneFlux> flux(const S&) { return std::nullopt; }
 };
 
-// Kerr: the Novikov–Thorne flux from the ISCO outwards (uncharged holes:
-// Kerr::thin_disk_flux).
+// Kerr and Kerr–Newman: the Novikov–Thorne flux from the ISCO outwards
+// (Kerr::thin_disk_flux).
 template <>
 struct DiskPhysics<Kerr> {
   static Vec4 velocity(const Kerr& st, const Vec4& x) { return EquatorialFlow<Kerr>::velocity(st, x); }

@@ -202,10 +202,10 @@ class Kerr : public HamiltonianFromRhs<Kerr>, public CartesianInfinity, public O
   // and in the trace chart at the trace event x.
   Vec4 disk_velocity_bl(double r) const;
   Vec4 disk_velocity(const Vec4& x) const;
-  // The Novikov–Thorne flux of its disk: for M > 0, |a| < M and Q = 0 (its
-  // closed form is Kerr's; a charged hole's is not worked out here).
+  // The Novikov–Thorne flux of its disk: for M > 0 and a^2 + Q^2 < M^2
+  // (Page & Thorne's closed form at Q = 0, their integral with a charge).
   std::optional<NovikovThorneFlux> thin_disk_flux() const {
-    if (M_ > 0.0 && std::abs(a_) < M_ && Q_ == 0.0) return NovikovThorneFlux(M_, a_);
+    if (M_ > 0.0 && a_ * a_ + Q_ * Q_ < M_ * M_) return NovikovThorneFlux(M_, a_, Q_);
     return std::nullopt;
   }
   // Radius of the innermost stable circular orbit co-rotating with the hole
