@@ -40,14 +40,20 @@ end
 -- "equirect"); every other field goes to its constructor, but a `pitch`
 -- given is added to the aim's (the view axis that many degrees above the
 -- target: a dome master framed with the target low in the dome, as
--- docs/cameras.md says) and a yaw is the aim's alone.
-local camera_kinds = {camera = true, fisheye = true, equirect = true}
+-- docs/cameras.md says) and a yaw is the aim's alone.  The kinds are the
+-- engine's camera registry's (a new camera kind is aimed without a line here).
+local camera_kinds, camera_list = {}, {}
+for _, name in ipairs(engine.__camera_kinds) do
+  camera_kinds[name] = true
+  camera_list[#camera_list + 1] = name
+end
+camera_list = table.concat(camera_list, ", ")
 
 function M.look_at(t)
   if type(t) ~= "table" then error("look_at: expected look_at{from = ..., to = ...}", 2) end
   local kind = t.camera or "camera"
   if not camera_kinds[kind] then
-    error("look_at: camera '" .. tostring(kind) .. "' is not a camera kind (camera, fisheye, equirect)", 2)
+    error("look_at: camera '" .. tostring(kind) .. "' is not a camera kind (" .. camera_list .. ")", 2)
   end
   if t.yaw ~= nil then error("look_at: yaw is the aim's; the camera turns towards `to` by itself", 2) end
   local p, th, ph = cartesian(t.from, "from")

@@ -229,6 +229,16 @@ void install_engine_api(lua::Sandbox& sandbox, EngineMemo* memo) {
   });
   lua_pushcclosure(L, &l_unknown_name, 2);  // takes the group and other-name tables
   lua_setfield(L, api, "__unknown_name");
+  // The camera constructors' names in registry order, for lc.look_at
+  // (scripts/lightcone.lua), which builds any of them.
+  lua_newtable(L);
+  int camera = 0;
+  CameraSpecs::for_each([&](auto* kind) {
+    const std::string_view name = std::remove_pointer_t<decltype(kind)>::name;
+    lua_pushlstring(L, name.data(), name.size());
+    lua_rawseti(L, -2, ++camera);
+  });
+  lua_setfield(L, api, "__camera_kinds");
   lua_pushlightuserdata(L, memo);
   lua_pushcclosure(L, l_apocentres, 1);
   lua_setfield(L, api, "apocentres");

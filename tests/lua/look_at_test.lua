@@ -38,7 +38,15 @@ local vr = lc.look_at{from = {x = 0, y = 80, z = 0}, to = {x = 5, y = 0, z = 0},
 near(vr.yaw, -math.deg(math.atan2(5, 80)), 1e-9, "equirect yaw towards +x")
 assert(vr.longitude == nil and vr.pitch ~= nil, "an equirect with the aim alone")
 ok, err = pcall(lc.look_at, {from = {x = 1}, to = {x = 2}, camera = "kerr"})
-assert(not ok and err:find("camera 'kerr' is not a camera kind"), err)
+assert(not ok and err:find("camera 'kerr' is not a camera kind (camera, fisheye, equirect)", 1, true), err)
+-- Every camera constructor lc has is a kind look_at builds (the engine's
+-- registry, not a list kept here).
+for _, kind in ipairs(__lightcone.__camera_kinds) do
+  assert(type(lc[kind]) == "function", kind)
+  local made = lc.look_at{from = {x = 0, y = 30, z = 0}, to = {x = 0, y = 0, z = 0}, camera = kind}
+  assert(type(made) == "table", kind)
+end
+assert(#__lightcone.__camera_kinds == 3, "camera, fisheye, equirect")
 ok, err = pcall(lc.look_at, {from = {x = 1}, to = {x = 2}, camera = "fisheye", field = 20})
 assert(not ok and err:find("look_at: fisheye: field 'field' must be between 90 and 360", 1, true), err)
 ok, err = pcall(lc.look_at, {from = {x = 1}, to = {x = 2}, yaw = 3})
