@@ -26,8 +26,9 @@ inline constexpr std::array layers = {
               "3 sphere (`lightcone trace` names it)",
               [](const HitRecord& s) { return static_cast<float>(static_cast<int>(s.kind)); }},
     LayerSpec{"hit.r",
-              "radius of the event where the ray ended: Boyer–Lindquist r for Kerr, distance from the origin "
-              "otherwise (where exactly, for the sky and the horizon: below)",
+              "radius of the event where the ray ended: the scene chart's r where it is polar (Boyer–Lindquist for "
+              "Kerr, static for Kottler, the signed distance l from the throat for a wormhole: negative in the other "
+              "universe), distance from the origin otherwise (where exactly, for the sky and the horizon: below)",
               [](const HitRecord& s) { return static_cast<float>(s.r); }},
     LayerSpec{"hit.phi", "longitude of that event in [0, 2π): Boyer–Lindquist φ for Kerr, atan2(y, x) otherwise",
               [](const HitRecord& s) { return static_cast<float>(s.phi); }},

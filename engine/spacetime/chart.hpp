@@ -27,6 +27,25 @@ constexpr bool scene_radius_is_signed() {
     return false;
 }
 
+// The rates dθ and dφ of a spatial vector v (components 1-3) at the
+// Cartesian-like point x (components 1-3) of radius r = |x|, for the polar
+// angles about the origin: dθ = (cos θ dρ - sin θ dz) / r,
+// dφ = (x dy - y dx) / ρ^2 (ρ the cylindrical radius).  On the axis dθ is
+// the rate of leaving it and dφ = 0 (as Kerr's chart maps do).  For the
+// scene_vector of charts whose spheres are those of the trace chart
+// (Kottler, the wormholes).
+inline void polar_angle_rates(const Vec4& x, const Vec4& v, double r, double& dth, double& dphi) {
+  const double rho = std::hypot(x[1], x[2]);
+  dphi = 0.0;
+  if (rho > 1e-9 * r) {
+    const double drho = (x[1] * v[1] + x[2] * v[2]) / rho;
+    dth = (x[3] / r * drho - rho / r * v[3]) / r;
+    dphi = (x[1] * v[2] - x[2] * v[1]) / (rho * rho);
+  } else {
+    dth = std::hypot(v[1], v[2]) / r;
+  }
+}
+
 // Which way in time curves are traced (a chart may be chosen to be regular
 // where they go: Kerr::for_tracing).
 enum class TimeDirection { future, past };

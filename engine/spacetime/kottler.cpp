@@ -154,17 +154,8 @@ Vec4 Kottler::scene_vector(const Vec4& x, const Vec4& v) const {
   const double r = radius(x);
   const Vec3 n = {x[1] / r, x[2] / r, x[3] / r};
   const double dr = n[0] * v[1] + n[1] * v[2] + n[2] * v[3];
-  const double rho = std::hypot(x[1], x[2]);
-  // dθ = (cos θ dρ - sin θ dz) / r, dφ = (x dy - y dx) / ρ^2; on the axis
-  // dθ is the rate of leaving it and dφ = 0 (as Kerr's).
-  double dth, dphi = 0.0;
-  if (rho > 1e-9 * r) {
-    const double drho = (x[1] * v[1] + x[2] * v[2]) / rho;
-    dth = (x[3] / r * drho - rho / r * v[3]) / r;
-    dphi = (x[1] * v[2] - x[2] * v[1]) / (rho * rho);
-  } else {
-    dth = std::hypot(v[1], v[2]) / r;
-  }
+  double dth, dphi;
+  polar_angle_rates(x, v, r, dth, dphi);
   return {dot(scene_time_gradient(x), v), dr, dth, dphi};
 }
 

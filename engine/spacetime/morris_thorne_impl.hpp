@@ -73,17 +73,8 @@ template <class S>
 Vec4 MorrisThorne<S>::scene_vector(const Vec4& x, const Vec4& v) const {
   const double R = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
   const double dR = (x[1] * v[1] + x[2] * v[2] + x[3] * v[3]) / R;
-  const double rho = std::hypot(x[1], x[2]);
-  // dθ = (cos θ dρ - sin θ dz) / R, dφ = (x dy - y dx) / ρ^2; on the axis
-  // dθ is the rate of leaving it and dφ = 0 (as Kerr's).
-  double dth, dphi = 0.0;
-  if (rho > 1e-9 * R) {
-    const double drho = (x[1] * v[1] + x[2] * v[2]) / rho;
-    dth = (x[3] / R * drho - rho / R * v[3]) / R;
-    dphi = (x[1] * v[2] - x[2] * v[1]) / (rho * rho);
-  } else {
-    dth = std::hypot(v[1], v[2]) / R;
-  }
+  double dth, dphi;
+  polar_angle_rates(x, v, R, dth, dphi);
   return {v[0], (1.0 + c() / (R * R)) * dR, dth, dphi};
 }
 
