@@ -139,7 +139,7 @@ expect_fail "a contradicting flag" "--coordinates bl: osc.csv records its chart 
   osc.csv -o x.svg --coordinates bl
 { echo "# chart: polar (t, r, theta, phi; kerr)"; tail -n +2 arches.csv; } >badchart.csv
 expect_fail "an unknown chart" "badchart.csv:1: chart 'polar' is not one lightcone knows (bl or cartesian)" badchart.csv -o x.svg
-"$LIGHTCONE" plot --help | grep -q "bl (r, theta, phi: kerr, kottler; the default) or cartesian (x, y, z: minkowski, dihole, majumdar_papapetrou)" \
+"$LIGHTCONE" plot --help | grep -q "bl (r, theta, phi: kerr, kottler, ellis_wormhole, interstellar_wormhole; the default) or cartesian (x, y, z: minkowski, dihole, majumdar_papapetrou)" \
   || fail "plot --help does not list the spacetimes of each chart: $("$LIGHTCONE" plot --help | grep -A3 coordinates)"
 [ ! -e x.svg ] && [ ! -e arches.pdf ] || fail "a refused plot left a file"
 ls | grep -q tmp && fail "temporary files left behind"
