@@ -94,9 +94,14 @@ std::string line_of_a_value(const TableReader& t) {
   return where;
 }
 
-// fail(t, what), led by `where` (a script line) where there is one.
+// `text` led by `where` (a script line, "shot.lua:12") where there is one.
+std::string led_by(const std::string& where, const std::string& text) {
+  return where.empty() ? text : where + ": " + text;
+}
+
+// fail(t, what), led by `where` where there is one.
 [[noreturn]] void fail_at(const std::string& where, const TableReader& t, const std::string& what) {
-  throw FieldError(fmt::format("{}{}: {}", where.empty() ? "" : where + ": ", t.context(), what));
+  throw FieldError(led_by(where, fmt::format("{}: {}", t.context(), what)));
 }
 
 double positive(TableReader& t, const char* key, std::optional<double> fallback = std::nullopt) {
@@ -190,8 +195,8 @@ std::vector<EndSky> read_end_skies(TableReader& t, const Spacetime& st, bool sce
   try {
     t.finish();
   } catch (const lua::FieldError& e) {
-    throw lua::FieldError(fmt::format("{}{} ({} has these ends with a sky: {})", where.empty() ? "" : where + ": ",
-                                      e.what(), spacetime_name(st), far));
+    throw lua::FieldError(
+        led_by(where, fmt::format("{} ({} has these ends with a sky: {})", e.what(), spacetime_name(st), far)));
   }
   return out;
 }
@@ -235,7 +240,7 @@ Placement read_placement(TableReader& t, const Spacetime* st) {
     auto p = t.table("position");
     const ScriptPosition sp = read_position(p);
     const std::string where = t.string_or("__where", "");
-    out.at = st ? resolve_position(sp, *st, where.empty() ? p.context() : where + ": " + p.context()) : sp.coords;
+    out.at = st ? resolve_position(sp, *st, led_by(where, p.context())) : sp.coords;
   } else {
     auto w = t.table("worldline");
     out.at = read_worldline(w);
@@ -255,7 +260,7 @@ void read_observer_extra(TableReader& t, AtRestParams<Kind>& o, const Spacetime*
   // Led by the line that made the observer: the scene's spacetime judges
   // the position only now, past the constructor's call.
   const std::string where = t.string_or("__where", "");
-  o.position = st ? resolve_position(p, *st, where.empty() ? t.context() : where + ": " + t.context()) : p.coords;
+  o.position = st ? resolve_position(p, *st, led_by(where, t.context())) : p.coords;
 }
 void read_observer_extra(TableReader& t, FreeFall::Params& o, const Spacetime*) {
   auto w = t.table("worldline");
